@@ -1,0 +1,34 @@
+// Splitting a param string into argc/argv the way a shell would, and reading options from it.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace robottestingframework {
+
+class Arguments {
+public:
+    // Splits `line` in place (quotes and backslashes honoured), writing pointers into `args`
+    // (at most `maxArgs`, then a nullptr) and returning the count.
+    static int split(char* line, char** args, int maxArgs = 64);
+    // The same on a copy: words of `line`, quotes removed.
+    static std::vector<std::string> split(const std::string& line);
+    // Value of `--name value` (or `--name=value`) in argv; false when absent.
+    static bool getOption(int argc, char** argv, const char* option, std::string& value);
+    // True when `--name` is present in argv.
+    static bool hasOption(int argc, char** argv, const char* option);
+};
+
+// Owns the argv built from a name and a param string: argv[0] is the name.
+class ArgumentVector {
+public:
+    ArgumentVector(const std::string& name, const std::string& param);
+    int argc() const { return static_cast<int>(words_.size()); }
+    char** argv() { return pointers_.data(); }
+
+private:
+    std::vector<std::string> words_;
+    std::vector<char*> pointers_;
+};
+
+}  // namespace robottestingframework

@@ -1,0 +1,40 @@
+// What the assertion macros call. Usable directly, too.
+#pragma once
+
+#include <string>
+
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+
+class TestCase;
+class FixtureManager;
+
+class Asserter {
+public:
+    // printf-style formatting into a std::string.
+    static std::string format(const char* fmt, ...)
+#if defined(__GNUC__)
+        __attribute__((format(printf, 1, 2)))
+#endif
+        ;
+
+    // Throws TestFailureException (the test stops as failed).
+    [[noreturn]] static void fail(TestMessage msg);
+    static void fail(bool condition, TestMessage msg);  // throws when condition is false
+    // Throws TestErrorException (the test stops with an error).
+    [[noreturn]] static void error(TestMessage msg);
+    static void error(bool condition, TestMessage msg);  // throws when condition is false
+    // Throws TestCriticalErrorException: the test stops and the rest of its suite is skipped.
+    [[noreturn]] static void criticalError(TestMessage msg);
+
+    // Reports to `testcase`, or to the running test when it is nullptr.
+    static void report(TestMessage msg, TestCase* testcase = nullptr);
+    static void report(TestMessage msg, FixtureManager* fixture);
+    // Records a check: when `condition` is false the test is marked failed and goes on.
+    static void testCheck(bool condition, TestMessage msg, TestCase* testcase = nullptr);
+    // Marks the test failed (and goes on) when `condition` is true.
+    static void testFail(bool condition, TestMessage msg, TestCase* testcase = nullptr);
+};
+
+}  // namespace robottestingframework

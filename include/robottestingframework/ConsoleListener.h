@@ -1,0 +1,53 @@
+// Prints the run as it happens: a line per test with its state and duration, and with
+// verbose on, its reports and what it printed.
+#pragma once
+
+#include <cstdio>
+#include <string>
+
+#include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestResultCollector.h>
+
+namespace robottestingframework {
+
+class ConsoleListener : public TestListener {
+public:
+    explicit ConsoleListener(bool verbose = false);
+
+    // Reports are hidden; failures and errors are still shown.
+    void hideUncriticalMessages() { hideUncritical_ = true; }
+    // Beyond RTF 2.x: show every check (the runner's --detail).
+    void showChecks(bool show) { showChecks_ = show; }
+    // Beyond RTF 2.x: where to print (stdout by default), and whether to use colours.
+    void setStream(std::FILE* stream);
+    void setColors(bool colors) { colors_ = colors; }
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTestRunner() override;
+    void endTestRunner() override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+
+private:
+    void message(const char* label, const char* colour, const TestMessage& msg);
+
+    std::FILE* stream_;
+    bool verbose_;
+    bool hideUncritical_ = false;
+    bool showChecks_ = false;
+    bool colors_ = false;
+    // Enough of the current test to print its line at the end, and counts for the summary.
+    TestResultCollector record_;
+};
+
+}  // namespace robottestingframework

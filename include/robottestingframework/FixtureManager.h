@@ -1,0 +1,44 @@
+// Prepares the world a suite's tests need, checks it before each test, and takes it down.
+#pragma once
+
+#include <string>
+
+#include <robottestingframework/FixtureEvents.h>
+
+namespace robottestingframework {
+
+class Test;
+class TestResult;
+
+class FixtureManager {
+public:
+    explicit FixtureManager(FixtureEvents* dispatcher = nullptr, std::string param = "");
+    virtual ~FixtureManager();
+
+    // argv[0] is the fixture's name; the rest is the param string split like a shell would.
+    virtual bool setup(int argc, char** argv);
+    // Called before every test of the suite; false collapses the fixture.
+    virtual bool check() { return true; }
+    virtual void tearDown() {}
+
+    void setDispatcher(FixtureEvents* dispatcher) { dispatcher_ = dispatcher; }
+    FixtureEvents* getDispatcher() { return dispatcher_; }
+    void setParam(const std::string& param) { param_ = param; }
+    std::string getParam() const { return param_; }
+    void setName(const std::string& name) { name_ = name; }
+    std::string getName() const { return name_; }
+
+    // Where ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT sends its messages (set by the suite).
+    void setResult(TestResult* result, const Test* owner);
+    TestResult* getResult() { return result_; }
+    const Test* getOwner() const { return owner_; }
+
+private:
+    FixtureEvents* dispatcher_;
+    std::string param_;
+    std::string name_;
+    TestResult* result_ = nullptr;
+    const Test* owner_ = nullptr;
+};
+
+}  // namespace robottestingframework

@@ -1,0 +1,40 @@
+// One event of a run as plain data: what a collector keeps, and what a worker process sends
+// back to the runner. Nothing in it points into the test that produced it.
+#pragma once
+
+#include <string>
+
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+
+struct ResultEvent {
+    enum class Kind : unsigned char {
+        StartRunner,
+        EndRunner,
+        StartSuite,
+        EndSuite,
+        StartTest,
+        EndTest,
+        Report,
+        Check,
+        Failure,
+        Error,
+        Skipped,
+        Crash,
+        Timeout,
+        Interrupted,
+        Output,
+    };
+
+    Kind kind = Kind::Report;
+    std::string testName;  // the test (or suite) the event is about; empty for runner events
+    TestMessage message;   // for Output, the printed text is the message
+    bool passed = true;    // for Check: whether the check held
+    double time = 0;       // seconds since the collector started, when it was received
+};
+
+// "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats).
+const char* toString(ResultEvent::Kind kind);
+
+}  // namespace robottestingframework

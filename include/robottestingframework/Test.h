@@ -1,0 +1,47 @@
+// The base of everything that can run and report to a TestResult: test cases and suites.
+#pragma once
+
+#include <string>
+
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+
+class TestResult;
+
+class Test {
+public:
+    explicit Test(std::string name, std::string description = "");
+    virtual ~Test();
+    Test(const Test&) = delete;
+    Test& operator=(const Test&) = delete;
+
+    void setName(std::string name) { name_ = std::move(name); }
+    const std::string getName() const { return name_; }
+    void setDescription(std::string description) { description_ = std::move(description); }
+    const std::string getDescription() const { return description_; }
+
+    virtual void run(TestResult& result) = 0;
+    // Asks a running test to stop as soon as it can. May be called from another thread.
+    virtual void interrupt() {}
+    virtual bool succeeded() const = 0;
+
+    // Beyond RTF 2.x: a test that raised a critical error (ROBOTTESTINGFRAMEWORK_ASSERT_CRITICAL)
+    // carries it here; its suite then skips the tests after it with this reason.
+    bool hasCriticalError() const { return critical_; }
+    const TestMessage& getCriticalError() const { return criticalError_; }
+    void setCriticalError(const TestMessage& reason)
+    {
+        critical_ = true;
+        criticalError_ = reason;
+    }
+    void clearCriticalError() { critical_ = false; }
+
+private:
+    std::string name_;
+    std::string description_;
+    bool critical_ = false;
+    TestMessage criticalError_;
+};
+
+}  // namespace robottestingframework

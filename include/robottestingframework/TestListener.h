@@ -1,0 +1,42 @@
+// Receives the events of a run. Every handler does nothing unless overridden.
+#pragma once
+
+#include <string>
+
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+
+class Test;
+class TestSuite;
+
+class TestListener {
+public:
+    virtual ~TestListener() = default;
+
+    // The RTF 2.x events.
+    virtual void addReport(const Test* /*test*/, TestMessage /*msg*/) {}
+    virtual void addError(const Test* /*test*/, TestMessage /*msg*/) {}
+    virtual void addFailure(const Test* /*test*/, TestMessage /*msg*/) {}
+    virtual void startTest(const Test* /*test*/) {}
+    virtual void endTest(const Test* /*test*/) {}
+    virtual void startTestSuite(const TestSuite* /*suite*/) {}
+    virtual void endTestSuite(const TestSuite* /*suite*/) {}
+    virtual void startTestRunner() {}
+    virtual void endTestRunner() {}
+
+    // Beyond RTF 2.x: every check with its outcome (a failed check also sends addFailure).
+    virtual void addCheck(const Test* /*test*/, TestMessage /*msg*/, bool /*passed*/) {}
+    // The test was not run; the message says why.
+    virtual void addSkipped(const Test* /*test*/, TestMessage /*reason*/) {}
+    // The test's process died of a signal; the message names it.
+    virtual void addCrash(const Test* /*test*/, TestMessage /*msg*/) {}
+    // The test ran past its time limit and was stopped.
+    virtual void addTimeout(const Test* /*test*/, TestMessage /*msg*/) {}
+    // The run was interrupted (Ctrl-C, SIGTERM) before or while this test ran.
+    virtual void addInterrupted(const Test* /*test*/, TestMessage /*msg*/) {}
+    // What the test (or a suite's fixtures) printed on stdout and stderr.
+    virtual void addOutput(const Test* /*test*/, const std::string& /*text*/) {}
+};
+
+}  // namespace robottestingframework

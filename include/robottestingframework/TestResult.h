@@ -1,0 +1,42 @@
+// The hub of a run: every event goes through it to all the registered listeners, in order.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+
+class Test;
+class TestSuite;
+
+class TestResult {
+public:
+    // Listeners are not owned; they must outlive the run.
+    void addListener(TestListener* listener);
+    void removeListener(TestListener* listener);
+
+    void addReport(const Test* test, TestMessage msg);
+    void addError(const Test* test, TestMessage msg);
+    void addFailure(const Test* test, TestMessage msg);
+    void startTest(const Test* test);
+    void endTest(const Test* test);
+    void startTestSuite(const TestSuite* suite);
+    void endTestSuite(const TestSuite* suite);
+    void startTestRunner();
+    void endTestRunner();
+
+    void addCheck(const Test* test, TestMessage msg, bool passed);
+    void addSkipped(const Test* test, TestMessage reason);
+    void addCrash(const Test* test, TestMessage msg);
+    void addTimeout(const Test* test, TestMessage msg);
+    void addInterrupted(const Test* test, TestMessage msg);
+    void addOutput(const Test* test, const std::string& text);
+
+private:
+    std::vector<TestListener*> listeners_;
+};
+
+}  // namespace robottestingframework

@@ -1,0 +1,95 @@
+// Keeps every event of a run, in order, and the counts and per-test records outputters need.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/ResultEvent.h>
+#include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestStatus.h>
+
+namespace robottestingframework {
+
+// One test as the outputs show it.
+struct TestRecord {
+    std::string name;
+    std::string description;
+    TestStatus status = TestStatus::Passed;
+    double start = 0;     // seconds since the collector started
+    double duration = 0;  // seconds
+    std::vector<ResultEvent> events;  // its reports, checks, failures, errors, ... in order
+    std::string output;               // what it printed
+    // The message that decided the state (first failure, error, crash, ...), if any.
+    const ResultEvent* reason() const;
+};
+
+// One suite as the outputs show it. Tests run outside any suite go to an unnamed suite.
+struct SuiteRecord {
+    std::string name;
+    std::string description;
+    double start = 0;
+    double duration = 0;
+    std::vector<TestRecord> tests;
+    std::vector<ResultEvent> events;  // the suite's own: fixture reports, failures, collapse
+    std::string output;               // what its fixtures printed
+    bool fixtureFailed = false;
+    bool succeeded() const;
+};
+
+class TestResultCollector : public TestListener {
+public:
+    TestResultCollector();
+    ~TestResultCollector() override;
+
+    // Counts of tests (not suites). failedCount() counts every state that fails a run.
+    std::size_t testCount() const;
+    std::size_t passedCount() const;
+    std::size_t failedCount() const;
+    std::size_t skippedCount() const;
+    std::size_t countOf(TestStatus status) const;
+    std::size_t suiteCount() const;
+    std::size_t passedSuiteCount() const;
+    std::size_t failedSuiteCount() const;
+
+    // Every event in arrival order.
+    const std::vector<ResultEvent>& getResults() const { return events_; }
+    // Suites in order, with their tests.
+    const std::vector<SuiteRecord>& suites() const { return suites_; }
+    // Wall time from startTestRunner to endTestRunner (or to now while running).
+    double duration() const;
+    // Drops events and records (counts stay). For runs with very many tests.
+    void setKeepEvents(bool keep) { keepEvents_ = keep; }
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTestRunner() override;
+    void endTestRunner() override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+
+private:
+    double now() const;
+    void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
+    SuiteRecord& currentSuite();
+
+    std::chrono::steady_clock::time_point origin_;
+    double end_ = -1;
+    bool keepEvents_ = true;
+    std::vector<ResultEvent> events_;
+    std::vector<SuiteRecord> suites_;
+    bool inSuite_ = false;
+    int testDepth_ = 0;  // > 0 while a test is open
+};
+
+}  // namespace robottestingframework

@@ -1,0 +1,26 @@
+// The final state of a test, as every output shows it.
+#pragma once
+
+namespace robottestingframework {
+
+// Ordered by precedence: when a test collects several outcomes, the highest one is its state.
+enum class TestStatus {
+    Passed = 0,
+    Skipped,
+    Failed,
+    Error,
+    Crashed,
+    TimedOut,
+    Interrupted,
+};
+
+// "passed", "skipped", "failed", "error", "crashed", "timed out", "interrupted".
+const char* toString(TestStatus status);
+
+// True for the states that make a run fail (everything but passed and skipped).
+inline bool isFailure(TestStatus status)
+{
+    return status != TestStatus::Passed && status != TestStatus::Skipped;
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,31 @@
+// One loader per language; test_loader.cpp picks among them. Each lives in its own folder.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "test_loader.h"
+
+namespace robottestingframework {
+namespace languages {
+
+// dll/: C++ plug-ins (ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN).
+std::unique_ptr<LoadedTest> loadDllTest(const std::string& path, std::string& error);
+std::unique_ptr<LoadedFixture> loadDllFixture(const std::string& path, std::string& error);
+
+// exec/: any executable; TAP on its stdout becomes checks.
+std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error);
+
+#ifdef RTF_HAVE_PYTHON
+std::unique_ptr<LoadedTest> loadPythonTest(const std::string& path, std::string& error);
+std::unique_ptr<LoadedFixture> loadPythonFixture(const std::string& path, std::string& error);
+#endif
+#ifdef RTF_HAVE_LUA
+std::unique_ptr<LoadedTest> loadLuaTest(const std::string& path, std::string& error);
+#endif
+#ifdef RTF_HAVE_RUBY
+std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& error);
+#endif
+
+}  // namespace languages
+}  // namespace robottestingframework

@@ -1,0 +1,123 @@
+#include "test_loader.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+
+#include "backends.h"
+
+namespace robottestingframework {
+namespace languages {
+
+namespace {
+
+bool endsWith(const std::string& text, const std::string& suffix)
+{
+    return text.size() >= suffix.size() &&
+           std::equal(suffix.rbegin(), suffix.rend(), text.rbegin());
+}
+
+std::string extensionType(const std::string& path)
+{
+    // A versioned library (libfoo.so.1) is still a library.
+    if (endsWith(path, ".so") || path.find(".so.") != std::string::npos ||
+        endsWith(path, ".dylib") || endsWith(path, ".dll")) {
+        return "dll";
+    }
+    if (endsWith(path, ".py")) {
+        return "python";
+    }
+    if (endsWith(path, ".lua")) {
+        return "lua";
+    }
+    if (endsWith(path, ".rb")) {
+        return "ruby";
+    }
+    return {};
+}
+
+}  // namespace
+
+std::string typeFromFile(const std::string& path)
+{
+    std::string type = extensionType(path);
+    if (!type.empty()) {
+        return type;
+    }
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
+        ::access(path.c_str(), X_OK) == 0) {
+        return "exec";
+    }
+    return {};
+}
+
+bool isSupportedType(const std::string& type)
+{
+    if (type == "dll" || type == "exec") {
+        return true;
+    }
+#ifdef RTF_HAVE_PYTHON
+    if (type == "python") {
+        return true;
+    }
+#endif
+#ifdef RTF_HAVE_LUA
+    if (type == "lua") {
+        return true;
+    }
+#endif
+#ifdef RTF_HAVE_RUBY
+    if (type == "ruby") {
+        return true;
+    }
+#endif
+    return false;
+}
+
+std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string& path,
+                                     std::string& error)
+{
+    if (type == "dll") {
+        return loadDllTest(path, error);
+    }
+    if (type == "exec") {
+        return loadExecTest(path, error);
+    }
+#ifdef RTF_HAVE_PYTHON
+    if (type == "python") {
+        return loadPythonTest(path, error);
+    }
+#endif
+#ifdef RTF_HAVE_LUA
+    if (type == "lua") {
+        return loadLuaTest(path, error);
+    }
+#endif
+#ifdef RTF_HAVE_RUBY
+    if (type == "ruby") {
+        return loadRubyTest(path, error);
+    }
+#endif
+    error = "test type '" + type + "' is not supported by this build";
+    return nullptr;
+}
+
+std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
+                                           std::string& error)
+{
+    if (type == "dll") {
+        return loadDllFixture(path, error);
+    }
+#ifdef RTF_HAVE_PYTHON
+    if (type == "python") {
+        return loadPythonFixture(path, error);
+    }
+#endif
+    error = "fixture type '" + type + "' is not supported by this build";
+    return nullptr;
+}
+
+}  // namespace languages
+}  // namespace robottestingframework

@@ -1,0 +1,39 @@
+// Makes a test case or fixture manager from a file, whatever its language. The in-process
+// executor and the worker process both use this.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/TestCase.h>
+
+namespace robottestingframework {
+namespace languages {
+
+// Keeps alive whatever the object needs (a library, an interpreter's module) and the object.
+template <typename T>
+class Loaded {
+public:
+    virtual ~Loaded() = default;
+    virtual T* get() = 0;
+};
+using LoadedTest = Loaded<TestCase>;
+using LoadedFixture = Loaded<FixtureManager>;
+
+// "dll", "python", "lua", "ruby" or "exec", from the file name and content (SPEC 3.2);
+// empty when the file is none of these (for instance, not executable).
+std::string typeFromFile(const std::string& path);
+
+// Loads the test at `path` as `type`. nullptr and `error` set (the loader's own words:
+// dlerror, a syntax error with file:line, ...) on failure.
+std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string& path,
+                                     std::string& error);
+std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
+                                           std::string& error);
+
+// The types this build supports ("dll", "exec", and the enabled script languages).
+bool isSupportedType(const std::string& type);
+
+}  // namespace languages
+}  // namespace robottestingframework

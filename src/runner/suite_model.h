@@ -1,0 +1,50 @@
+// What a suite file (or the command line) asks to run, before anything is loaded.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace robottestingframework {
+namespace runner {
+
+// Where a piece of the model came from, for error messages ("suite.xml:12").
+struct SourceLocation {
+    std::string file;
+    unsigned int line = 0;
+    std::string toString() const;
+};
+
+struct TestSpec {
+    std::string plugin;        // as written: a path or a bare name
+    std::string path;          // resolved file; empty when it could not be found
+    std::string type;          // "dll", "python", "lua", "ruby", "exec"; empty: from the file
+    std::string name;          // optional name="..." from the suite; else the plug-in's name
+    std::string param;
+    std::string environment;
+    unsigned int repetition = 1;
+    double timeout = 0;        // seconds; 0: none (issue 3 fills the precedence)
+    std::vector<std::string> depends;
+    std::vector<std::string> tags;
+    SourceLocation where;
+};
+
+struct FixtureSpec {
+    std::string plugin;
+    std::string path;
+    std::string type;          // "dll", "python", "process"; empty: from the file
+    std::string param;
+    SourceLocation where;
+};
+
+struct SuiteSpec {
+    std::string name;
+    std::string description;
+    std::string environment;
+    double timeout = 0;
+    std::vector<FixtureSpec> fixtures;
+    std::vector<TestSpec> tests;
+    SourceLocation where;
+};
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,36 @@
+// How a test or a fixture is run: in the runner's process, or in a worker process. The rest of
+// the runner does not know which.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestStatus.h>
+
+#include "suite_model.h"
+
+namespace robottestingframework {
+namespace runner {
+
+class TestExecutor {
+public:
+    virtual ~TestExecutor() = default;
+    // Runs `spec`, sending its events to `result` about `self` (a stand-in Test the executor may
+    // rename to the name the test reports): exactly one startTest and one endTest, whatever
+    // happens. Returns the test's final state.
+    virtual TestStatus run(const TestSpec& spec, Test& self, TestResult& result) = 0;
+    // Stops the running test as soon as possible. Thread-safe; a no-op when nothing runs.
+    virtual void interrupt() = 0;
+
+    // Makes the fixture manager `spec` describes. Its setup/check/tearDown may run elsewhere
+    // (a worker process) — the returned object is the runner's handle on it. nullptr and
+    // `error` set when it cannot be made.
+    virtual std::unique_ptr<FixtureManager> makeFixture(const FixtureSpec& spec,
+                                                        std::string& error) = 0;
+};
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,66 @@
+"""Shared helpers for the end-to-end tests: run the real runner on real files."""
+import os
+import signal
+import subprocess
+from pathlib import Path
+
+import pytest
+
+RUNNER = os.environ.get("RTF_TESTRUNNER", "")
+PLUGIN_DIR = Path(os.environ.get("RTF_TEST_PLUGIN_DIR", "."))
+SOURCE_DIR = Path(os.environ.get("RTF_SOURCE_DIR", "."))
+BUILD_DIR = Path(os.environ.get("RTF_BUILD_DIR", "."))
+SCHEMA = SOURCE_DIR.parent / "shared" / "schemas" / "jenkins-junit.xsd"
+
+
+def plugin(name):
+    """Path of a test plug-in built from tests/plugins/NAME.cpp."""
+    return str(PLUGIN_DIR / f"{name}.so")
+
+
+class Run:
+    def __init__(self, proc, stdout, stderr):
+        self.returncode = proc.returncode
+        self.stdout = stdout
+        self.stderr = stderr
+        self.output = stdout + stderr
+
+    def __repr__(self):
+        return f"<exit {self.returncode}>\n--- stdout\n{self.stdout}\n--- stderr\n{self.stderr}"
+
+
+def run_runner(*args, timeout=120, cwd=None, env=None, input=None):
+    """Runs the runner with `args`; returns Run (exit status, stdout, stderr).
+    The runner is killed (its whole process group) if it outlives `timeout`."""
+    assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
+    full_env = dict(os.environ)
+    if env:
+        full_env.update(env)
+    proc = subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            stdin=subprocess.PIPE if input else subprocess.DEVNULL,
+                            start_new_session=True, text=True)
+    try:
+        out, err = proc.communicate(input=input, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        pytest.fail(f"runner did not finish within {timeout} s\n{out}\n{err}")
+    return Run(proc, out, err)
+
+
+def validate_junit(path):
+    """Fails the test unless `path` validates against the Jenkins JUnit schema."""
+    result = subprocess.run(["xmllint", "--noout", "--schema", str(SCHEMA), str(path)],
+                            capture_output=True, text=True, timeout=60)
+    assert result.returncode == 0, result.stderr
+
+
+@pytest.fixture
+def suite_file(tmp_path):
+    """Writes a suite file in the test's folder: suite_file(text, name='suite.xml')."""
+    def write(text, name="suite.xml"):
+        path = tmp_path / name
+        path.write_text(text)
+        return path
+    return write
