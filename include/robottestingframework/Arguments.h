@@ -9,7 +9,8 @@ namespace robottestingframework {
 class Arguments {
 public:
     // Splits `line` in place (quotes and backslashes honoured), writing pointers into `args`
-    // (at most `maxArgs`, then a nullptr) and returning the count.
+    // (`args` has `maxArgs` slots: at most maxArgs - 1 words, then a nullptr) and returning
+    // the count.
     static int split(char* line, char** args, int maxArgs = 64);
     // The same on a copy: words of `line`, quotes removed.
     static std::vector<std::string> split(const std::string& line);
@@ -23,6 +24,8 @@ public:
 class ArgumentVector {
 public:
     ArgumentVector(const std::string& name, const std::string& param);
+    ArgumentVector(const ArgumentVector&) = delete;  // argv points into words_
+    ArgumentVector& operator=(const ArgumentVector&) = delete;
     int argc() const { return static_cast<int>(words_.size()); }
     char** argv() { return pointers_.data(); }
 

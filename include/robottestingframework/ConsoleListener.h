@@ -21,6 +21,9 @@ public:
     // Beyond RTF 2.x: where to print (stdout by default), and whether to use colours.
     void setStream(std::FILE* stream);
     void setColors(bool colors) { colors_ = colors; }
+    // Beyond RTF 2.x: false leaves the summary out at the end (the runner's --no-summary); the
+    // closing line "N passed, N failed" is always printed.
+    void showSummary(bool show) { showSummary_ = show; }
 
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;
@@ -40,11 +43,18 @@ public:
 
 private:
     void message(const char* label, const char* colour, const TestMessage& msg);
+    // Prints `msg` now when it belongs to no open test or verbose is on; otherwise it is
+    // printed under the test's line at endTest.
+    bool printNow(const Test* test) const;
+    void line(const std::string& text);
 
     std::FILE* stream_;
+    bool tty_ = false;
+    const Test* test_ = nullptr;  // the open test
     bool verbose_;
     bool hideUncritical_ = false;
     bool showChecks_ = false;
+    bool showSummary_ = true;
     bool colors_ = false;
     // Enough of the current test to print its line at the end, and counts for the summary.
     TestResultCollector record_;

@@ -46,12 +46,16 @@ public:
     static TestCase* current();
 
 private:
+    friend class Asserter;  // marks a failure as already reported
+
     std::string param_;
     std::string environment_;
     unsigned int repetition_ = 1;
-    bool successful_ = true;
+    // Helper threads of a test may report and mark it failed while it runs.
+    std::atomic<bool> successful_{true};
+    std::atomic<bool> failureReported_{false};
     std::atomic<bool> interrupted_{false};
-    TestResult* result_ = nullptr;
+    std::atomic<TestResult*> result_{nullptr};
 };
 
 }  // namespace robottestingframework

@@ -1,6 +1,7 @@
 // The hub of a run: every event goes through it to all the registered listeners, in order.
 #pragma once
 
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ public:
 
 private:
     std::vector<TestListener*> listeners_;
+    // Fixture watcher threads may report while the test thread does; events stay whole.
+    std::recursive_mutex mutex_;
 };
 
 }  // namespace robottestingframework

@@ -17,8 +17,8 @@ struct TestRecord {
     std::string name;
     std::string description;
     TestStatus status = TestStatus::Passed;
-    double start = 0;     // seconds since the collector started
-    double duration = 0;  // seconds
+    double start = 0;                 // seconds since the collector started
+    double duration = 0;              // seconds
     std::vector<ResultEvent> events;  // its reports, checks, failures, errors, ... in order
     std::string output;               // what it printed
     // The message that decided the state (first failure, error, crash, ...), if any.
@@ -59,6 +59,8 @@ public:
     const std::vector<SuiteRecord>& suites() const { return suites_; }
     // Wall time from startTestRunner to endTestRunner (or to now while running).
     double duration() const;
+    // The calendar time the collector was made; event times count from it.
+    std::chrono::system_clock::time_point startedAt() const { return wallOrigin_; }
     // Drops events and records (counts stay). For runs with very many tests.
     void setKeepEvents(bool keep) { keepEvents_ = keep; }
 
@@ -79,17 +81,37 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
 
 private:
+    // A test between its startTest and endTest: where its record is.
+    struct OpenTest {
+        const Test* test;
+        std::size_t suite;
+        std::size_t index;
+    };
+    static constexpr std::size_t none = static_cast<std::size_t>(-1);
+
     double now() const;
     void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
     SuiteRecord& currentSuite();
 
     std::chrono::steady_clock::time_point origin_;
+    std::chrono::system_clock::time_point wallOrigin_;
+    double start_ = 0;
     double end_ = -1;
     bool keepEvents_ = true;
     std::vector<ResultEvent> events_;
     std::vector<SuiteRecord> suites_;
-    bool inSuite_ = false;
-    int testDepth_ = 0;  // > 0 while a test is open
+    // A suite between its startTestSuite and endTestSuite; `failed` survives dropped records.
+    struct OpenSuite {
+        std::size_t index;
+        bool failed;
+    };
+    std::vector<OpenSuite> openSuites_;  // innermost last
+    std::vector<OpenTest> openTests_;    // innermost last
+    std::size_t looseSuite_ = none;      // the unnamed record of tests run outside a suite
+    // Counts survive setKeepEvents(false), which drops finished records.
+    std::size_t counts_[7] = {};
+    std::size_t suitesRun_ = 0;
+    std::size_t suitesFailed_ = 0;
 };
 
 }  // namespace robottestingframework

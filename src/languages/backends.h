@@ -13,6 +13,9 @@ namespace languages {
 std::unique_ptr<LoadedTest> loadDllTest(const std::string& path, std::string& error);
 std::unique_ptr<LoadedFixture> loadDllFixture(const std::string& path, std::string& error);
 
+// src/fixtures/process/: the built-in process fixture; `path` is its world file.
+std::unique_ptr<LoadedFixture> loadProcessFixture(const std::string& path, std::string& error);
+
 // exec/: any executable; TAP on its stdout becomes checks.
 std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error);
 

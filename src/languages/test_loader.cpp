@@ -55,8 +55,8 @@ std::string typeFromFile(const std::string& path)
 
 bool isSupportedType(const std::string& type)
 {
-    if (type == "dll" || type == "exec") {
-        return true;
+    if (type == "dll" || type == "exec" || type == "process") {
+        return true;  // "process": fixtures only (a world file)
     }
 #ifdef RTF_HAVE_PYTHON
     if (type == "python") {
@@ -109,6 +109,9 @@ std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::s
 {
     if (type == "dll") {
         return loadDllFixture(path, error);
+    }
+    if (type == "process") {
+        return loadProcessFixture(path, error);
     }
 #ifdef RTF_HAVE_PYTHON
     if (type == "python") {

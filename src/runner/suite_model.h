@@ -15,14 +15,14 @@ struct SourceLocation {
 };
 
 struct TestSpec {
-    std::string plugin;        // as written: a path or a bare name
-    std::string path;          // resolved file; empty when it could not be found
-    std::string type;          // "dll", "python", "lua", "ruby", "exec"; empty: from the file
-    std::string name;          // optional name="..." from the suite; else the plug-in's name
+    std::string plugin;  // as written: a path or a bare name
+    std::string path;    // resolved file; empty when it could not be found
+    std::string type;    // "dll", "python", "lua", "ruby", "exec"; empty: from the file
+    std::string name;    // optional name="..." from the suite; else the plug-in's name
     std::string param;
     std::string environment;
-    unsigned int repetition = 1;
-    double timeout = 0;        // seconds; 0: none (issue 3 fills the precedence)
+    unsigned int repetition = 1;  // 0 in a suite file without one: --repetition, else 1
+    double timeout = 0;           // seconds; 0: none (issue 3 fills the precedence)
     std::vector<std::string> depends;
     std::vector<std::string> tags;
     SourceLocation where;
@@ -31,7 +31,7 @@ struct TestSpec {
 struct FixtureSpec {
     std::string plugin;
     std::string path;
-    std::string type;          // "dll", "python", "process"; empty: from the file
+    std::string type;  // "dll", "python", "process"; empty: from the file
     std::string param;
     SourceLocation where;
 };

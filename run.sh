@@ -1,0 +1,103 @@
+#!/usr/bin/env bash
+# Quick start. Installs the build dependencies (Debian 12), configures and builds in build/,
+# then:
+#   ./run.sh example    runs the example suite; reports in build/example-reports/
+#   ./run.sh test       runs every test (ctest); last line "N passed, N failed"
+#   ./run.sh sanitize   builds build-asan/ with -DRTF_SANITIZE=ON and runs the unit tests
+# The build folder can be moved with RTF_BUILD_DIR (default build).
+set -euo pipefail
+cd "$(dirname "$0")"
+root=$PWD
+dir=${RTF_BUILD_DIR:-build}
+
+usage() {
+    echo "usage: $0 example|test|sanitize" >&2
+    exit 2
+}
+
+# configure <build dir> [cmake options...]: fails on any CMake warning, so none creeps in.
+configure() {
+    local dir=$1
+    shift
+    local log
+    log=$(mktemp)
+    if ! cmake -S "$root" -B "$dir" -G Ninja -Wdev -DRTF_WARNINGS_AS_ERRORS=ON "$@" 2>&1 |
+        tee "$log"; then
+        rm -f "$log"
+        echo "run.sh: configuring $dir failed" >&2
+        exit 1
+    fi
+    if grep -q "CMake Warning" "$log"; then
+        rm -f "$log"
+        echo "run.sh: CMake printed warnings while configuring $dir (see above)" >&2
+        exit 1
+    fi
+    rm -f "$log"
+}
+
+build() {
+    cmake --build "$1" -j2
+}
+
+# ctest_summary <ctest log>: prints "N passed, N failed" from ctest's own summary line.
+ctest_summary() {
+    local line total failed
+    line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$1" | tail -n 1)
+    if [[ -z "$line" ]]; then
+        echo "0 passed, 1 failed"
+        return
+    fi
+    failed=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
+    total=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
+    echo "$((total - failed)) passed, ${failed} failed"
+}
+
+run_ctest() {
+    local dir=$1
+    shift
+    local log status=0
+    log="$dir/ctest-summary.log"
+    ctest --test-dir "$dir" -j2 --output-on-failure --timeout 600 "$@" 2>&1 | tee "$log" ||
+        status=$?
+    local summary
+    summary=$(ctest_summary "$log")
+    echo "$summary"
+    if [[ $status -ne 0 || "$summary" != *" 0 failed" ]]; then
+        exit 1
+    fi
+}
+
+[[ $# -eq 1 ]] || usage
+case "$1" in
+example)
+    scripts/install-deps.sh
+    configure "$dir"
+    build "$dir"
+    reports=$(cd "$dir" && pwd)/example-reports
+    mkdir -p "$reports"
+    status=0
+    "$dir/bin/robottestingframework-testrunner" --suite "$dir/examples/example.xml" \
+        --output "text:$reports/example.txt" --output "junit:$reports/example.xml" ||
+        status=$?
+    echo
+    echo "Reports: $reports/example.txt (text) and $reports/example.xml (JUnit)"
+    exit $status
+    ;;
+test)
+    scripts/install-deps.sh
+    configure "$dir"
+    build "$dir"
+    run_ctest "$dir"
+    ;;
+sanitize)
+    scripts/install-deps.sh
+    configure build-asan -DRTF_SANITIZE=ON -DRTF_BUILD_EXAMPLES=OFF -DRTF_BUILD_BENCH=OFF
+    build build-asan
+    # The unit tests (GoogleTest), not the end-to-end ones (e2e.*) nor the format check.
+    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
+        run_ctest build-asan -E '^(e2e\.|ctest\.|format$|bench\.)'
+    ;;
+*)
+    usage
+    ;;
+esac

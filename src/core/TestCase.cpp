@@ -1,0 +1,149 @@
+#include <robottestingframework/TestCase.h>
+
+#include <cxxabi.h>
+
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <typeinfo>
+
+#include <robottestingframework/Arguments.h>
+#include <robottestingframework/Exception.h>
+#include <robottestingframework/TestResult.h>
+
+namespace robottestingframework {
+
+namespace {
+
+// Process-wide, not per thread: helper threads a test starts report to it too.
+std::atomic<TestCase*> runningTest{nullptr};
+
+std::string typeName(const std::type_info& type) {
+    int status = 0;
+    std::unique_ptr<char, void (*)(void*)> name(
+        abi::__cxa_demangle(type.name(), nullptr, nullptr, &status), std::free);
+    return (status == 0 && name) ? std::string(name.get()) : std::string(type.name());
+}
+
+}  // namespace
+
+TestCase::TestCase(std::string name, std::string param) : Test(std::move(name)), param_(param) {}
+
+TestCase::~TestCase() {
+    TestCase* self = this;
+    runningTest.compare_exchange_strong(self, nullptr);
+}
+
+bool TestCase::setup(int /*argc*/, char** /*argv*/) {
+    return true;
+}
+
+void TestCase::tearDown() {}
+
+TestCase* TestCase::current() {
+    return runningTest.load();
+}
+
+void TestCase::interrupt() {
+    interrupted_ = true;
+}
+
+bool TestCase::succeeded() const {
+    return successful_;
+}
+
+void TestCase::failed() {
+    successful_ = false;
+}
+
+TestResult* TestCase::getResult() {
+    return result_;
+}
+
+namespace {
+
+// Runs one step of the test, turning whatever it throws into the event it means. Returns
+// false when the step threw.
+template <typename Step>
+bool guarded(TestCase& test, TestResult& result, Step step) {
+    try {
+        step();
+        return true;
+    } catch (const TestCriticalErrorException& e) {
+        result.addError(&test, e.message());
+        test.setCriticalError(e.message());
+    } catch (const TestErrorException& e) {
+        result.addError(&test, e.message());
+    } catch (const TestFailureException& e) {
+        result.addFailure(&test, e.message());
+    } catch (const Exception& e) {
+        result.addError(&test, e.message());
+    } catch (const std::exception& e) {
+        result.addError(&test, TestMessage("unhandled exception: " + std::string(e.what()),
+                                           typeName(typeid(e))));
+    } catch (...) {
+        result.addError(&test, TestMessage("unhandled exception of unknown type"));
+    }
+    test.failed();
+    return false;
+}
+
+}  // namespace
+
+void TestCase::run(TestResult& result) {
+    successful_ = true;
+    failureReported_ = false;
+    clearCriticalError();
+    result_ = &result;
+    TestCase* const previous = runningTest.exchange(this);
+
+    result.startTest(this);
+    bool reported = false;  // a failure or error event was sent by this function
+    if (interrupted_) {
+        result.addInterrupted(this, TestMessage("interrupted before it started"));
+    } else {
+        ArgumentVector args(getName(), getParam());
+        bool up = false;
+        if (guarded(*this, result, [&] { up = setup(args.argc(), args.argv()); })) {
+            if (!up) {
+                result.addError(this, TestMessage("setup failed", "test " + getName()));
+                successful_ = false;
+                reported = true;
+            }
+        } else {
+            reported = true;
+        }
+        if (up) {
+            const unsigned int count = repetition_ == 0 ? 1 : repetition_;
+            for (unsigned int k = 1; k <= count && !interrupted_; ++k) {
+                if (count > 1) {
+                    result.addReport(this, TestMessage("repetition " + std::to_string(k) + "/" +
+                                                       std::to_string(count)));
+                }
+                if (!guarded(*this, result, [this] { run(); })) {
+                    reported = true;
+                    break;
+                }
+            }
+            if (!guarded(*this, result, [this] { tearDown(); })) {
+                reported = true;
+            }
+        }
+        if (interrupted_) {
+            result.addInterrupted(this, TestMessage("interrupted while running"));
+            successful_ = false;
+            reported = true;
+        }
+    }
+    // failed() alone leaves no message; say so, or the outputs would show it passed.
+    if (!successful_ && !reported && !failureReported_) {
+        result.addFailure(this, TestMessage("the test marked itself failed"));
+    }
+    result.endTest(this);
+
+    runningTest.store(previous);
+    result_ = nullptr;
+    interrupted_ = false;
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,301 @@
+#include <robottestingframework/TestResultCollector.h>
+
+#include <algorithm>
+
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestSuite.h>
+
+namespace robottestingframework {
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+// The state an event gives a test; Passed for events that do not change it.
+TestStatus statusOf(Kind kind) {
+    switch (kind) {
+        case Kind::Failure:
+            return TestStatus::Failed;
+        case Kind::Error:
+            return TestStatus::Error;
+        case Kind::Crash:
+            return TestStatus::Crashed;
+        case Kind::Timeout:
+            return TestStatus::TimedOut;
+        case Kind::Interrupted:
+            return TestStatus::Interrupted;
+        case Kind::Skipped:
+            return TestStatus::Skipped;
+        default:
+            return TestStatus::Passed;
+    }
+}
+
+ResultEvent makeEvent(Kind kind, const Test* test, TestMessage msg, bool passed, double time) {
+    ResultEvent event;
+    event.kind = kind;
+    if (test != nullptr) {
+        event.testName = test->getName();
+    }
+    event.message = std::move(msg);
+    event.passed = passed;
+    event.time = time;
+    return event;
+}
+
+}  // namespace
+
+const ResultEvent* TestRecord::reason() const {
+    if (status == TestStatus::Passed) {
+        return nullptr;
+    }
+    for (const ResultEvent& event : events) {
+        if (statusOf(event.kind) == status) {
+            return &event;
+        }
+    }
+    return nullptr;
+}
+
+bool SuiteRecord::succeeded() const {
+    if (fixtureFailed) {
+        return false;
+    }
+    return std::none_of(tests.begin(), tests.end(),
+                        [](const TestRecord& test) { return isFailure(test.status); });
+}
+
+TestResultCollector::TestResultCollector()
+    : origin_(std::chrono::steady_clock::now()), wallOrigin_(std::chrono::system_clock::now()) {}
+
+TestResultCollector::~TestResultCollector() = default;
+
+double TestResultCollector::now() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
+}
+
+double TestResultCollector::duration() const {
+    return (end_ >= 0 ? end_ : now()) - start_;
+}
+
+std::size_t TestResultCollector::testCount() const {
+    std::size_t total = 0;
+    for (std::size_t count : counts_) {
+        total += count;
+    }
+    return total;
+}
+
+std::size_t TestResultCollector::countOf(TestStatus status) const {
+    return counts_[static_cast<std::size_t>(status)];
+}
+
+std::size_t TestResultCollector::passedCount() const {
+    return countOf(TestStatus::Passed);
+}
+
+std::size_t TestResultCollector::skippedCount() const {
+    return countOf(TestStatus::Skipped);
+}
+
+std::size_t TestResultCollector::failedCount() const {
+    return testCount() - passedCount() - skippedCount();
+}
+
+std::size_t TestResultCollector::suiteCount() const {
+    return suitesRun_;
+}
+
+std::size_t TestResultCollector::passedSuiteCount() const {
+    return suitesRun_ - suitesFailed_;
+}
+
+std::size_t TestResultCollector::failedSuiteCount() const {
+    return suitesFailed_;
+}
+
+SuiteRecord& TestResultCollector::currentSuite() {
+    if (!openSuites_.empty()) {
+        return suites_[openSuites_.back().index];
+    }
+    if (looseSuite_ == none) {
+        if (!keepEvents_ && openTests_.empty()) {
+            suites_.clear();
+        }
+        suites_.emplace_back();
+        suites_.back().start = now();
+        looseSuite_ = suites_.size() - 1;
+    }
+    return suites_[looseSuite_];
+}
+
+void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
+    ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
+    // A test's own event goes to its record; anything else open (a fixture's report from a
+    // watcher thread, a collapse) belongs to the suite.
+    TestRecord* owner = nullptr;
+    for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
+        if (it->test == test) {
+            owner = &suites_[it->suite].tests[it->index];
+            break;
+        }
+    }
+    if (owner != nullptr) {
+        if (kind == Kind::Output) {
+            owner->output += event.message.getMessage();
+        } else {
+            owner->status = std::max(owner->status, statusOf(kind));
+            owner->events.push_back(event);
+        }
+    } else if (!openSuites_.empty()) {
+        SuiteRecord& suite = suites_[openSuites_.back().index];
+        if (kind == Kind::Output) {
+            suite.output += event.message.getMessage();
+        } else {
+            if (isFailure(statusOf(kind))) {
+                suite.fixtureFailed = true;
+            }
+            suite.events.push_back(event);
+        }
+    }
+    if (keepEvents_) {
+        events_.push_back(std::move(event));
+    }
+}
+
+void TestResultCollector::addReport(const Test* test, TestMessage msg) {
+    record(Kind::Report, test, std::move(msg));
+}
+
+void TestResultCollector::addError(const Test* test, TestMessage msg) {
+    record(Kind::Error, test, std::move(msg));
+}
+
+void TestResultCollector::addFailure(const Test* test, TestMessage msg) {
+    record(Kind::Failure, test, std::move(msg));
+}
+
+void TestResultCollector::addCheck(const Test* test, TestMessage msg, bool passed) {
+    record(Kind::Check, test, std::move(msg), passed);
+}
+
+void TestResultCollector::addSkipped(const Test* test, TestMessage reason) {
+    record(Kind::Skipped, test, std::move(reason));
+}
+
+void TestResultCollector::addCrash(const Test* test, TestMessage msg) {
+    record(Kind::Crash, test, std::move(msg));
+}
+
+void TestResultCollector::addTimeout(const Test* test, TestMessage msg) {
+    record(Kind::Timeout, test, std::move(msg));
+}
+
+void TestResultCollector::addInterrupted(const Test* test, TestMessage msg) {
+    record(Kind::Interrupted, test, std::move(msg));
+}
+
+void TestResultCollector::addOutput(const Test* test, const std::string& text) {
+    record(Kind::Output, test, TestMessage(text));
+}
+
+void TestResultCollector::startTest(const Test* test) {
+    const double time = now();
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::StartTest, test, TestMessage(), true, time));
+    }
+    SuiteRecord& suite = currentSuite();
+    if (!keepEvents_ && openTests_.empty()) {
+        suite.tests.clear();  // only the test being run is kept
+    }
+    suite.tests.emplace_back();
+    TestRecord& record = suite.tests.back();
+    if (test != nullptr) {
+        record.name = test->getName();
+        record.description = test->getDescription();
+    }
+    record.start = time;
+    openTests_.push_back(
+        {test, static_cast<std::size_t>(&suite - suites_.data()), suite.tests.size() - 1});
+}
+
+void TestResultCollector::endTest(const Test* test) {
+    const double time = now();
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::EndTest, test, TestMessage(), true, time));
+    }
+    for (std::size_t i = openTests_.size(); i > 0; --i) {
+        const OpenTest open = openTests_[i - 1];
+        if (open.test != test) {
+            continue;
+        }
+        TestRecord& record = suites_[open.suite].tests[open.index];
+        record.duration = time - record.start;
+        ++counts_[static_cast<std::size_t>(record.status)];
+        if (isFailure(record.status)) {
+            for (OpenSuite& suite : openSuites_) {
+                if (suite.index == open.suite) {
+                    suite.failed = true;
+                }
+            }
+        }
+        if (open.suite == looseSuite_) {
+            suites_[open.suite].duration = time - suites_[open.suite].start;
+        }
+        openTests_.erase(openTests_.begin() + static_cast<std::ptrdiff_t>(i - 1), openTests_.end());
+        break;
+    }
+}
+
+void TestResultCollector::startTestSuite(const TestSuite* suite) {
+    const double time = now();
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::StartSuite, suite, TestMessage(), true, time));
+    }
+    if (!keepEvents_ && openSuites_.empty() && openTests_.empty()) {
+        suites_.clear();
+    }
+    looseSuite_ = none;
+    suites_.emplace_back();
+    SuiteRecord& record = suites_.back();
+    if (suite != nullptr) {
+        record.name = suite->getName();
+        record.description = suite->getDescription();
+    }
+    record.start = time;
+    openSuites_.push_back({suites_.size() - 1, false});
+}
+
+void TestResultCollector::endTestSuite(const TestSuite* suite) {
+    const double time = now();
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::EndSuite, suite, TestMessage(), true, time));
+    }
+    if (openSuites_.empty()) {
+        return;
+    }
+    SuiteRecord& record = suites_[openSuites_.back().index];
+    record.duration = time - record.start;
+    ++suitesRun_;
+    if (openSuites_.back().failed || !record.succeeded()) {
+        ++suitesFailed_;
+    }
+    openSuites_.pop_back();
+}
+
+void TestResultCollector::startTestRunner() {
+    start_ = now();
+    end_ = -1;
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::StartRunner, nullptr, TestMessage(), true, start_));
+    }
+}
+
+void TestResultCollector::endTestRunner() {
+    end_ = now();
+    if (keepEvents_) {
+        events_.push_back(makeEvent(Kind::EndRunner, nullptr, TestMessage(), true, end_));
+    }
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,293 @@
+#include <robottestingframework/TestSuite.h>
+
+#include <algorithm>
+#include <exception>
+
+#include <robottestingframework/Arguments.h>
+#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/TestResult.h>
+
+namespace robottestingframework {
+
+namespace {
+
+std::string fixtureName(const FixtureManager* fixture, std::size_t index) {
+    const std::string name = fixture->getName();
+    return name.empty() ? "#" + std::to_string(index + 1) : name;
+}
+
+// Runs one fixture call; returns false and fills `why` when it threw.
+template <typename Call>
+bool guardedFixtureCall(Call call, std::string& why) {
+    try {
+        call();
+        return true;
+    } catch (const std::exception& e) {
+        why = e.what();
+    } catch (...) {
+        why = "unhandled exception of unknown type";
+    }
+    return false;
+}
+
+}  // namespace
+
+TestSuite::TestSuite(std::string name) : Test(std::move(name)) {}
+
+TestSuite::~TestSuite() = default;
+
+void TestSuite::addTest(Test* test) {
+    if (test != nullptr) {
+        tests_.push_back(test);
+    }
+}
+
+void TestSuite::removeTest(Test* test) {
+    tests_.erase(std::remove(tests_.begin(), tests_.end(), test), tests_.end());
+}
+
+void TestSuite::reset() {
+    tests_.clear();
+    fixtures_.clear();
+}
+
+void TestSuite::addFixtureManager(FixtureManager* manager) {
+    if (manager != nullptr) {
+        fixtures_.push_back(manager);
+    }
+}
+
+bool TestSuite::succeeded() const {
+    return successful_;
+}
+
+void TestSuite::interrupt() {
+    interrupted_ = true;
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (current_ != nullptr) {
+        current_->interrupt();
+    }
+}
+
+void TestSuite::fixtureCollapsed(TestMessage reason) {
+    // Only flags and interrupts: the suite reports the collapse on its own thread, between
+    // tests, so events of the running test are not torn apart.
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!collapsed_) {
+        failure_ = reason;
+        collapsed_ = true;
+    }
+    if (current_ != nullptr) {
+        current_->interrupt();
+    }
+}
+
+void TestSuite::skipRemaining(const TestMessage& reason) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    skipRest_ = true;
+    skipReason_ = reason;
+}
+
+TestMessage TestSuite::fixtureFailure() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return failure_;
+}
+
+bool TestSuite::setupFixtures(TestResult& result) {
+    for (std::size_t i = 0; i < fixtures_.size(); ++i) {
+        FixtureManager* fixture = fixtures_[i];
+        fixture->setResult(&result, this);
+        if (fixture->getDispatcher() == nullptr) {
+            fixture->setDispatcher(this);
+        }
+        ArgumentVector args(fixture->getName(), fixture->getParam());
+        bool up = false;
+        std::string why;
+        if (guardedFixtureCall([&] { up = fixture->setup(args.argc(), args.argv()); }, why) &&
+            !up) {
+            why = "setup returned false";
+        }
+        if (!up) {
+            const TestMessage failure("fixture " + fixtureName(fixture, i) + " failed: " + why);
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                failure_ = failure;
+            }
+            successful_ = false;
+            result.addError(this, failure);
+            tearDownFixtures(result, i);
+            return false;
+        }
+    }
+    return true;
+}
+
+void TestSuite::tearDownFixtures(TestResult& result, std::size_t count) {
+    for (std::size_t k = count; k > 0; --k) {
+        FixtureManager* fixture = fixtures_[k - 1];
+        std::string why;
+        if (!guardedFixtureCall([fixture] { fixture->tearDown(); }, why)) {
+            successful_ = false;
+            result.addError(this, TestMessage("fixture " + fixtureName(fixture, k - 1) +
+                                              " tearDown failed: " + why));
+        }
+    }
+}
+
+bool TestSuite::checkFixtures(TestResult& /*result*/) {
+    for (std::size_t i = 0; i < fixtures_.size(); ++i) {
+        FixtureManager* fixture = fixtures_[i];
+        bool ok = false;
+        std::string why;
+        if (guardedFixtureCall([&] { ok = fixture->check(); }, why) && !ok) {
+            why = "check failed";
+        }
+        if (!ok) {
+            fixtureCollapsed(TestMessage("fixture " + fixtureName(fixture, i) + ": " + why));
+            return false;
+        }
+    }
+    return true;
+}
+
+void TestSuite::reportRemaining(TestResult& result, std::size_t from, const TestMessage& reason,
+                                bool interrupted) {
+    for (std::size_t i = from; i < tests_.size(); ++i) {
+        Test* test = tests_[i];
+        if (auto* suite = dynamic_cast<TestSuite*>(test)) {
+            suite->reportNotRun(result, reason, interrupted);
+            continue;
+        }
+        result.startTest(test);
+        if (interrupted) {
+            result.addInterrupted(test, reason);
+        } else {
+            result.addSkipped(test, reason);
+        }
+        result.endTest(test);
+    }
+}
+
+void TestSuite::reportNotRun(TestResult& result, const TestMessage& reason, bool interrupted) {
+    successful_ = !interrupted;
+    result.startTestSuite(this);
+    reportRemaining(result, 0, reason, interrupted);
+    result.endTestSuite(this);
+}
+
+void TestSuite::run(TestResult& result) {
+    successful_ = true;
+    clearCriticalError();
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        failure_.clear();
+        skipReason_.clear();
+        skipRest_ = false;
+        collapsed_ = false;
+    }
+    result.startTestSuite(this);
+
+    bool collapseReported = false;
+    auto reportCollapse = [&] {
+        if (!collapsed_ || collapseReported) {
+            return;
+        }
+        collapseReported = true;
+        successful_ = false;
+        const TestMessage reason = fixtureFailure();
+        result.addError(this,
+                        TestMessage("fixture collapsed: " + reason.getMessage(), reason.getDetail(),
+                                    reason.getSourceFileName(), reason.getSourceLineNumber()));
+    };
+    // Reports tests [i, end) as not run when something stops the suite; true if it did.
+    auto stopped = [&](std::size_t i) {
+        if (interrupted_) {
+            successful_ = false;
+            reportRemaining(result, i, TestMessage("interrupted"), true);
+            return true;
+        }
+        if (collapsed_) {
+            reportCollapse();
+            reportRemaining(
+                result, i, TestMessage("fixture collapsed: " + fixtureFailure().toString()), false);
+            return true;
+        }
+        TestMessage reason;
+        bool skip = false;
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            skip = skipRest_;
+            reason = skipReason_;
+        }
+        if (skip) {
+            reportRemaining(result, i, reason, false);
+        }
+        return skip;
+    };
+
+    if (interrupted_) {
+        stopped(0);
+    } else if (!setupFixtures(result)) {
+        reportRemaining(result, 0, fixtureFailure(), false);
+    } else {
+        for (std::size_t i = 0; i < tests_.size(); ++i) {
+            Test* test = tests_[i];
+            if (stopped(i)) {
+                break;
+            }
+            TestMessage reason;
+            if (gate_ != nullptr && gate_->skip(test, reason)) {
+                if (auto* suite = dynamic_cast<TestSuite*>(test)) {
+                    suite->reportNotRun(result, reason, false);
+                } else {
+                    result.startTest(test);
+                    result.addSkipped(test, reason);
+                    result.endTest(test);
+                }
+                continue;
+            }
+            if (!checkFixtures(result) && stopped(i)) {
+                break;
+            }
+            bool started = false;
+            {
+                // Checked under the lock interrupt() and fixtureCollapsed() take: an interrupt
+                // or a collapse is either seen here or reaches the test through current_.
+                std::lock_guard<std::mutex> lock(mutex_);
+                if (!interrupted_ && !collapsed_) {
+                    current_ = test;
+                    started = true;
+                }
+            }
+            if (!started) {
+                stopped(i);
+                break;
+            }
+            if (auto* suite = dynamic_cast<TestSuite*>(test)) {
+                if (gate_ != nullptr) {
+                    suite->setGate(gate_);
+                }
+            }
+            test->run(result);
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                current_ = nullptr;
+            }
+            if (!test->succeeded()) {
+                successful_ = false;
+            }
+            reportCollapse();
+            if (test->hasCriticalError()) {
+                skipRemaining(TestMessage("critical error in " + test->getName() + ": " +
+                                          test->getCriticalError().toString()));
+            }
+        }
+        tearDownFixtures(result, fixtures_.size());
+        reportCollapse();
+    }
+
+    result.endTestSuite(this);
+    interrupted_ = false;
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,121 @@
+// Finding a plug-in file the way the platform finds libraries (SPEC 2, suite files).
+#include <robottestingframework/dll/DllPluginLoader.h>
+
+#include <sys/stat.h>
+
+#include <algorithm>
+
+#include "shared_library.h"
+
+namespace robottestingframework {
+namespace plugin {
+
+namespace {
+
+bool isFile(const std::string& path) {
+    struct stat info {};
+    return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+bool startsWith(const std::string& text, const std::string& prefix) {
+    return text.compare(0, prefix.size(), prefix) == 0;
+}
+
+bool endsWith(const std::string& text, const std::string& suffix) {
+    return text.size() >= suffix.size() &&
+           text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+}
+
+std::string join(const std::string& folder, const std::string& name) {
+    if (folder.empty() || folder == ".") {
+        return name;
+    }
+    return folder.back() == '/' ? folder + name : folder + "/" + name;
+}
+
+// `name`, then with the platform's prefix and suffix added where missing.
+std::vector<std::string> spellings(const std::string& name) {
+    const std::string prefix = SharedLibrary::prefix();
+    const std::string suffix = SharedLibrary::suffix();
+    std::vector<std::string> names{name};
+    auto add = [&names](const std::string& candidate) {
+        if (std::find(names.begin(), names.end(), candidate) == names.end()) {
+            names.push_back(candidate);
+        }
+    };
+    const bool hasPrefix = startsWith(name, prefix);
+    const bool hasSuffix = endsWith(name, suffix);
+    if (!hasPrefix) {
+        add(prefix + name);
+    }
+    if (!hasSuffix) {
+        add(name + suffix);
+    }
+    if (!hasPrefix && !hasSuffix) {
+        add(prefix + name + suffix);
+    }
+    return names;
+}
+
+std::string list(const std::vector<std::string>& items) {
+    std::string text;
+    for (const auto& item : items) {
+        text += (text.empty() ? "" : ", ") + item;
+    }
+    return text;
+}
+
+}  // namespace
+
+std::string findPlugin(const std::string& name, const std::string& besideDir,
+                       std::string* searched) {
+    if (name.empty()) {
+        if (searched != nullptr) {
+            *searched = "no plug-in name given";
+        }
+        return {};
+    }
+    if (name.find('/') != std::string::npos) {
+        // A path: absolute as is; relative to the suite's folder first, then the current one.
+        std::vector<std::string> tried;
+        if (name[0] != '/' && !besideDir.empty()) {
+            tried.push_back(join(besideDir, name));
+        }
+        tried.push_back(name);
+        for (const auto& path : tried) {
+            if (isFile(path)) {
+                return path;
+            }
+        }
+        if (searched != nullptr) {
+            *searched = "no such file: " + list(tried);
+        }
+        return {};
+    }
+
+    std::vector<std::string> folders;
+    if (!besideDir.empty()) {
+        folders.push_back(besideDir);
+    }
+    for (const auto& folder : SharedLibrary::searchPath()) {
+        if (std::find(folders.begin(), folders.end(), folder) == folders.end()) {
+            folders.push_back(folder);
+        }
+    }
+    const auto names = spellings(name);
+    for (const auto& folder : folders) {
+        for (const auto& candidate : names) {
+            std::string path = join(folder, candidate);
+            if (isFile(path)) {
+                return path;
+            }
+        }
+    }
+    if (searched != nullptr) {
+        *searched = "not found as " + list(names) + " in " + list(folders);
+    }
+    return {};
+}
+
+}  // namespace plugin
+}  // namespace robottestingframework

@@ -1,0 +1,146 @@
+#include "shared_library.h"
+
+#include <dlfcn.h>
+#include <glob.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace robottestingframework {
+namespace plugin {
+
+namespace {
+
+std::string lastError(const char* fallback) {
+    const char* text = ::dlerror();
+    return text != nullptr ? text : fallback;
+}
+
+void splitInto(const std::string& text, char separator, std::vector<std::string>& out) {
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, separator)) {
+        if (!item.empty()) {
+            out.push_back(item);
+        }
+    }
+}
+
+// Folders listed in ld.so.conf (the loader's cache is built from them), following `include`.
+void readLoaderConfig(const std::string& file, std::vector<std::string>& out, int depth) {
+    std::ifstream in(file);
+    std::string line;
+    while (depth < 8 && std::getline(in, line)) {
+        line = line.substr(0, line.find('#'));
+        std::stringstream words(line);
+        std::string word;
+        if (!(words >> word)) {
+            continue;
+        }
+        if (word == "include") {
+            while (words >> word) {
+                glob_t found{};
+                if (::glob(word.c_str(), 0, nullptr, &found) == 0) {
+                    for (std::size_t i = 0; i < found.gl_pathc; ++i) {
+                        readLoaderConfig(found.gl_pathv[i], out, depth + 1);
+                    }
+                }
+                ::globfree(&found);
+            }
+        } else if (word[0] == '/') {
+            out.push_back(word);
+        }
+    }
+}
+
+std::string ownFolder() {
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&ownFolder), &info) == 0 || info.dli_fname == nullptr) {
+        return {};
+    }
+    std::string path = info.dli_fname;
+    std::size_t slash = path.rfind('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash);
+}
+
+}  // namespace
+
+SharedLibrary::~SharedLibrary() {
+    close();
+}
+
+bool SharedLibrary::open(const std::string& path) {
+    close();
+    ::dlerror();
+    // RTLD_LOCAL: two plug-ins defining the same class names do not clash.
+    handle_ = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (handle_ == nullptr) {
+        error_ = lastError("unknown dlopen error");
+        return false;
+    }
+    error_.clear();
+    return true;
+}
+
+void SharedLibrary::close() {
+    if (handle_ != nullptr) {
+        ::dlclose(handle_);
+        handle_ = nullptr;
+    }
+}
+
+void* SharedLibrary::symbol(const char* name) {
+    if (handle_ == nullptr) {
+        error_ = "the library is not open";
+        return nullptr;
+    }
+    ::dlerror();
+    void* address = ::dlsym(handle_, name);
+    if (address == nullptr) {
+        error_ = lastError("symbol not found");
+    }
+    return address;
+}
+
+const char* SharedLibrary::prefix() {
+    return "lib";
+}
+const char* SharedLibrary::suffix() {
+    return ".so";
+}
+
+std::vector<std::string> SharedLibrary::searchPath() {
+    std::vector<std::string> folders;
+    if (const char* env = std::getenv("LD_LIBRARY_PATH")) {
+        splitInto(env, ':', folders);
+    }
+    std::string own = ownFolder();
+    if (!own.empty()) {
+        folders.push_back(own);
+    }
+    readLoaderConfig("/etc/ld.so.conf", folders, 0);
+#ifdef RTF_LIBRARY_ARCHITECTURE
+    folders.push_back("/lib/" RTF_LIBRARY_ARCHITECTURE);
+    folders.push_back("/usr/lib/" RTF_LIBRARY_ARCHITECTURE);
+#endif
+    folders.push_back("/lib");
+    folders.push_back("/usr/lib");
+
+    // Each folder once, first place kept.
+    std::vector<std::string> unique;
+    std::set<std::string> seen;
+    for (auto& folder : folders) {
+        while (folder.size() > 1 && folder.back() == '/') {
+            folder.pop_back();
+        }
+        if (seen.insert(folder).second) {
+            unique.push_back(folder);
+        }
+    }
+    return unique;
+}
+
+}  // namespace plugin
+}  // namespace robottestingframework

@@ -1,0 +1,118 @@
+#include "event_relay.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+using Kind = ResultEvent::Kind;
+
+bool relayEvent(const WireRecord& record, const Test* about, TestResult& result)
+{
+    if (record.kind != WireKind::Event) {
+        return false;
+    }
+    const TestMessage& msg = record.message;
+    switch (record.event) {
+        case Kind::Report: result.addReport(about, msg); break;
+        case Kind::Check: result.addCheck(about, msg, record.flag); break;
+        case Kind::Failure: result.addFailure(about, msg); break;
+        case Kind::Error: result.addError(about, msg); break;
+        case Kind::Skipped: result.addSkipped(about, msg); break;
+        case Kind::Crash: result.addCrash(about, msg); break;
+        case Kind::Timeout: result.addTimeout(about, msg); break;
+        case Kind::Interrupted: result.addInterrupted(about, msg); break;
+        case Kind::Output: result.addOutput(about, msg.getMessage()); break;
+        default: return false;
+    }
+    return true;
+}
+
+void EventRelay::start()
+{
+    if (!started_) {
+        started_ = true;
+        result_.startTest(&self_);
+    }
+}
+
+void EventRelay::note(Kind kind, const TestMessage& message)
+{
+    TestStatus status = status_;
+    switch (kind) {
+        case Kind::Skipped: status = TestStatus::Skipped; break;
+        case Kind::Failure: status = TestStatus::Failed; break;
+        case Kind::Error: status = TestStatus::Error; break;
+        case Kind::Crash: status = TestStatus::Crashed; break;
+        case Kind::Timeout: status = TestStatus::TimedOut; break;
+        case Kind::Interrupted: status = TestStatus::Interrupted; break;
+        default: break;
+    }
+    if (status > status_) {
+        status_ = status;
+    }
+    if (kind == Kind::Report || kind == Kind::Check || kind == Kind::Failure ||
+        kind == Kind::Error) {
+        lastSaid_ = message.toString();
+    }
+}
+
+void EventRelay::relay(const WireRecord& record)
+{
+    if (record.kind == WireKind::Finished) {
+        finished_ = true;
+        return;
+    }
+    if (record.kind == WireKind::Described) {
+        if (!record.name.empty()) {
+            self_.setName(record.name);
+        }
+        self_.setDescription(record.message.getMessage());
+        return;
+    }
+    if (record.kind == WireKind::CriticalError) {
+        self_.setCriticalError(record.message);
+        return;
+    }
+    if (record.kind != WireKind::Event || ended_) {
+        return;
+    }
+    // The test's own name wins (a script may set it in setup).
+    if (!record.name.empty() && record.name != self_.getName()) {
+        self_.setName(record.name);
+    }
+    if (record.event == Kind::StartTest) {
+        start();
+        return;
+    }
+    if (record.event == Kind::EndTest) {
+        return;  // held back: the runner may still have something to say (a crash after it)
+    }
+    start();
+    if (relayEvent(record, &self_, result_)) {
+        note(record.event, record.message);
+    }
+}
+
+void EventRelay::add(Kind kind, const TestMessage& message)
+{
+    start();
+    WireRecord record;
+    record.event = kind;
+    record.message = message;
+    relayEvent(record, &self_, result_);
+    note(kind, message);
+}
+
+void EventRelay::end(const std::string& output)
+{
+    start();
+    if (!output.empty()) {
+        result_.addOutput(&self_, output);
+    }
+    if (!ended_) {
+        ended_ = true;
+        result_.endTest(&self_);
+    }
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

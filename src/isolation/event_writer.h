@@ -1,0 +1,41 @@
+// In a worker: a listener that sends every event of the test (or fixture) to the runner as
+// wire records. Thread-safe: a fixture may report collapse from any thread.
+#pragma once
+
+#include <mutex>
+
+#include <robottestingframework/TestListener.h>
+
+#include "wire_format.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+class EventWriter : public TestListener {
+public:
+    explicit EventWriter(int fd) : fd_(fd) {}
+
+    // Sends one record; false when the runner is gone.
+    bool send(const WireRecord& record);
+    void sendEvent(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
+                   bool passed = true);
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+
+private:
+    int fd_;
+    std::mutex mutex_;
+};
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,151 @@
+#include <exception>
+#include <stdexcept>
+
+#include <robottestingframework/Arguments.h>
+#include <robottestingframework/FixtureEvents.h>
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestResult.h>
+
+#include "event_writer.h"
+#include "file_descriptor.h"
+#include "test_loader.h"
+#include "worker.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+namespace {
+
+// Stands for the suite in the worker: fixture reports are about it.
+class FixtureOwner : public Test {
+public:
+    explicit FixtureOwner(const std::string& name) : Test(name) {}
+    void run(TestResult& /*result*/) override {}
+    bool succeeded() const override { return true; }
+};
+
+// A collapse, from whatever thread the fixture reports it, becomes a record.
+class CollapseSender : public FixtureEvents {
+public:
+    explicit CollapseSender(EventWriter& writer) : writer_(writer) {}
+    void fixtureCollapsed(TestMessage reason) override
+    {
+        WireRecord record;
+        record.kind = WireKind::FixtureCollapsed;
+        record.message = reason;
+        writer_.send(record);
+    }
+
+private:
+    EventWriter& writer_;
+};
+
+std::string exceptionText()
+{
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        return e.what();
+    } catch (...) {
+        return "unhandled exception of unknown type";
+    }
+}
+
+void reply(EventWriter& writer, bool ok, const TestMessage& why = TestMessage())
+{
+    WireRecord record;
+    record.kind = WireKind::Reply;
+    record.flag = ok;
+    record.message = why;
+    writer.send(record);
+}
+
+}  // namespace
+
+int runFixtureWorker(const WorkRequest& request, int channel)
+{
+    EventWriter writer(channel);
+    std::string error;
+    std::unique_ptr<languages::LoadedFixture> loaded;
+    try {
+        loaded = languages::loadFixture(request.type, request.path, error);
+    } catch (...) {
+        error = exceptionText();
+    }
+    FixtureManager* fixture = loaded ? loaded->get() : nullptr;
+
+    FixtureOwner owner(request.name);
+    CollapseSender collapse(writer);
+    TestResult result;
+    result.addListener(&writer);
+    if (fixture != nullptr) {
+        fixture->setParam(request.param);
+        if (!request.name.empty()) {
+            fixture->setName(request.name);
+        }
+        fixture->setDispatcher(&collapse);
+        fixture->setResult(&result, &owner);
+    }
+
+    WireDecoder decoder;
+    std::string bytes;
+    for (;;) {
+        WireRecord call;
+        WireDecoder::Status status = decoder.next(call);
+        if (status == WireDecoder::Status::Corrupt) {
+            return 3;
+        }
+        if (status == WireDecoder::Status::NeedMore) {
+            bytes.clear();
+            if (platform::readSome(channel, bytes) <= 0) {
+                break;  // the runner closed the channel: we are done
+            }
+            decoder.feed(bytes);
+            continue;
+        }
+        if (call.kind != WireKind::Call) {
+            continue;
+        }
+        if (fixture == nullptr) {
+            reply(writer, false, TestMessage("cannot load fixture " + request.path, error));
+            continue;
+        }
+        try {
+            if (call.name == "setup") {
+                // The argv the suite built, one word per '\0'-separated field.
+                std::vector<std::string> words;
+                std::string joined = call.message.getMessage();
+                std::size_t start = 0;
+                while (start <= joined.size() && !joined.empty()) {
+                    std::size_t end = joined.find('\0', start);
+                    words.push_back(joined.substr(start, end - start));
+                    if (end == std::string::npos) {
+                        break;
+                    }
+                    start = end + 1;
+                }
+                std::vector<char*> argv;
+                for (std::string& word : words) {
+                    argv.push_back(&word[0]);
+                }
+                argv.push_back(nullptr);
+                bool ok = fixture->setup(static_cast<int>(words.size()), argv.data());
+                reply(writer, ok);
+            } else if (call.name == "check") {
+                reply(writer, fixture->check());
+            } else if (call.name == "tearDown") {
+                fixture->tearDown();
+                reply(writer, true);
+            } else {
+                reply(writer, false, TestMessage("unknown call " + call.name));
+            }
+        } catch (...) {
+            reply(writer, false, TestMessage("fixture " + call.name + " threw", exceptionText()));
+        }
+    }
+    loaded.reset();
+    return 0;
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

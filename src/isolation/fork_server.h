@@ -1,0 +1,50 @@
+// The runner's handle on its fork server (see fork_server_loop.h): started once per run,
+// asked to start one worker per test or fixture. Stopping it (or the runner dying) ends every
+// process the run started.
+#pragma once
+
+#include <sys/types.h>
+
+#include <mutex>
+#include <string>
+
+#include "file_descriptor.h"
+#include "wire_format.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+class ForkServer {
+public:
+    ForkServer() = default;
+    ~ForkServer();
+    ForkServer(const ForkServer&) = delete;
+    ForkServer& operator=(const ForkServer&) = delete;
+
+    // Starts `workerPath --fork-server 3`. Call it from a thread that lives as long as the run:
+    // the server takes its parent-death signal from that thread (Linux).
+    bool start(const std::string& workerPath, std::string& error);
+    bool running() const { return pid_ > 0; }
+    pid_t pid() const { return pid_; }
+
+    // Asks for a worker running `request`. `channel` becomes its fd 3 (events out, calls in),
+    // `output` its stdout and stderr; Started and Exited records are written to `status`.
+    // Thread-safe.
+    bool spawn(const WorkRequest& request, int channel, int output, int status,
+               std::string& error);
+
+    // Ends the server and, through it, every worker and their descendants. Waits (bounded).
+    void stop();
+
+private:
+    platform::FileDescriptor control_;
+    pid_t pid_ = -1;
+    std::mutex mutex_;
+};
+
+// Where robottestingframework-worker is: $RTF_WORKER when set, next to the running program,
+// in ../libexec beside it, then where it was installed. Empty when not found.
+std::string findWorker();
+
+}  // namespace isolation
+}  // namespace robottestingframework

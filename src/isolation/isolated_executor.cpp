@@ -1,0 +1,237 @@
+#include "isolated_executor.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <sstream>
+
+#include "clock.h"
+#include "event_relay.h"
+#include "isolated_fixture.h"
+#include "process.h"
+#include "signal_name.h"
+#include "test_loader.h"
+
+#include <robottestingframework/dll/DllPluginLoader.h>
+#include "worker_process.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+std::string seconds(double value)
+{
+    std::ostringstream text;
+    text << value << " s";
+    return text.str();
+}
+
+std::string said(const EventRelay& relay)
+{
+    return relay.lastSaid().empty() ? "it reported nothing before"
+                                    : "last reported: " + relay.lastSaid();
+}
+
+std::string folderOf(const std::string& file)
+{
+    std::size_t slash = file.rfind('/');
+    if (file.empty() || slash == std::string::npos) {
+        return ".";
+    }
+    return slash == 0 ? "/" : file.substr(0, slash);
+}
+
+// The file and type of a plug-in, as the in-process executor finds them. False with `error`.
+bool locate(const std::string& plugin, const std::string& given, const std::string& givenType,
+            const runner::SourceLocation& where, std::string& path, std::string& type,
+            std::string& error)
+{
+    path = given;
+    if (path.empty()) {
+        std::string searched;
+        path = plugin::findPlugin(plugin, folderOf(where.file), &searched);
+        if (path.empty()) {
+            error = "'" + plugin + "' " + searched;
+            return false;
+        }
+    }
+    type = givenType.empty() ? languages::typeFromFile(path) : givenType;
+    if (type.empty()) {
+        error = "cannot tell what kind of plug-in '" + path +
+                "' is (not a .so, .py, .lua or .rb file, nor an executable); give its type, "
+                "e.g. type=\"dll\"";
+        return false;
+    }
+    if (!languages::isSupportedType(type)) {
+        error = "'" + path + "' is a " + type + " plug-in; this build does not support " + type;
+        return false;
+    }
+    return true;
+}
+
+void drain(int fd)
+{
+    char buffer[64];
+    while (::read(fd, buffer, sizeof(buffer)) > 0) {
+    }
+}
+
+}  // namespace
+
+IsolatedExecutor::IsolatedExecutor(IsolationOptions options)
+    : options_(std::move(options)), server_(std::make_shared<ForkServer>())
+{
+    platform::makePipe(wakeRead_, wakeWrite_);
+    platform::setNonBlocking(wakeRead_.get());
+    platform::setNonBlocking(wakeWrite_.get());
+}
+
+IsolatedExecutor::~IsolatedExecutor()
+{
+    shutdown();
+}
+
+bool IsolatedExecutor::start(std::string& error)
+{
+    if (server_->running()) {
+        return true;
+    }
+    std::string worker = options_.workerPath.empty() ? findWorker() : options_.workerPath;
+    if (worker.empty()) {
+        error = "cannot find robottestingframework-worker (next to the runner, or set RTF_WORKER)";
+        return false;
+    }
+    return server_->start(worker, error);
+}
+
+void IsolatedExecutor::shutdown()
+{
+    server_->stop();
+}
+
+void IsolatedExecutor::interrupt()
+{
+    interrupted_ = true;
+    char byte = 1;
+    // Async-signal-safe: may be called from a signal handler as well as another thread.
+    ssize_t ignored = ::write(wakeWrite_.get(), &byte, 1);
+    (void)ignored;
+}
+
+TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestResult& result)
+{
+    self.clearCriticalError();
+    EventRelay relay(self, result);
+    drain(wakeRead_.get());
+    interrupted_ = false;
+
+    WorkRequest request;
+    request.name = spec.name;
+    request.param = spec.param;
+    request.environment = spec.environment;
+    request.repetition = spec.repetition == 0 ? 1 : spec.repetition;
+
+    std::string error;
+    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type,
+                error)) {
+        relay.add(Kind::Failure, TestMessage("cannot load " + spec.plugin, error));
+        relay.end("");
+        return relay.status();
+    }
+    WorkerProcess worker;
+    if (start(error)) {
+        worker.start(*server_, request, error);
+    }
+    if (!error.empty()) {
+        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker", error));
+        relay.end("");
+        return relay.status();
+    }
+
+    enum class Stop { None, Timeout, Interrupt, Garbage } why = Stop::None;
+    platform::Deadline deadline(spec.timeout);
+    std::vector<WireRecord> records;
+    while (!worker.exited()) {
+        records.clear();
+        bool woken = false;
+        worker.pump(deadline.remainingMs(), records, wakeRead_.get(), &woken);
+        for (const WireRecord& record : records) {
+            relay.relay(record);
+        }
+        if (worker.exited()) {
+            break;
+        }
+        if (woken || interrupted_) {
+            why = Stop::Interrupt;
+        } else if (deadline.expired()) {
+            why = Stop::Timeout;
+        } else if (worker.corrupt()) {
+            why = Stop::Garbage;
+        }
+        if (why != Stop::None) {
+            break;
+        }
+    }
+
+    bool polite = true;
+    if (why != Stop::None) {
+        records.clear();
+        polite = worker.stop(options_.killGrace, records);
+        for (const WireRecord& record : records) {
+            relay.relay(record);
+        }
+    }
+    platform::ExitStatus ending = platform::ExitStatus::fromWaitStatus(worker.waitStatus());
+    std::string forced = polite ? "" : " (it ignored SIGTERM and was killed)";
+    if (why == Stop::Timeout) {
+        relay.add(Kind::Timeout,
+                  TestMessage("timed out after " + seconds(spec.timeout) + forced, said(relay)));
+    } else if (why == Stop::Interrupt) {
+        relay.add(Kind::Interrupted, TestMessage("interrupted" + forced, said(relay)));
+    } else if (why == Stop::Garbage || worker.corrupt()) {
+        relay.add(Kind::Error, TestMessage("the worker sent unreadable events; it was stopped",
+                                           ending.toString()));
+    } else if (!relay.finished()) {
+        // The worker died before the test ended.
+        if (ending.signaled) {
+            relay.add(Kind::Crash,
+                      TestMessage("crashed: " + platform::signalName(ending.signal) + " (" +
+                                      platform::signalDescription(ending.signal) + ")",
+                                  said(relay)));
+        } else {
+            relay.add(Kind::Error, TestMessage("exited with status " +
+                                                   std::to_string(ending.code) +
+                                                   " before the test ended",
+                                               said(relay)));
+        }
+    } else if (!ending.success()) {
+        relay.add(ending.signaled ? Kind::Crash : Kind::Error,
+                  TestMessage("the test's process " + ending.toString() + " after the test ended",
+                              "while destroying the test or unloading its plug-in"));
+    }
+    relay.end(worker.output().take());
+    return relay.status();
+}
+
+std::unique_ptr<FixtureManager> IsolatedExecutor::makeFixture(const runner::FixtureSpec& spec,
+                                                              std::string& error)
+{
+    WorkRequest request;
+    request.role = WorkRequest::Role::Fixture;
+    request.param = spec.param;
+    request.name = spec.plugin;
+    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type,
+                error)) {
+        return nullptr;
+    }
+    if (!start(error)) {
+        return nullptr;
+    }
+    return std::unique_ptr<FixtureManager>(new IsolatedFixture(server_, request, options_));
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

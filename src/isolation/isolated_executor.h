@@ -1,0 +1,56 @@
+// Runs each test in a worker process forked by the fork server, so that nothing a test does
+// (crash, abort, exit, hang, stray children) can take the runner down. Fixtures run in a
+// worker of their own that lives for the whole suite.
+//
+// The runner makes one IsolatedExecutor per run, on the thread that runs the tests (the fork
+// server takes its parent-death signal from that thread), and destroys it at the end, which
+// ends every process the run started. If the runner dies instead, the fork server does that.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "file_descriptor.h"
+#include "fork_server.h"
+#include "test_executor.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+struct IsolationOptions {
+    std::string workerPath;         // empty: findWorker()
+    double killGrace = 1.0;         // seconds between SIGTERM and SIGKILL when stopping a test
+    double fixtureTimeout = 120.0;  // bound on each fixture setup/check/tearDown; 0: none
+    std::size_t outputTail = 64 * 1024;  // bytes of a test's output kept for the report
+};
+
+class IsolatedExecutor : public runner::TestExecutor {
+public:
+    explicit IsolatedExecutor(IsolationOptions options = IsolationOptions());
+    ~IsolatedExecutor() override;
+
+    // Starts the fork server (run() does it on first use). False with `error` when the worker
+    // program cannot be found or started.
+    bool start(std::string& error);
+
+    // spec.timeout > 0 bounds the whole worker (set-up, every repetition, tear-down).
+    TestStatus run(const runner::TestSpec& spec, Test& self, TestResult& result) override;
+    // Stops the running test's whole process tree; it is reported interrupted.
+    void interrupt() override;
+    std::unique_ptr<FixtureManager> makeFixture(const runner::FixtureSpec& spec,
+                                                std::string& error) override;
+
+    // Ends the fork server and every process the run started. The destructor does it too.
+    void shutdown();
+
+private:
+    IsolationOptions options_;
+    std::shared_ptr<ForkServer> server_;
+    platform::FileDescriptor wakeRead_, wakeWrite_;  // interrupt() -> run()
+    std::atomic<bool> interrupted_{false};
+};
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,122 @@
+#include <exception>
+#include <stdexcept>
+#include <typeinfo>
+
+#include <robottestingframework/TestResult.h>
+
+#include "event_writer.h"
+#include "test_loader.h"
+#include "worker.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+namespace {
+
+EventWriter* activeWriter = nullptr;
+std::string activeName;
+
+std::string describeCurrentException()
+{
+    try {
+        throw;
+    } catch (const std::exception& e) {
+        return std::string("unhandled exception (") + typeid(e).name() + "): " + e.what();
+    } catch (...) {
+        return "unhandled exception of unknown type";
+    }
+}
+
+// An exception that escapes everything (a test's own thread, a noexcept function): say what
+// it was before the process aborts, so the report has more than "SIGABRT".
+[[noreturn]] void onTerminate()
+{
+    if (activeWriter != nullptr && std::current_exception()) {
+        WireRecord record;
+        record.kind = WireKind::Event;
+        record.event = ResultEvent::Kind::Error;
+        record.name = activeName;
+        record.message = TestMessage("std::terminate called", describeCurrentException());
+        activeWriter->send(record);
+    }
+    std::abort();
+}
+
+std::string baseName(const std::string& path)
+{
+    std::size_t slash = path.find_last_of('/');
+    return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+}  // namespace
+
+int runTestWorker(const WorkRequest& request, int channel)
+{
+    EventWriter writer(channel);
+    activeWriter = &writer;
+    activeName = request.name.empty() ? baseName(request.path) : request.name;
+    std::set_terminate(onTerminate);
+
+    std::string error;
+    std::unique_ptr<languages::LoadedTest> loaded;
+    try {
+        loaded = languages::loadTest(request.type, request.path, error);
+    } catch (...) {
+        error = describeCurrentException();
+    }
+    if (!loaded || loaded->get() == nullptr) {
+        WireRecord record;
+        record.kind = WireKind::Event;
+        record.name = activeName;
+        record.event = ResultEvent::Kind::StartTest;
+        writer.send(record);
+        record.event = ResultEvent::Kind::Failure;
+        record.message = TestMessage("cannot load " + request.path, error);
+        writer.send(record);
+        record.event = ResultEvent::Kind::EndTest;
+        record.message = TestMessage();
+        writer.send(record);
+        writer.send(WireRecord{WireKind::Finished, {}, {}, {}, true, 0});
+        return 0;
+    }
+
+    TestCase* test = loaded->get();
+    if (!request.name.empty()) {
+        test->setName(request.name);
+    }
+    test->setParam(request.param);
+    test->setEnvironment(request.environment);
+    test->setRepetition(request.repetition == 0 ? 1 : request.repetition);
+    activeName = test->getName();
+    WireRecord described;
+    described.kind = WireKind::Described;
+    described.name = test->getName();
+    described.message = TestMessage(test->getDescription());
+    writer.send(described);
+
+    TestResult result;
+    result.addListener(&writer);
+    try {
+        test->run(result);
+    } catch (...) {
+        // TestCase::run catches what the test throws; this is for what escapes it anyway.
+        writer.sendEvent(ResultEvent::Kind::Error, test,
+                         TestMessage(describeCurrentException()));
+        writer.sendEvent(ResultEvent::Kind::EndTest, test, TestMessage());
+    }
+    if (test->hasCriticalError()) {
+        WireRecord record;
+        record.kind = WireKind::CriticalError;
+        record.name = test->getName();
+        record.message = test->getCriticalError();
+        writer.send(record);
+    }
+    writer.send(WireRecord{WireKind::Finished, {}, test->getName(), {}, true, 0});
+    // Destroying the test runs the plug-in's destructors: a crash there is still reported.
+    loaded.reset();
+    activeWriter = nullptr;
+    return 0;
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,202 @@
+#include "wire_format.h"
+
+#include <cstring>
+
+namespace robottestingframework {
+namespace isolation {
+
+namespace {
+
+constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::Described);
+constexpr std::uint8_t kLastEvent = static_cast<std::uint8_t>(ResultEvent::Kind::Output);
+
+void putU32(std::string& out, std::uint32_t value)
+{
+    char bytes[4];
+    for (int i = 0; i < 4; ++i) {
+        bytes[i] = static_cast<char>((value >> (8 * i)) & 0xff);
+    }
+    out.append(bytes, 4);
+}
+
+void putI64(std::string& out, std::int64_t value)
+{
+    auto bits = static_cast<std::uint64_t>(value);
+    putU32(out, static_cast<std::uint32_t>(bits & 0xffffffffu));
+    putU32(out, static_cast<std::uint32_t>(bits >> 32));
+}
+
+void putString(std::string& out, const std::string& text)
+{
+    putU32(out, static_cast<std::uint32_t>(text.size()));
+    out.append(text);
+}
+
+// Reads fields from a body, refusing to run past its end.
+class Reader {
+public:
+    Reader(const char* data, std::size_t size) : data_(data), size_(size) {}
+
+    bool u8(std::uint8_t& value)
+    {
+        if (size_ - at_ < 1) {
+            return false;
+        }
+        value = static_cast<std::uint8_t>(data_[at_++]);
+        return true;
+    }
+    bool u32(std::uint32_t& value)
+    {
+        if (size_ - at_ < 4) {
+            return false;
+        }
+        value = 0;
+        for (int i = 0; i < 4; ++i) {
+            value |= static_cast<std::uint32_t>(static_cast<unsigned char>(data_[at_ + i]))
+                     << (8 * i);
+        }
+        at_ += 4;
+        return true;
+    }
+    bool i64(std::int64_t& value)
+    {
+        std::uint32_t low, high;
+        if (!u32(low) || !u32(high)) {
+            return false;
+        }
+        value = static_cast<std::int64_t>((static_cast<std::uint64_t>(high) << 32) | low);
+        return true;
+    }
+    bool string(std::string& text)
+    {
+        std::uint32_t length;
+        if (!u32(length) || size_ - at_ < length) {
+            return false;
+        }
+        text.assign(data_ + at_, length);
+        at_ += length;
+        return true;
+    }
+    bool done() const { return at_ == size_; }
+
+private:
+    const char* data_;
+    std::size_t size_;
+    std::size_t at_ = 0;
+};
+
+bool decodeBody(const char* data, std::size_t size, WireRecord& record)
+{
+    Reader in(data, size);
+    std::uint8_t kind, event, flag;
+    std::string message, detail, file;
+    std::uint32_t line;
+    if (!in.u8(kind) || !in.u8(event) || !in.u8(flag) || !in.i64(record.number) ||
+        !in.string(record.name) || !in.string(message) || !in.string(detail) ||
+        !in.string(file) || !in.u32(line) || !in.done()) {
+        return false;
+    }
+    if (kind < 1 || kind > kLastKind || event > kLastEvent || flag > 1) {
+        return false;
+    }
+    record.kind = static_cast<WireKind>(kind);
+    record.event = static_cast<ResultEvent::Kind>(event);
+    record.flag = flag != 0;
+    record.message = TestMessage(message, detail, file, line);
+    return true;
+}
+
+}  // namespace
+
+void encode(const WireRecord& record, std::string& out)
+{
+    std::size_t start = out.size();
+    putU32(out, 0);  // the length, filled in below
+    out.push_back(static_cast<char>(record.kind));
+    out.push_back(static_cast<char>(record.event));
+    out.push_back(record.flag ? 1 : 0);
+    putI64(out, record.number);
+    putString(out, record.name);
+    putString(out, record.message.getMessage());
+    putString(out, record.message.getDetail());
+    putString(out, record.message.getSourceFileName());
+    putU32(out, record.message.getSourceLineNumber());
+    auto length = static_cast<std::uint32_t>(out.size() - start - 4);
+    for (int i = 0; i < 4; ++i) {
+        out[start + i] = static_cast<char>((length >> (8 * i)) & 0xff);
+    }
+}
+
+std::string encode(const WireRecord& record)
+{
+    std::string out;
+    encode(record, out);
+    return out;
+}
+
+WireDecoder::Status WireDecoder::next(WireRecord& record)
+{
+    if (corrupt_) {
+        return Status::Corrupt;
+    }
+    if (pending() < 4) {
+        return Status::NeedMore;
+    }
+    Reader header(buffer_.data() + offset_, 4);
+    std::uint32_t length = 0;
+    header.u32(length);
+    if (length > kMaxRecordSize) {
+        corrupt_ = true;
+        return Status::Corrupt;
+    }
+    if (pending() - 4 < length) {
+        return Status::NeedMore;
+    }
+    if (!decodeBody(buffer_.data() + offset_ + 4, length, record)) {
+        corrupt_ = true;
+        return Status::Corrupt;
+    }
+    offset_ += 4 + length;
+    // Drop consumed bytes now and then, not on every record.
+    if (offset_ == buffer_.size()) {
+        buffer_.clear();
+        offset_ = 0;
+    } else if (offset_ > 65536) {
+        buffer_.erase(0, offset_);
+        offset_ = 0;
+    }
+    return Status::Record;
+}
+
+std::string encodeRequest(const WorkRequest& request)
+{
+    std::string out;
+    out.push_back(static_cast<char>(request.role));
+    putString(out, request.type);
+    putString(out, request.path);
+    putString(out, request.name);
+    putString(out, request.param);
+    putString(out, request.environment);
+    putU32(out, request.repetition);
+    return out;
+}
+
+bool decodeRequest(const std::string& data, WorkRequest& request)
+{
+    Reader in(data.data(), data.size());
+    std::uint8_t role;
+    if (!in.u8(role) || !in.string(request.type) || !in.string(request.path) ||
+        !in.string(request.name) || !in.string(request.param) ||
+        !in.string(request.environment) || !in.u32(request.repetition) || !in.done()) {
+        return false;
+    }
+    if (role != static_cast<std::uint8_t>(WorkRequest::Role::Test) &&
+        role != static_cast<std::uint8_t>(WorkRequest::Role::Fixture)) {
+        return false;
+    }
+    request.role = static_cast<WorkRequest::Role>(role);
+    return true;
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,87 @@
+// The bytes between the runner and its workers. A stream of records, each framed by its
+// length, so a reader can tell a whole record from a truncated one and refuse garbage:
+//
+//   record  = u32 body-length, body                       (little-endian)
+//   body    = u8 kind, u8 event, u8 flag, i64 number, str name, str message, str detail,
+//             str file, u32 line
+//   str     = u32 length, bytes
+//
+// Requests to the fork server are single packets of their own layout (encodeRequest).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include <robottestingframework/ResultEvent.h>
+#include <robottestingframework/TestMessage.h>
+
+namespace robottestingframework {
+namespace isolation {
+
+enum class WireKind : std::uint8_t {
+    Event = 1,         // worker → runner: a ResultEvent (`event`, `name`, `message`, `flag`)
+    CriticalError,     // worker → runner: the test raised a critical error (`message`)
+    FixtureCollapsed,  // fixture worker → runner: the fixture's world is gone (`message`)
+    Reply,             // fixture worker → runner: a call returned `flag` (`message`: why not)
+    Finished,          // worker → runner: the test ended normally; the worker exits now
+    Started,           // fork server → runner: the worker's pid is `number`
+    Exited,            // fork server → runner: the worker ended; `number` is its wait status
+    Call,              // runner → fixture worker: `name` is setup/check/tearDown; `message`
+                       // holds setup's argv joined by '\0'
+    Described,         // worker → runner: the loaded test's `name` and description (`message`)
+};
+
+struct WireRecord {
+    WireKind kind = WireKind::Event;
+    ResultEvent::Kind event = ResultEvent::Kind::Report;
+    std::string name;
+    TestMessage message;
+    bool flag = true;
+    std::int64_t number = 0;
+};
+
+// A record longer than this is garbage, not a record.
+constexpr std::size_t kMaxRecordSize = 16 * 1024 * 1024;
+
+// Appends the framed record to `out`.
+void encode(const WireRecord& record, std::string& out);
+std::string encode(const WireRecord& record);
+
+// Reassembles records from the bytes of a stream, however they were split.
+class WireDecoder {
+public:
+    enum class Status { Record, NeedMore, Corrupt };
+
+    void feed(const char* data, std::size_t size) { buffer_.append(data, size); }
+    void feed(const std::string& data) { buffer_.append(data); }
+    // Record: `record` filled. NeedMore: wait for more bytes. Corrupt: the stream is unusable
+    // (every later call says so too).
+    Status next(WireRecord& record);
+    // Bytes received that are not (yet) a whole record.
+    std::size_t pending() const { return buffer_.size() - offset_; }
+
+private:
+    std::string buffer_;
+    std::size_t offset_ = 0;
+    bool corrupt_ = false;
+};
+
+// What the runner asks the fork server to start.
+struct WorkRequest {
+    enum class Role : std::uint8_t { Test = 1, Fixture };
+    Role role = Role::Test;
+    std::string type;         // "dll", "python", ... as languages::loadTest takes it
+    std::string path;         // the resolved file
+    std::string name;         // the name to give it (empty: the plug-in's own)
+    std::string param;
+    std::string environment;  // the suite's environment string (TestCase::setEnvironment)
+    std::uint32_t repetition = 1;
+};
+
+std::string encodeRequest(const WorkRequest& request);
+// False when `data` is not exactly one well-formed request.
+bool decodeRequest(const std::string& data, WorkRequest& request);
+
+}  // namespace isolation
+}  // namespace robottestingframework

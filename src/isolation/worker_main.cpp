@@ -1,0 +1,25 @@
+// robottestingframework-worker: the runner's helper process. Started by the runner as
+//   robottestingframework-worker --fork-server FD
+// with FD a packet socket to the runner; not meant to be run by hand.
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "fork_server_loop.h"
+
+int main(int argc, char** argv)
+{
+    if (argc == 3 && std::strcmp(argv[1], "--fork-server") == 0) {
+        char* end = nullptr;
+        long fd = std::strtol(argv[2], &end, 10);
+        if (end != argv[2] && *end == '\0' && fd >= 0) {
+            return robottestingframework::isolation::serveForkRequests(static_cast<int>(fd));
+        }
+    }
+    std::fprintf(stderr,
+                 "%s: the test runner's worker; it is started by robottestingframework-testrunner "
+                 "(usage: %s --fork-server FD)\n",
+                 argv[0], argv[0]);
+    return 2;
+}

@@ -1,0 +1,228 @@
+#include "worker_process.h"
+
+#include <errno.h>
+#include <signal.h>
+
+#include "clock.h"
+#include "process_tree.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+void OutputTail::append(const std::string& bytes)
+{
+    text_ += bytes;
+    if (text_.size() > limit_ + limit_ / 2) {
+        // Trim in chunks, not on every append.
+        std::size_t cut = text_.size() - limit_;
+        dropped_ += cut;
+        text_.erase(0, cut);
+    }
+}
+
+std::string OutputTail::take()
+{
+    if (text_.size() > limit_) {
+        dropped_ += text_.size() - limit_;
+        text_.erase(0, text_.size() - limit_);
+    }
+    std::string text;
+    if (dropped_ > 0) {
+        text = "[... " + std::to_string(dropped_) + " bytes of earlier output dropped ...]\n";
+    }
+    text += text_;
+    text_.clear();
+    dropped_ = 0;
+    return text;
+}
+
+WorkerProcess::~WorkerProcess()
+{
+    if (pid_ > 0 && !exited_) {
+        // The fork server reaps it; nobody waits here.
+        platform::signalProcessGroup(pid_, SIGKILL);
+    }
+}
+
+bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error)
+{
+    platform::FileDescriptor theirChannel, outputWrite, statusWrite;
+    if (!platform::makeSocketPair(channel_, theirChannel, false) ||
+        !platform::makePipe(output_fd_, outputWrite) ||
+        !platform::makePipe(status_fd_, statusWrite)) {
+        error = "cannot create the worker's pipes";
+        return false;
+    }
+    if (!server.spawn(request, theirChannel.get(), outputWrite.get(), statusWrite.get(), error)) {
+        return false;
+    }
+    // Only the worker (and the server, for the status) may hold the writing ends now, so end
+    // of file means what it should.
+    theirChannel.reset();
+    outputWrite.reset();
+    statusWrite.reset();
+    platform::setNonBlocking(channel_.get());
+    platform::setNonBlocking(output_fd_.get());
+    platform::setNonBlocking(status_fd_.get());
+
+    platform::Deadline deadline(10.0);
+    std::vector<WireRecord> early;
+    while (pid_ <= 0 && !exited_ && !deadline.expired()) {
+        pump(deadline.remainingMs(), early);
+    }
+    if (pid_ <= 0) {
+        error = exited_ ? "the fork server could not start a worker"
+                        : "the fork server did not answer";
+        exited_ = true;
+        return false;
+    }
+    // Records cannot come before the pid (the server writes it first), but keep the rule simple.
+    return true;
+}
+
+void WorkerProcess::readChannel(std::vector<WireRecord>& records)
+{
+    std::string bytes;
+    for (;;) {
+        bytes.clear();
+        long n = platform::readSome(channel_.get(), bytes);
+        if (n > 0) {
+            events_.feed(bytes);
+            continue;
+        }
+        if (n == 0) {
+            channel_.reset();  // end of file: nothing more will come
+        }
+        break;
+    }
+    WireRecord record;
+    for (;;) {
+        WireDecoder::Status status = events_.next(record);
+        if (status == WireDecoder::Status::Record) {
+            records.push_back(std::move(record));
+            record = WireRecord();
+        } else {
+            corrupt_ = corrupt_ || status == WireDecoder::Status::Corrupt;
+            break;
+        }
+    }
+    if (corrupt_) {
+        channel_.reset();
+    }
+}
+
+void WorkerProcess::readOutput()
+{
+    std::string bytes;
+    for (;;) {
+        bytes.clear();
+        long n = platform::readSome(output_fd_.get(), bytes);
+        if (n > 0) {
+            output_.append(bytes);
+            continue;
+        }
+        if (n == 0) {
+            output_fd_.reset();
+        }
+        break;
+    }
+}
+
+void WorkerProcess::readStatus(std::vector<WireRecord>& records)
+{
+    std::string bytes;
+    long n;
+    while ((n = platform::readSome(status_fd_.get(), bytes)) > 0) {
+        statuses_.feed(bytes);
+        bytes.clear();
+    }
+    bool gone = n == 0;
+    bool reported = false;
+    WireRecord record;
+    while (statuses_.next(record) == WireDecoder::Status::Record) {
+        if (record.kind == WireKind::Started) {
+            pid_ = static_cast<pid_t>(record.number);
+        } else if (record.kind == WireKind::Exited) {
+            status_ = static_cast<int>(record.number);
+            gone = true;
+            reported = true;
+        }
+    }
+    if (gone) {
+        // Everything the worker wrote before it ended is in the pipes now: take it all.
+        if (channel_.valid()) {
+            readChannel(records);
+        }
+        if (output_fd_.valid()) {
+            readOutput();
+        }
+        status_fd_.reset();
+        exited_ = true;
+        if (!reported && pid_ > 0) {
+            // The server vanished without telling: count it as killed.
+            status_ = SIGKILL;
+        }
+    }
+}
+
+bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken)
+{
+    if (woken != nullptr) {
+        *woken = false;
+    }
+    if (exited_) {
+        return true;
+    }
+    std::vector<bool> ready;
+    if (!platform::waitReadable({channel_.get(), output_fd_.get(), status_fd_.get(), wake},
+                                timeoutMs, ready)) {
+        return false;
+    }
+    if (ready[0]) {
+        readChannel(records);
+    }
+    if (ready[1]) {
+        readOutput();
+    }
+    if (ready[2]) {
+        readStatus(records);
+    }
+    if (woken != nullptr) {
+        *woken = ready[3];
+    }
+    return true;
+}
+
+bool WorkerProcess::send(const WireRecord& record)
+{
+    return channel_.valid() && !exited_ && platform::sendAll(channel_.get(), encode(record));
+}
+
+void WorkerProcess::signal(int signal)
+{
+    if (pid_ > 0 && !exited_) {
+        platform::signalProcessGroup(pid_, signal);
+    }
+}
+
+bool WorkerProcess::stop(double grace, std::vector<WireRecord>& records)
+{
+    signal(SIGTERM);
+    signal(SIGCONT);  // a stopped worker acts on SIGTERM only once continued
+    platform::Deadline polite(grace > 0 ? grace : 1e-6);
+    while (!exited_ && !polite.expired()) {
+        pump(polite.remainingMs(100), records);
+    }
+    if (exited_) {
+        return true;
+    }
+    signal(SIGKILL);
+    platform::Deadline hard(10.0);
+    while (!exited_ && !hard.expired()) {
+        pump(hard.remainingMs(100), records);
+    }
+    return false;
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,82 @@
+// The runner's view of one worker: the pipes to and from it, its pid and how it ended. Used
+// the same way for tests and fixtures.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <vector>
+
+#include "file_descriptor.h"
+#include "fork_server.h"
+#include "wire_format.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+// The last bytes a worker printed, bounded so a chatty test cannot fill the runner's memory.
+class OutputTail {
+public:
+    explicit OutputTail(std::size_t limit = 64 * 1024) : limit_(limit) {}
+    void append(const std::string& bytes);
+    bool empty() const { return text_.empty(); }
+    // What is kept, marked when earlier output was dropped; then forgets it.
+    std::string take();
+
+private:
+    std::size_t limit_;
+    std::string text_;
+    std::size_t dropped_ = 0;
+};
+
+class WorkerProcess {
+public:
+    WorkerProcess() = default;
+    ~WorkerProcess();
+    WorkerProcess(const WorkerProcess&) = delete;
+    WorkerProcess& operator=(const WorkerProcess&) = delete;
+
+    // Asks `server` for a worker and waits (bounded) until it reports the worker's pid.
+    bool start(ForkServer& server, const WorkRequest& request, std::string& error);
+    pid_t pid() const { return pid_; }
+
+    // Waits up to `timeoutMs` (-1: forever) for the worker to send or print something, or to
+    // end; records received are appended to `records`. `wake` (if >= 0) also ends the wait
+    // (an interrupt); its readiness is returned in `woken`. False on timeout.
+    bool pump(int timeoutMs, std::vector<WireRecord>& records, int wake = -1,
+              bool* woken = nullptr);
+    // True once the fork server reported the worker ended; waitStatus() tells how.
+    bool exited() const { return exited_; }
+    int waitStatus() const { return status_; }
+    // The channel carried garbage: the worker cannot be trusted to report any more.
+    bool corrupt() const { return corrupt_; }
+
+    // Sends a record to the worker (fixture calls). False when it is gone.
+    bool send(const WireRecord& record);
+    // Signals the worker's whole process group.
+    void signal(int signal);
+    // SIGTERM to the group, up to `grace` seconds (pumping records into `records`), then
+    // SIGKILL; returns once the worker ended (bounded: 10 s after the SIGKILL).
+    // Returns true when SIGTERM was enough.
+    bool stop(double grace, std::vector<WireRecord>& records);
+
+    OutputTail& output() { return output_; }
+    // Our end of the channel (fixture calls go out on a duplicate of it).
+    int channel() const { return channel_.get(); }
+
+private:
+    void readChannel(std::vector<WireRecord>& records);
+    void readOutput();
+    void readStatus(std::vector<WireRecord>& records);
+
+    platform::FileDescriptor channel_, output_fd_, status_fd_;
+    WireDecoder events_, statuses_;
+    OutputTail output_;
+    pid_t pid_ = -1;
+    bool exited_ = false;
+    bool corrupt_ = false;
+    int status_ = 0;
+};
+
+}  // namespace isolation
+}  // namespace robottestingframework

@@ -1,0 +1,389 @@
+#include "python_runtime.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <sstream>
+
+#include <robottestingframework/Asserter.h>
+#include <robottestingframework/Exception.h>
+
+namespace robottestingframework {
+namespace languages {
+namespace python {
+
+namespace {
+
+// Guarded by the GIL, like everything Python.
+Caller g_caller;
+PyObject* g_failure = nullptr;   // robottestingframework.TestFailure
+PyObject* g_error = nullptr;     // robottestingframework.TestError
+PyObject* g_critical = nullptr;  // robottestingframework.TestCriticalError
+
+// The last assertion raised by a script (kind 0: none), so that catching it does not hide it.
+int g_pendingKind = 0;  // 1 failure, 2 error, 3 critical
+TestMessage g_pendingMessage;
+
+// The file and line of the Python code that called into the module.
+TestMessage messageHere(const std::string& text, const std::string& detail = "") {
+    TestMessage message(text, detail);
+    PyFrameObject* frame = PyEval_GetFrame();  // borrowed
+    if (frame != nullptr) {
+        auto code =
+            py::reinterpret_steal<py::object>(reinterpret_cast<PyObject*>(PyFrame_GetCode(frame)));
+        message.setSourceFileName(py::str(code.attr("co_filename")));
+        message.setSourceLineNumber(static_cast<unsigned int>(PyFrame_GetLineNumber(frame)));
+    }
+    return message;
+}
+
+TestCase* currentTest() {
+    return g_caller.test != nullptr ? g_caller.test : TestCase::current();
+}
+
+bool truth(const py::handle& value) {
+    int result = PyObject_IsTrue(value.ptr());
+    if (result < 0) {
+        throw py::error_already_set();
+    }
+    return result != 0;
+}
+
+void report(const TestMessage& message) {
+    if (g_caller.fixture != nullptr) {
+        Asserter::report(message, g_caller.fixture);
+    } else {
+        Asserter::report(message, currentTest());
+    }
+}
+
+// Raises `type` with (message, file, line): the wrapper turns it into the framework's exception.
+[[noreturn]] void raise(PyObject* type, const py::object& text) {
+    TestMessage here = messageHere(py::str(text));
+    g_pendingKind = type == g_failure ? 1 : (type == g_critical ? 3 : 2);
+    g_pendingMessage = here;
+    py::tuple args =
+        py::make_tuple(here.getMessage(), here.getSourceFileName(), here.getSourceLineNumber());
+    PyErr_SetObject(type, args.ptr());
+    throw py::error_already_set();
+}
+
+std::string join(const py::handle& lines) {
+    std::string text;
+    for (const auto& line : lines) {
+        text += py::str(line).cast<std::string>();
+    }
+    return text;
+}
+
+std::string trimEnd(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) {
+        text.pop_back();
+    }
+    return text;
+}
+
+// Adds an active virtual environment's packages in front of the system's, as its own python
+// would see them.
+void addVirtualEnvironment() {
+    const char* venv = std::getenv("VIRTUAL_ENV");
+    if (venv == nullptr || *venv == '\0') {
+        return;
+    }
+    py::module_ sys = py::module_::import("sys");
+    py::tuple version = sys.attr("version_info");
+    std::string sitePackages = std::string(venv) + "/lib/python" +
+                               py::str(version[0]).cast<std::string>() + "." +
+                               py::str(version[1]).cast<std::string>() + "/site-packages";
+    if (!std::filesystem::is_directory(sitePackages)) {
+        return;
+    }
+    py::list path = sys.attr("path");
+    py::list before = path.attr("copy")();
+    py::module_::import("site").attr("addsitedir")(sitePackages);
+    py::list added;
+    for (const auto& entry : path) {
+        if (!before.contains(entry)) {
+            added.append(entry);
+        }
+    }
+    for (const auto& entry : added) {
+        path.attr("remove")(entry);
+    }
+    for (std::size_t i = added.size(); i > 0; --i) {
+        path.insert(0, added[i - 1]);
+    }
+}
+
+// Swaps a script's folder and neighbour modules in and out of sys.path and sys.modules.
+const char* const kScopeSource = R"(
+import os
+import sys
+
+class Scope:
+    def __init__(self, folder, name, module):
+        self.folder = folder
+        self.prefix = os.path.join(folder, "")
+        self.name = name
+        self.module = module
+        self.stash = {}
+        self.before = set()
+
+    def enter(self):
+        sys.path.insert(0, self.folder)
+        sys.modules.update(self.stash)
+        # Registered while it runs: dataclasses, pickle and typing look classes' modules up.
+        sys.modules[self.name] = self.module
+        self.before = set(sys.modules)
+
+    def leave(self):
+        try:
+            sys.path.remove(self.folder)
+        except ValueError:
+            pass
+        sys.modules.pop(self.name, None)
+        for name in list(self.stash):
+            module = sys.modules.pop(name, None)
+            if module is not None:
+                self.stash[name] = module
+        for name in sys.modules.keys() - self.before:
+            file = getattr(sys.modules[name], "__file__", None)
+            if isinstance(file, str) and os.path.abspath(file).startswith(self.prefix):
+                self.stash[name] = sys.modules.pop(name)
+)";
+
+py::object g_scopeType;  // Scope, above
+
+}  // namespace
+
+PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
+    m.doc() = "What Robot Testing Framework test cases and fixtures written in Python call.";
+    g_failure =
+        PyErr_NewException("robottestingframework.TestFailure", PyExc_BaseException, nullptr);
+    g_error = PyErr_NewException("robottestingframework.TestError", PyExc_BaseException, nullptr);
+    g_critical = PyErr_NewException("robottestingframework.TestCriticalError", g_error, nullptr);
+    // Not Exception subclasses: a script's "except Exception" must not swallow an assertion.
+    m.attr("TestFailure") = py::reinterpret_borrow<py::object>(g_failure);
+    m.attr("TestError") = py::reinterpret_borrow<py::object>(g_error);
+    m.attr("TestCriticalError") = py::reinterpret_borrow<py::object>(g_critical);
+
+    m.def("setName", [](const std::string& name) {
+        if (g_caller.fixture != nullptr) {
+            g_caller.fixture->setName(name);
+        } else if (TestCase* test = currentTest()) {
+            test->setName(name);
+        }
+    });
+    m.def("testReport", [](const py::object& text) { report(messageHere(py::str(text))); });
+    m.def("testCheck", [](const py::object& condition, const py::object& text) {
+        bool passed = truth(condition);
+        if (g_caller.fixture != nullptr) {
+            if (!passed) {
+                report(messageHere(py::str(text), "check failed"));
+            }
+            return;
+        }
+        Asserter::testCheck(passed, messageHere(py::str(text)), currentTest());
+    });
+    m.def("testFailIf", [](const py::object& condition, const py::object& text) {
+        bool failing = truth(condition);
+        if (g_caller.fixture != nullptr) {
+            if (failing) {
+                report(messageHere(py::str(text), "failed"));
+            }
+            return;
+        }
+        Asserter::testFail(failing, messageHere(py::str(text)), currentTest());
+    });
+    m.def("assertFail", [](const py::object& text) { raise(g_failure, text); });
+    m.def("assertError", [](const py::object& text) { raise(g_error, text); });
+    m.def("assertCritical", [](const py::object& text) { raise(g_critical, text); });
+    m.def("getEnvironment", []() -> std::string {
+        TestCase* test = g_caller.fixture == nullptr ? currentTest() : nullptr;
+        return test != nullptr ? test->getEnvironment() : std::string();
+    });
+    m.def("getParam", []() -> std::string {
+        if (g_caller.fixture != nullptr) {
+            return g_caller.fixture->getParam();
+        }
+        TestCase* test = currentTest();
+        return test != nullptr ? test->getParam() : std::string();
+    });
+    // For fixture managers: the world is gone; the suite stops running its tests.
+    m.def("fixtureCollapsed", [](const py::object& text) {
+        if (g_caller.fixture != nullptr && g_caller.fixture->getDispatcher() != nullptr) {
+            g_caller.fixture->getDispatcher()->fixtureCollapsed(messageHere(py::str(text)));
+        }
+    });
+}
+
+void ensureInterpreter() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (Py_IsInitialized()) {
+            return;  // the host program embeds Python already
+        }
+        // No signal handlers: Ctrl-C belongs to the runner.
+        py::initialize_interpreter(false, 0, nullptr, false);
+        {
+            // Keeps test folders free of __pycache__ (tests may live in read-only trees).
+            py::module_::import("sys").attr("dont_write_bytecode") = true;
+            py::module_::import("traceback");
+            py::module_::import("robottestingframework");
+            py::dict globals;
+            globals["__builtins__"] = py::module_::import("builtins");
+            globals["__name__"] = "_rtf_scope";
+            py::exec(kScopeSource, globals);
+            g_scopeType = globals["Scope"];
+            g_scopeType.inc_ref();  // never released: the interpreter is never finalized
+            addVirtualEnvironment();
+        }
+        PyEval_SaveThread();  // every later call takes the GIL with gil_scoped_acquire
+    });
+}
+
+CallerScope::CallerScope(Caller caller) : previous_(g_caller) {
+    g_caller = caller;
+}
+
+CallerScope::~CallerScope() {
+    g_caller = previous_;
+}
+
+void clearPendingAssertion() {
+    g_pendingKind = 0;
+}
+
+void throwPendingAssertion() {
+    int kind = g_pendingKind;
+    g_pendingKind = 0;
+    if (kind == 1) {
+        throw TestFailureException(g_pendingMessage);
+    }
+    if (kind == 2) {
+        throw TestErrorException(g_pendingMessage);
+    }
+    if (kind == 3) {
+        throw TestCriticalErrorException(g_pendingMessage);
+    }
+}
+
+std::string formatException(py::error_already_set& error) {
+    py::module_ traceback = py::module_::import("traceback");
+    return trimEnd(
+        join(traceback.attr("format_exception")(error.type(), error.value(), error.trace())));
+}
+
+void rethrow(py::error_already_set& error) {
+    if (error.matches(g_failure) || error.matches(g_error)) {
+        TestMessage message;
+        py::tuple args = error.value().attr("args");
+        if (args.size() == 3) {
+            message =
+                TestMessage(py::str(args[0]), "", py::str(args[1]), args[2].cast<unsigned int>());
+        } else {
+            message = TestMessage(py::str(error.value()));
+        }
+        if (error.matches(g_critical)) {
+            throw TestCriticalErrorException(message);
+        }
+        if (error.matches(g_error)) {
+            throw TestErrorException(message);
+        }
+        throw TestFailureException(message);
+    }
+    // Anything else: the exception's own line, the traceback, and the innermost frame.
+    py::module_ traceback = py::module_::import("traceback");
+    TestMessage message(
+        trimEnd(join(traceback.attr("format_exception_only")(error.type(), error.value()))),
+        formatException(error));
+    py::object tb = error.trace();
+    while (!tb.is_none() && !tb.attr("tb_next").is_none()) {
+        tb = tb.attr("tb_next");
+    }
+    if (!tb.is_none()) {
+        message.setSourceFileName(py::str(tb.attr("tb_frame").attr("f_code").attr("co_filename")));
+        message.setSourceLineNumber(tb.attr("tb_lineno").cast<unsigned int>());
+    }
+    throw TestErrorException(message);
+}
+
+std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::string& error) {
+    static unsigned long counter = 0;
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        error = "cannot read " + path;
+        return nullptr;
+    }
+    std::stringstream source;
+    source << file.rdbuf();
+
+    py::module_ builtins = py::module_::import("builtins");
+    py::object code;
+    try {
+        code = builtins.attr("compile")(py::bytes(source.str()), path, "exec", 0, true);
+    } catch (py::error_already_set& e) {
+        if (e.matches(PyExc_SyntaxError)) {
+            py::object value = e.value();
+            std::string where = py::str(value.attr("filename")).cast<std::string>() + ":" +
+                                py::str(value.attr("lineno")).cast<std::string>() + ":" +
+                                py::str(value.attr("offset")).cast<std::string>();
+            py::module_ traceback = py::module_::import("traceback");
+            error = "syntax error at " + where + "\n" +
+                    trimEnd(join(traceback.attr("format_exception_only")(e.type(), value)));
+        } else {
+            error = formatException(e);
+        }
+        return nullptr;
+    }
+
+    std::unique_ptr<ScriptModule> script(new ScriptModule);
+    std::string stem = std::filesystem::path(path).stem().string();
+    for (char& c : stem) {
+        if (!std::isalnum(static_cast<unsigned char>(c))) {
+            c = '_';
+        }
+    }
+    std::string name = "_rtf_script_" + std::to_string(++counter) + "_" + stem;
+    std::string folder = std::filesystem::absolute(path).parent_path().lexically_normal().string();
+    script->module_ = py::module_::import("types").attr("ModuleType")(name);
+    script->module_.attr("__file__") = path;
+    script->module_.attr("__builtins__") = builtins;
+    script->scope_ = g_scopeType(folder, name, script->module_);
+    try {
+        Call call(*script);
+        builtins.attr("exec")(code, script->module_.attr("__dict__"));
+    } catch (py::error_already_set& e) {
+        error = formatException(e);
+        return nullptr;
+    }
+    return script;
+}
+
+ScriptModule::~ScriptModule() {
+    py::gil_scoped_acquire gil;
+    scope_ = py::object();
+    module_ = py::object();
+}
+
+ScriptModule::Call::Call(ScriptModule& script) : script_(script) {
+    script_.scope_.attr("enter")();
+}
+
+ScriptModule::Call::~Call() {
+    // Never throws: a script may have messed sys.path or sys.modules up.
+    try {
+        script_.scope_.attr("leave")();
+    } catch (py::error_already_set&) {
+        PyErr_Clear();
+    }
+}
+
+py::object ScriptModule::attribute(const char* name) const {
+    return py::getattr(module_, name, py::none());
+}
+
+}  // namespace python
+}  // namespace languages
+}  // namespace robottestingframework

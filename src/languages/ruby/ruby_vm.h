@@ -1,0 +1,19 @@
+// The one Ruby VM of this process. Ruby can be started once and never finalized, and only the
+// thread that started it may call it; so it lives on a thread of its own, started on first use,
+// and every call into Ruby is a job handed to that thread.
+#pragma once
+
+#include <functional>
+
+namespace robottestingframework {
+namespace languages {
+
+class RubyVm {
+public:
+    // Runs `job` on the Ruby thread (starting it if needed) and waits for it; an exception
+    // thrown by `job` is thrown here. Runs it directly when called from the Ruby thread.
+    static void run(const std::function<void()>& job);
+};
+
+}  // namespace languages
+}  // namespace robottestingframework

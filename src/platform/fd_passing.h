@@ -1,0 +1,27 @@
+// Sending open file descriptors to another process along with a message, over a local
+// packet socket (SCM_RIGHTS on POSIX). How the runner hands a test's pipes to the fork server.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "file_descriptor.h"
+
+namespace robottestingframework {
+namespace platform {
+
+// The largest message sendWithFds accepts.
+constexpr std::size_t kMaxPacket = 128 * 1024;
+// The most descriptors one message carries.
+constexpr std::size_t kMaxPassedFds = 8;
+
+// Sends `data` and duplicates of `fds` as one packet. False on error (errno set).
+bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds);
+
+// Receives one packet: its bytes and the descriptors it carried (close-on-exec). Returns false
+// at end of stream (the peer is gone) or on error; an empty packet is not end of stream.
+bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds);
+
+}  // namespace platform
+}  // namespace robottestingframework

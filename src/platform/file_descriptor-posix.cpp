@@ -1,0 +1,176 @@
+#include "file_descriptor.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+#if defined(__linux__)
+#include <sys/syscall.h>
+#endif
+
+#include <climits>
+
+namespace robottestingframework {
+namespace platform {
+
+FileDescriptor& FileDescriptor::operator=(FileDescriptor&& other) noexcept
+{
+    if (this != &other) {
+        reset(other.release());
+    }
+    return *this;
+}
+
+int FileDescriptor::release()
+{
+    int fd = fd_;
+    fd_ = -1;
+    return fd;
+}
+
+void FileDescriptor::reset(int fd)
+{
+    if (fd_ >= 0) {
+        ::close(fd_);
+    }
+    fd_ = fd;
+}
+
+bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd)
+{
+    int fds[2];
+    if (::pipe2(fds, O_CLOEXEC) != 0) {
+        return false;
+    }
+    readEnd.reset(fds[0]);
+    writeEnd.reset(fds[1]);
+    return true;
+}
+
+bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets)
+{
+    int fds[2];
+    int type = (packets ? SOCK_SEQPACKET : SOCK_STREAM) | SOCK_CLOEXEC;
+    if (::socketpair(AF_UNIX, type, 0, fds) != 0) {
+        return false;
+    }
+    first.reset(fds[0]);
+    second.reset(fds[1]);
+    return true;
+}
+
+void closeDescriptorsFrom(int first)
+{
+#if defined(__linux__) && defined(SYS_close_range)
+    if (::syscall(SYS_close_range, first, UINT_MAX, 0) == 0) {
+        return;
+    }
+#endif
+    long max = ::sysconf(_SC_OPEN_MAX);
+    for (long fd = first; fd < (max > 0 ? max : 1024); ++fd) {
+        ::close(static_cast<int>(fd));
+    }
+}
+
+void setNonBlocking(int fd, bool on)
+{
+    int flags = ::fcntl(fd, F_GETFL);
+    if (flags >= 0) {
+        ::fcntl(fd, F_SETFL, on ? (flags | O_NONBLOCK) : (flags & ~O_NONBLOCK));
+    }
+}
+
+void setCloseOnExec(int fd, bool on)
+{
+    int flags = ::fcntl(fd, F_GETFD);
+    if (flags >= 0) {
+        ::fcntl(fd, F_SETFD, on ? (flags | FD_CLOEXEC) : (flags & ~FD_CLOEXEC));
+    }
+}
+
+bool writeAll(int fd, const void* data, std::size_t size)
+{
+    const char* p = static_cast<const char*>(data);
+    while (size > 0) {
+        // send() with MSG_NOSIGNAL would only work on sockets; writers ignore SIGPIPE instead.
+        ssize_t n = ::write(fd, p, size);
+        if (n > 0) {
+            p += n;
+            size -= static_cast<std::size_t>(n);
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            pollfd pfd{fd, POLLOUT, 0};
+            ::poll(&pfd, 1, 100);
+        } else {
+            return false;
+        }
+    }
+    return true;
+}
+
+bool sendAll(int socket, const std::string& data)
+{
+    const char* p = data.data();
+    std::size_t size = data.size();
+    while (size > 0) {
+        ssize_t n = ::send(socket, p, size, MSG_NOSIGNAL);
+        if (n > 0) {
+            p += n;
+            size -= static_cast<std::size_t>(n);
+        } else if (n < 0 && errno == EINTR) {
+            continue;
+        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
+            pollfd pfd{socket, POLLOUT, 0};
+            ::poll(&pfd, 1, 100);
+        } else {
+            return false;
+        }
+    }
+    return true;
+}
+
+long readSome(int fd, std::string& out, std::size_t max)
+{
+    char buffer[65536];
+    if (max > sizeof(buffer)) {
+        max = sizeof(buffer);
+    }
+    for (;;) {
+        ssize_t n = ::read(fd, buffer, max);
+        if (n > 0) {
+            out.append(buffer, static_cast<std::size_t>(n));
+            return n;
+        }
+        if (n == 0) {
+            return 0;
+        }
+        if (errno != EINTR) {
+            return -1;
+        }
+    }
+}
+
+bool waitReadable(const std::vector<int>& fds, int timeoutMs, std::vector<bool>& ready)
+{
+    std::vector<pollfd> pfds(fds.size());
+    for (std::size_t i = 0; i < fds.size(); ++i) {
+        pfds[i] = pollfd{fds[i], POLLIN, 0};
+    }
+    ready.assign(fds.size(), false);
+    int n;
+    do {
+        n = ::poll(pfds.data(), pfds.size(), timeoutMs);
+    } while (n < 0 && errno == EINTR);
+    if (n <= 0) {
+        return false;
+    }
+    for (std::size_t i = 0; i < fds.size(); ++i) {
+        ready[i] = fds[i] >= 0 && (pfds[i].revents & (POLLIN | POLLHUP | POLLERR)) != 0;
+    }
+    return true;
+}
+
+}  // namespace platform
+}  // namespace robottestingframework

@@ -1,0 +1,61 @@
+// Owned file descriptors, pipes and socket pairs, and the read/write/poll loops around them
+// (EINTR and short writes handled once, here).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace robottestingframework {
+namespace platform {
+
+class FileDescriptor {
+public:
+    FileDescriptor() = default;
+    explicit FileDescriptor(int fd) : fd_(fd) {}
+    ~FileDescriptor() { reset(); }
+    FileDescriptor(FileDescriptor&& other) noexcept : fd_(other.release()) {}
+    FileDescriptor& operator=(FileDescriptor&& other) noexcept;
+    FileDescriptor(const FileDescriptor&) = delete;
+    FileDescriptor& operator=(const FileDescriptor&) = delete;
+
+    int get() const { return fd_; }
+    bool valid() const { return fd_ >= 0; }
+    int release();
+    void reset(int fd = -1);
+
+private:
+    int fd_ = -1;
+};
+
+// Both ends close-on-exec. False (errno set) on failure.
+bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd);
+// A connected pair of local sockets; `packets` keeps message boundaries (SOCK_SEQPACKET).
+bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets);
+
+// Closes every descriptor numbered `first` or above (in a child before it runs other code).
+void closeDescriptorsFrom(int first);
+
+void setNonBlocking(int fd, bool on = true);
+void setCloseOnExec(int fd, bool on = true);
+
+// Writes everything (waiting while a non-blocking fd is full). False when the reader is gone.
+bool writeAll(int fd, const void* data, std::size_t size);
+inline bool writeAll(int fd, const std::string& data)
+{
+    return writeAll(fd, data.data(), data.size());
+}
+
+// The same on a stream socket, without SIGPIPE when the peer is gone.
+bool sendAll(int socket, const std::string& data);
+
+// One read: >0 bytes appended to `out`, 0 at end of file, -1 when nothing is available now
+// (non-blocking fd) or on error (errno tells).
+long readSome(int fd, std::string& out, std::size_t max = 65536);
+
+// Waits until one of `fds` is readable (or hung up), at most `timeoutMs` (-1: forever).
+// `ready[i]` tells which; returns false on timeout. Negative fds are ignored.
+bool waitReadable(const std::vector<int>& fds, int timeoutMs, std::vector<bool>& ready);
+
+}  // namespace platform
+}  // namespace robottestingframework

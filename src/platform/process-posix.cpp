@@ -1,0 +1,218 @@
+#include "process.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#if defined(__linux__)
+#include <sys/prctl.h>
+#endif
+
+#include <climits>
+#include <thread>
+
+#include "clock.h"
+#include "file_descriptor.h"
+#include "signal_name.h"
+
+namespace robottestingframework {
+namespace platform {
+
+namespace {
+
+[[noreturn]] void failChild(int reportFd, const char* what)
+{
+    int code = errno;
+    ssize_t ignored = ::write(reportFd, &code, sizeof(code));
+    ignored = ::write(reportFd, what, ::strlen(what));
+    (void)ignored;
+    ::_exit(127);
+}
+
+}  // namespace
+
+pid_t spawnProcess(const SpawnOptions& options, std::string& error)
+{
+    if (options.argv.empty()) {
+        error = "nothing to run";
+        return -1;
+    }
+    // Everything the child needs is prepared here: after fork only async-signal-safe calls.
+    std::vector<char*> argv;
+    for (const std::string& word : options.argv) {
+        argv.push_back(const_cast<char*>(word.c_str()));
+    }
+    argv.push_back(nullptr);
+    int highest = 2;
+    bool mapsStdin = false;
+    for (const auto& mapping : options.fds) {
+        highest = mapping.first > highest ? mapping.first : highest;
+        mapsStdin = mapsStdin || mapping.first == 0;
+    }
+    FileDescriptor reportRead, reportWrite;
+    if (!makePipe(reportRead, reportWrite)) {
+        error = std::string("pipe: ") + ::strerror(errno);
+        return -1;
+    }
+    pid_t parent = ::getpid();
+    pid_t pid = ::fork();
+    if (pid < 0) {
+        error = std::string("fork: ") + ::strerror(errno);
+        return -1;
+    }
+    if (pid == 0) {
+        int report = reportWrite.get();
+        if (options.newProcessGroup) {
+            ::setpgid(0, 0);
+        }
+#if defined(__linux__)
+        if (options.parentDeathSignal != 0) {
+            ::prctl(PR_SET_PDEATHSIG, options.parentDeathSignal);
+            if (::getppid() != parent) {
+                ::_exit(127);  // the parent died before the signal was armed
+            }
+        }
+#else
+        (void)parent;
+#endif
+        sigset_t none;
+        sigemptyset(&none);
+        ::sigprocmask(SIG_SETMASK, &none, nullptr);
+        // Move the report pipe and the sources above every target, then place them.
+        int base = highest + 1 + static_cast<int>(options.fds.size()) + 1;
+        report = ::fcntl(report, F_DUPFD_CLOEXEC, base);
+        int next = report + 1;
+        int sources[64];
+        int count = 0;
+        for (const auto& mapping : options.fds) {
+            if (count < 64) {
+                sources[count++] = ::fcntl(mapping.second, F_DUPFD, next);
+                next = sources[count - 1] + 1;
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            if (::dup2(sources[i], options.fds[static_cast<std::size_t>(i)].first) < 0) {
+                failChild(report, "dup2");
+            }
+        }
+        if (options.nullStdin && !mapsStdin) {
+            int null = ::open("/dev/null", O_RDONLY);
+            if (null >= 0 && null != 0) {
+                ::dup2(null, 0);
+                ::close(null);
+            }
+        }
+        // Keep 0-2, the mapped targets and the report pipe; close everything else.
+        for (int fd = 3; fd <= highest; ++fd) {
+            bool keep = false;
+            for (const auto& mapping : options.fds) {
+                keep = keep || mapping.first == fd;
+            }
+            if (!keep) {
+                ::close(fd);
+            }
+        }
+        for (int i = 0; i < count; ++i) {
+            ::close(sources[i]);
+        }
+        for (int fd = highest + 1; fd < report; ++fd) {
+            ::close(fd);
+        }
+        closeDescriptorsFrom(report + 1);
+        ::execvp(argv[0], argv.data());
+        failChild(report, "exec");
+    }
+    reportWrite.reset();
+    // The child writes errno and a word only when it failed; EOF (exec closed it) is success.
+    std::string message;
+    while (readSome(reportRead.get(), message) > 0) {
+    }
+    if (!message.empty()) {
+        int code = 0;
+        if (message.size() >= sizeof(code)) {
+            ::memcpy(&code, message.data(), sizeof(code));
+        }
+        error = message.substr(sizeof(code)) + " " + options.argv[0] + ": " + ::strerror(code);
+        int status;
+        ::waitpid(pid, &status, 0);
+        return -1;
+    }
+    return pid;
+}
+
+ExitStatus ExitStatus::fromWaitStatus(int status)
+{
+    ExitStatus result;
+    if (WIFSIGNALED(status)) {
+        result.signaled = true;
+        result.signal = WTERMSIG(status);
+#ifdef WCOREDUMP
+        result.coreDumped = WCOREDUMP(status);
+#endif
+    } else if (WIFEXITED(status)) {
+        result.code = WEXITSTATUS(status);
+    }
+    return result;
+}
+
+std::string ExitStatus::toString() const
+{
+    if (signaled) {
+        return "killed by " + signalName(signal) + " (" + signalDescription(signal) + ")";
+    }
+    return "exited with status " + std::to_string(code);
+}
+
+bool waitChild(pid_t pid, double timeoutSeconds, int& status)
+{
+    Deadline deadline(timeoutSeconds);
+    int pause = 1;
+    for (;;) {
+        pid_t done = ::waitpid(pid, &status, timeoutSeconds < 0 ? 0 : WNOHANG);
+        if (done == pid) {
+            return true;
+        }
+        if (done < 0 && errno != EINTR) {
+            status = 0;
+            return true;  // not our child (any more): nothing to wait for
+        }
+        if (done == 0) {
+            if (timeoutSeconds == 0 || deadline.expired()) {
+                return false;
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(pause));
+            pause = pause < 20 ? pause * 2 : 20;
+        }
+    }
+}
+
+bool becomeSubreaper()
+{
+#if defined(__linux__)
+    return ::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0;
+#else
+    return false;
+#endif
+}
+
+bool setParentDeathSignal(int signal)
+{
+#if defined(__linux__)
+    return ::prctl(PR_SET_PDEATHSIG, signal) == 0;
+#else
+    (void)signal;
+    return false;
+#endif
+}
+
+std::string executablePath()
+{
+    char buffer[PATH_MAX];
+    ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
+    return n > 0 ? std::string(buffer, static_cast<std::size_t>(n)) : std::string();
+}
+
+}  // namespace platform
+}  // namespace robottestingframework

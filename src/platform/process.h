@@ -1,0 +1,50 @@
+// Starting programs and looking after our own process: the parent-death signal, the
+// subreaper role, how a child ended.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace robottestingframework {
+namespace platform {
+
+struct SpawnOptions {
+    std::vector<std::string> argv;          // argv[0] is the program (a path, or searched)
+    std::vector<std::pair<int, int>> fds;   // {descriptor in the child, ours}; others closed
+    bool newProcessGroup = true;            // the child leads a group of its own
+    int parentDeathSignal = 0;              // sent to the child when we die (Linux); 0: none
+    bool nullStdin = true;                  // stdin is /dev/null unless `fds` maps 0
+};
+
+// Starts a program. Returns its pid, or -1 with `error` set (including exec failures, which
+// are reported back from the child).
+pid_t spawnProcess(const SpawnOptions& options, std::string& error);
+
+// How a child ended, from a wait status.
+struct ExitStatus {
+    bool signaled = false;
+    int code = 0;    // exit code when not signaled
+    int signal = 0;  // the signal that ended it when signaled
+    bool coreDumped = false;
+    static ExitStatus fromWaitStatus(int status);
+    // "exited with status 3", "killed by SIGSEGV (Segmentation fault)".
+    std::string toString() const;
+    bool success() const { return !signaled && code == 0; }
+};
+
+// Waits up to `timeoutSeconds` (<0: forever) for our child `pid`; false while it still runs.
+bool waitChild(pid_t pid, double timeoutSeconds, int& status);
+
+// Orphaned descendants are re-parented to us instead of init (Linux; false elsewhere).
+bool becomeSubreaper();
+// `signal` is delivered to us when the thread that forked us ends (Linux; false elsewhere).
+bool setParentDeathSignal(int signal);
+
+// The path of the running program (/proc/self/exe), empty when unknown.
+std::string executablePath();
+
+}  // namespace platform
+}  // namespace robottestingframework

@@ -1,0 +1,250 @@
+#include <robottestingframework/ConsoleListener.h>
+
+#include <unistd.h>
+
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "summary.h"
+
+namespace robottestingframework {
+
+namespace {
+
+const char* const red = "\033[31m";
+const char* const green = "\033[32m";
+const char* const yellow = "\033[33m";
+const char* const bold = "\033[1m";
+const char* const plain = "\033[0m";
+
+const char* colourOf(TestStatus status) {
+    if (status == TestStatus::Passed) {
+        return green;
+    }
+    return status == TestStatus::Skipped ? yellow : red;
+}
+
+const char* colourOf(ResultEvent::Kind kind, bool passed) {
+    using Kind = ResultEvent::Kind;
+    switch (kind) {
+        case Kind::Check:
+            return passed ? green : red;
+        case Kind::Skipped:
+            return yellow;
+        case Kind::Report:
+            return nullptr;
+        default:
+            return red;
+    }
+}
+
+}  // namespace
+
+ConsoleListener::ConsoleListener(bool verbose) : verbose_(verbose) {
+    // It only needs the open test and the counts; finished records are dropped.
+    record_.setKeepEvents(false);
+    setStream(stdout);
+}
+
+void ConsoleListener::setStream(std::FILE* stream) {
+    stream_ = stream ? stream : stdout;
+    tty_ = ::isatty(::fileno(stream_)) == 1;
+}
+
+void ConsoleListener::line(const std::string& text) {
+    std::fwrite(text.data(), 1, text.size(), stream_);
+    std::fputc('\n', stream_);
+    // A terminal shows progress as it happens; a file or a pipe gets buffered writes.
+    if (tty_) {
+        std::fflush(stream_);
+    }
+}
+
+void ConsoleListener::message(const char* label, const char* colour, const TestMessage& msg) {
+    std::string text = "      ";
+    if (colors_ && colour != nullptr) {
+        text += colour;
+        text += label;
+        text += plain;
+    } else {
+        text += label;
+    }
+    text += ": " + reporters::messageText(msg);
+    line(text);
+}
+
+bool ConsoleListener::printNow(const Test* test) const {
+    return verbose_ || test_ == nullptr || test != test_;
+}
+
+void ConsoleListener::addReport(const Test* test, TestMessage msg) {
+    record_.addReport(test, msg);
+    if (verbose_ && !hideUncritical_) {
+        message("report", nullptr, msg);
+    }
+}
+
+void ConsoleListener::addError(const Test* test, TestMessage msg) {
+    record_.addError(test, msg);
+    if (printNow(test)) {
+        message("error", red, msg);
+    }
+}
+
+void ConsoleListener::addFailure(const Test* test, TestMessage msg) {
+    record_.addFailure(test, msg);
+    if (printNow(test)) {
+        message("failure", red, msg);
+    }
+}
+
+void ConsoleListener::addCheck(const Test* test, TestMessage msg, bool passed) {
+    record_.addCheck(test, msg, passed);
+    if (showChecks_ && printNow(test)) {
+        message(passed ? "check ok" : "check FAILED", passed ? green : red, msg);
+    }
+}
+
+void ConsoleListener::addSkipped(const Test* test, TestMessage reason) {
+    record_.addSkipped(test, reason);
+    if (printNow(test)) {
+        message("skipped", yellow, reason);
+    }
+}
+
+void ConsoleListener::addCrash(const Test* test, TestMessage msg) {
+    record_.addCrash(test, msg);
+    if (printNow(test)) {
+        message("crash", red, msg);
+    }
+}
+
+void ConsoleListener::addTimeout(const Test* test, TestMessage msg) {
+    record_.addTimeout(test, msg);
+    if (printNow(test)) {
+        message("timeout", red, msg);
+    }
+}
+
+void ConsoleListener::addInterrupted(const Test* test, TestMessage msg) {
+    record_.addInterrupted(test, msg);
+    if (printNow(test)) {
+        message("interrupted", red, msg);
+    }
+}
+
+void ConsoleListener::addOutput(const Test* test, const std::string& text) {
+    record_.addOutput(test, text);
+    if (!verbose_ || text.empty()) {
+        return;
+    }
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        line("      | " + text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+}
+
+void ConsoleListener::startTest(const Test* test) {
+    record_.startTest(test);
+    test_ = test;
+    if (verbose_ && test != nullptr) {
+        line("  run         " + test->getName());
+    }
+}
+
+void ConsoleListener::endTest(const Test* test) {
+    record_.endTest(test);
+    test_ = nullptr;
+    if (record_.suites().empty() || record_.suites().back().tests.empty()) {
+        return;
+    }
+    const TestRecord& record = record_.suites().back().tests.back();
+    char word[16];
+    std::snprintf(word, sizeof(word), "%-11s", reporters::statusWord(record.status));
+    std::string text = "  ";
+    if (colors_) {
+        text += colourOf(record.status);
+        text += word;
+        text += plain;
+    } else {
+        text += word;
+    }
+    text += " " + record.name + "  (" + reporters::seconds(record.duration) + ")";
+    line(text);
+    if (verbose_) {
+        return;  // its messages were printed as they came
+    }
+    for (const ResultEvent& event : record.events) {
+        using Kind = ResultEvent::Kind;
+        if (event.kind == Kind::Report || (event.kind == Kind::Check && !showChecks_)) {
+            continue;
+        }
+        message(reporters::eventLabel(event.kind, event.passed).c_str(),
+                colourOf(event.kind, event.passed), event.message);
+    }
+}
+
+void ConsoleListener::startTestSuite(const TestSuite* suite) {
+    record_.startTestSuite(suite);
+    if (suite == nullptr) {
+        return;
+    }
+    const std::size_t count = suite->size();
+    std::string text = "\n";
+    text += colors_ ? bold : "";
+    text += "suite " + suite->getName();
+    text += colors_ ? plain : "";
+    text += "  (" + std::to_string(count) + (count == 1 ? " test)" : " tests)");
+    line(text);
+    if (verbose_ && !suite->getDescription().empty()) {
+        line("  " + suite->getDescription());
+    }
+}
+
+void ConsoleListener::endTestSuite(const TestSuite* suite) {
+    // Its records were dropped test by test; the collector's count still knows.
+    const std::size_t failedBefore = record_.failedSuiteCount();
+    record_.endTestSuite(suite);
+    if (suite == nullptr || record_.suites().empty()) {
+        return;
+    }
+    const SuiteRecord& record = record_.suites().back();
+    const bool ok = record_.failedSuiteCount() == failedBefore;
+    std::string text = "  suite ";
+    if (colors_) {
+        text += ok ? green : red;
+    }
+    text += ok ? "passed" : "FAILED";
+    text += colors_ ? plain : "";
+    text += "  " + record.name + "  (" + reporters::seconds(record.duration) + ")";
+    line(text);
+}
+
+void ConsoleListener::startTestRunner() {
+    record_.startTestRunner();
+}
+
+void ConsoleListener::endTestRunner() {
+    record_.endTestRunner();
+    line("");
+    if (showSummary_) {
+        line("Summary");
+        for (const std::string& text : reporters::summaryLines(record_)) {
+            line(text);
+        }
+    }
+    const std::string closing = reporters::closingLine(record_);
+    if (colors_) {
+        line(std::string(record_.failedCount() > 0 ? red : green) + closing + plain);
+    } else {
+        line(closing);
+    }
+    std::fflush(stream_);
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,84 @@
+#include "summary.h"
+
+#include <cstdio>
+
+namespace robottestingframework {
+namespace reporters {
+
+const char* statusWord(TestStatus status) {
+    switch (status) {
+        case TestStatus::Passed:
+            return "passed";
+        case TestStatus::Skipped:
+            return "skipped";
+        case TestStatus::Failed:
+            return "FAILED";
+        case TestStatus::Error:
+            return "ERROR";
+        case TestStatus::Crashed:
+            return "CRASHED";
+        case TestStatus::TimedOut:
+            return "TIMED OUT";
+        case TestStatus::Interrupted:
+            return "INTERRUPTED";
+    }
+    return "?";
+}
+
+std::string eventLabel(ResultEvent::Kind kind, bool passed) {
+    if (kind == ResultEvent::Kind::Check) {
+        return passed ? "check ok" : "check FAILED";
+    }
+    return toString(kind);
+}
+
+std::string messageText(const TestMessage& msg) {
+    std::string text = msg.toString();
+    const std::string where = msg.getSourceLocation();
+    if (!where.empty()) {
+        text += " [" + where + "]";
+    }
+    return text;
+}
+
+std::string seconds(double value) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof(buffer), "%.3f s", value);
+    return buffer;
+}
+
+std::vector<std::string> summaryLines(const TestResultCollector& collector) {
+    std::vector<std::string> lines;
+    std::string tests = "  tests:  " + std::to_string(collector.testCount());
+    std::string states;
+    for (int s = 0; s <= static_cast<int>(TestStatus::Interrupted); ++s) {
+        const auto status = static_cast<TestStatus>(s);
+        const std::size_t count = collector.countOf(status);
+        if (count > 0) {
+            states += (states.empty() ? "" : ", ") + std::to_string(count) + " " + toString(status);
+        }
+    }
+    if (!states.empty()) {
+        tests += " (" + states + ")";
+    }
+    lines.push_back(tests);
+    if (collector.suiteCount() > 0) {
+        lines.push_back("  suites: " + std::to_string(collector.suiteCount()) + " (" +
+                        std::to_string(collector.passedSuiteCount()) + " passed, " +
+                        std::to_string(collector.failedSuiteCount()) + " failed)");
+    }
+    lines.push_back("  time:   " + seconds(collector.duration()));
+    return lines;
+}
+
+std::string closingLine(const TestResultCollector& collector) {
+    std::string line = std::to_string(collector.passedCount()) + " passed, " +
+                       std::to_string(collector.failedCount()) + " failed";
+    if (collector.skippedCount() > 0) {
+        line += ", " + std::to_string(collector.skippedCount()) + " skipped";
+    }
+    return line;
+}
+
+}  // namespace reporters
+}  // namespace robottestingframework

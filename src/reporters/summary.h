@@ -1,0 +1,30 @@
+// Wording shared by the text reporters: status words, message lines, the run's summary.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <robottestingframework/ResultEvent.h>
+#include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestStatus.h>
+
+namespace robottestingframework {
+namespace reporters {
+
+// "passed", "skipped", then the failing states in capitals: "FAILED", "TIMED OUT", ...
+const char* statusWord(TestStatus status);
+// What a message line starts with: "failure", "error", "check FAILED", ...
+std::string eventLabel(ResultEvent::Kind kind, bool passed);
+// "message: detail [file:line]".
+std::string messageText(const TestMessage& msg);
+// "0.002 s".
+std::string seconds(double value);
+
+// The summary lines (tests per state, suites, wall time), without the closing line.
+std::vector<std::string> summaryLines(const TestResultCollector& collector);
+// "N passed, N failed" and ", N skipped" when there are any.
+std::string closingLine(const TestResultCollector& collector);
+
+}  // namespace reporters
+}  // namespace robottestingframework

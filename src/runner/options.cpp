@@ -1,0 +1,203 @@
+#include "options.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+const char* const program = "robottestingframework-testrunner";
+
+// Output types other issues will add; named here so "tap:out.tap" is not taken for a file name.
+bool isPlannedOutputType(const std::string& type) {
+    return type == "tap" || type == "json" || type == "html";
+}
+
+std::string checkOutputType(const std::string& type) {
+    if (isKnownOutputType(type)) {
+        return {};
+    }
+    if (isPlannedOutputType(type)) {
+        return "output type '" + type + "' is not available in this build (use text or junit)";
+    }
+    return "unknown output type '" + type + "' (expected text or junit)";
+}
+
+// A param or an environment is free text that often starts with "--" ("--robot icubSim"): glue
+// it to its option so the parser never mistakes it for an option of the runner.
+std::vector<std::string> glueFreeTextValues(int argc, const char* const* argv) {
+    std::vector<std::string> args;
+    for (int i = 1; i < argc; ++i) {
+        std::string arg = argv[i];
+        if (arg == "--") {
+            // Everything after "--" stays as it is.
+            for (; i < argc; ++i) {
+                args.emplace_back(argv[i]);
+            }
+            break;
+        }
+        if ((arg == "-p" || arg == "--param") && i + 1 < argc) {
+            args.push_back("--param=" + std::string(argv[++i]));
+        } else if ((arg == "-e" || arg == "--environment") && i + 1 < argc) {
+            args.push_back("--environment=" + std::string(argv[++i]));
+        } else {
+            args.push_back(arg);
+        }
+    }
+    return args;
+}
+
+}  // namespace
+
+bool isKnownOutputType(const std::string& type) {
+    return type == "text" || type == "junit";
+}
+
+ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
+    CLI::App app{"Runs Robot Testing Framework test cases and suites.", program};
+    app.footer(
+        "Exit status: 0 when every test passed (skipped ones allowed), 1 when a test failed, "
+        "errored or could not be loaded, or a fixture failed, 2 on a usage or configuration "
+        "error (bad option, unreadable or malformed suite file, an output that could not be "
+        "written).");
+    app.option_defaults()->always_capture_default(false);
+
+    std::vector<std::string> outputs;
+    std::string outputType = "text";
+    std::vector<std::string> variables;
+    bool version = false;
+
+    auto takeAll = [](CLI::Option* option) {
+        option->type_size(1)->expected(1)->allow_extra_args(false)->multi_option_policy(
+            CLI::MultiOptionPolicy::TakeAll);
+    };
+    takeAll(app.add_option("-t,--test", options.tests, "Run the test case in FILE (repeatable)")
+                ->type_name("FILE"));
+    takeAll(app.add_option("--tests", options.testDirs, "Run every test case in the folder DIR")
+                ->type_name("DIR"));
+    takeAll(
+        app.add_option("-s,--suite", options.suites, "Run the suite in the XML FILE (repeatable)")
+            ->type_name("FILE"));
+    takeAll(
+        app.add_option("--suites", options.suiteDirs, "Run every suite (*.xml) in the folder DIR")
+            ->type_name("DIR"));
+    app.add_flag("-r,--recursive", options.recursive,
+                 "--tests and --suites look in sub-folders too");
+    app.add_option("-p,--param", options.param, "Param for the tests that have none of their own")
+        ->type_name("TEXT");
+    app.add_option("-e,--environment", options.environment,
+                   "Environment for every test, after the suite's own")
+        ->type_name("TEXT");
+    app.add_option("--repetition", options.repetition,
+                   "Run each test N times (a test's own repetition wins)")
+        ->type_name("N")
+        ->check(CLI::PositiveNumber);
+    takeAll(app.add_option("-o,--output", outputs,
+                           "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); "
+                           "repeatable. Default: result.txt")
+                ->type_name("FILE"));
+    app.add_option("--output-type", outputType,
+                   "Type of the --output files without a TYPE: "
+                   "text or junit (default text)")
+        ->type_name("TYPE");
+    app.add_flag("--no-output", options.noOutput, "Write no result file");
+    app.add_flag("--no-summary", options.noSummary,
+                 "Leave the summary out of the console and the text output");
+    app.add_flag("-w,--web-reporter", options.webReporter, "Show the run live in a web page");
+    app.add_option("--web-port", options.webPort, "Port of the web reporter (default 8080)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 65535));
+    app.add_flag("-d,--detail", options.detail, "Show every check on the console");
+    app.add_flag("-v,--verbose", options.verbose,
+                 "Show the tests' reports and what they print on the console");
+    app.add_option("--isolation", options.isolation,
+                   "Where tests run: none (in the runner) or process (default none)")
+        ->type_name("MODE")
+        ->check(CLI::IsMember({"none", "process"}));
+    takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
+                ->type_name("NAME=VALUE"));
+    app.add_flag("--version", version, "Print the version and exit");
+
+    ParseResult result;
+    auto usageError = [&result](const std::string& message) {
+        result.outcome = ParseResult::Outcome::Exit;
+        result.status = 2;
+        result.text = std::string(program) + ": " + message + "\nRun '" + program +
+                      " --help' for the options.\n";
+        return result;
+    };
+
+    std::vector<std::string> args = glueFreeTextValues(argc, argv);
+    std::reverse(args.begin(), args.end());  // CLI11 takes them last first
+    try {
+        app.parse(args);
+    } catch (const CLI::CallForHelp&) {
+        result.outcome = ParseResult::Outcome::Exit;
+        result.status = 0;
+        result.text = app.help();
+        return result;
+    } catch (const CLI::ParseError& e) {
+        return usageError(e.what());
+    }
+
+    if (version) {
+        result.outcome = ParseResult::Outcome::Exit;
+        result.status = 0;
+        result.text = std::string(program) + " " + RTF_VERSION + "\n";
+        return result;
+    }
+
+    std::string problem = checkOutputType(outputType);
+    if (!problem.empty()) {
+        return usageError("--output-type: " + problem);
+    }
+    for (const auto& output : outputs) {
+        OutputRequest request{outputType, output};
+        std::size_t colon = output.find(':');
+        if (colon != std::string::npos) {
+            std::string type = output.substr(0, colon);
+            if (isKnownOutputType(type) || isPlannedOutputType(type)) {
+                problem = checkOutputType(type);
+                if (!problem.empty()) {
+                    return usageError("--output " + output + ": " + problem);
+                }
+                request = OutputRequest{type, output.substr(colon + 1)};
+            }
+        }
+        if (request.file.empty()) {
+            return usageError("--output " + output + ": no file name");
+        }
+        options.outputs.push_back(request);
+    }
+    if (options.outputs.empty() && !options.noOutput) {
+        // RTF 2.x writes a result file unless told not to.
+        options.outputs.push_back(
+            OutputRequest{outputType, outputType == "junit" ? "result.xml" : "result.txt"});
+    }
+    if (options.noOutput) {
+        options.outputs.clear();
+    }
+
+    for (const auto& variable : variables) {
+        std::size_t equal = variable.find('=');
+        if (equal == std::string::npos || equal == 0) {
+            return usageError("--var " + variable + ": expected NAME=VALUE");
+        }
+        options.variables.emplace_back(variable.substr(0, equal), variable.substr(equal + 1));
+    }
+
+    if (options.isolation == "process") {
+        return usageError(
+            "process isolation is not available in this build (use --isolation none)");
+    }
+    if (options.nothingToRun()) {
+        return usageError("nothing to run: give --test, --tests, --suite or --suites");
+    }
+    return result;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

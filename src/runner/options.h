@@ -1,0 +1,56 @@
+// The runner's command line: RTF 2.x options (same names, same meaning) and ours.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace robottestingframework {
+namespace runner {
+
+struct OutputRequest {
+    std::string type;  // "text", "junit"
+    std::string file;
+};
+
+struct Options {
+    std::vector<std::string> tests;      // --test/-t FILE
+    std::vector<std::string> testDirs;   // --tests DIR
+    std::vector<std::string> suites;     // --suite/-s FILE
+    std::vector<std::string> suiteDirs;  // --suites DIR
+    bool recursive = false;              // --recursive/-r: --tests and --suites descend
+    std::string param;                   // --param/-p: for tests without a param of their own
+    std::string environment;             // --environment/-e: appended to the suite's
+    unsigned int repetition = 0;         // --repetition N; 0: not given
+    // --output/-o FILE or TYPE:FILE, with --output-type for the untyped ones. When none is
+    // given, RTF 2.x's default applies: result.txt, unless --no-output.
+    std::vector<OutputRequest> outputs;
+    bool noOutput = false;
+    bool noSummary = false;
+    bool webReporter = false;        // --web-reporter/-w
+    int webPort = 8080;              // --web-port N
+    bool detail = false;             // --detail/-d: every check on the console
+    bool verbose = false;            // --verbose/-v: reports and output on the console
+    std::string isolation = "none";  // --isolation none|process
+    std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
+
+    bool nothingToRun() const {
+        return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();
+    }
+};
+
+struct ParseResult {
+    enum class Outcome { Run, Exit };
+    Outcome outcome = Outcome::Run;
+    int status = 0;    // exit status when outcome is Exit: 0 for --help/--version, 2 for errors
+    std::string text;  // what to print: help/version on stdout, an error on stderr
+};
+
+// The output types this build writes.
+bool isKnownOutputType(const std::string& type);
+
+// Reads argv into `options`. Never exits and never prints: the caller does, from the result.
+ParseResult parseOptions(int argc, const char* const* argv, Options& options);
+
+}  // namespace runner
+}  // namespace robottestingframework

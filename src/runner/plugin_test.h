@@ -1,0 +1,37 @@
+// The runner's stand-in for one test of a suite: what the suite runs and the events are about.
+// The real test case is made by the executor when the stand-in runs (maybe in another process),
+// so nothing outside the executor ever holds a pointer to it.
+#pragma once
+
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestStatus.h>
+
+#include "suite_model.h"
+#include "test_executor.h"
+
+namespace robottestingframework {
+namespace runner {
+
+class PluginTest : public Test {
+public:
+    // `spec` and `executor` must outlive the stand-in.
+    PluginTest(const TestSpec& spec, TestExecutor& executor);
+
+    void run(TestResult& result) override;
+    void interrupt() override;
+    bool succeeded() const override { return !isFailure(status_); }
+
+    const TestSpec& spec() const { return spec_; }
+    TestStatus status() const { return status_; }
+
+    // The name shown before the test case reports its own: name="..." or the plug-in's file.
+    static std::string displayName(const TestSpec& spec);
+
+private:
+    const TestSpec& spec_;
+    TestExecutor& executor_;
+    TestStatus status_ = TestStatus::Passed;
+};
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,71 @@
+#include "run_plan.h"
+
+#include <stdexcept>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+void append(std::string& text, const std::string& more) {
+    if (!more.empty()) {
+        text += (text.empty() ? "" : " ") + more;
+    }
+}
+
+// Stands for a fixture that could not be loaded: its set-up fails with the loader's reason,
+// so the suite reports it and skips its tests like for any fixture that fails.
+class UnloadedFixture : public FixtureManager {
+public:
+    explicit UnloadedFixture(std::string reason) : reason_(std::move(reason)) {}
+    bool setup(int, char**) override { throw std::runtime_error(reason_); }
+
+private:
+    std::string reason_;
+};
+
+}  // namespace
+
+void applyOverrides(SuiteSpec& suite, const Overrides& overrides) {
+    for (auto& test : suite.tests) {
+        if (test.param.empty()) {
+            test.param = overrides.param;
+        }
+        // Suite first, then the test's own, then the command line.
+        std::string environment = suite.environment;
+        append(environment, test.environment);
+        append(environment, overrides.environment);
+        test.environment = environment;
+        if (test.repetition == 0) {
+            test.repetition = overrides.repetition == 0 ? 1 : overrides.repetition;
+        }
+    }
+}
+
+RunPlan::RunPlan(TestExecutor& executor) : executor_(executor) {}
+
+RunPlan::~RunPlan() = default;
+
+void RunPlan::addSuite(SuiteSpec spec) {
+    const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
+    TestSuite& suite = suites_.emplace_back(owned.name);
+    suite.setDescription(owned.description);
+    for (const auto& fixture : owned.fixtures) {
+        std::string error;
+        std::unique_ptr<FixtureManager> manager = executor_.makeFixture(fixture, error);
+        if (!manager) {
+            manager =
+                std::make_unique<UnloadedFixture>("cannot load " + fixture.plugin + ": " + error);
+            manager->setName(fixture.plugin);
+        }
+        suite.addFixtureManager(manager.get());
+        fixtures_.push_back(std::move(manager));
+    }
+    for (const auto& test : owned.tests) {
+        suite.addTest(&tests_.emplace_back(test, executor_));
+    }
+    runner_.addTest(&suite);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

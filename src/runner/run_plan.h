@@ -1,0 +1,55 @@
+// The model turned into something to run: one TestSuite per suite, one stand-in per test, the
+// fixture managers the executor made. Owns them all; the TestRunner it fills only points.
+#pragma once
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/TestRunner.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "plugin_test.h"
+#include "suite_model.h"
+#include "test_executor.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// What the command line says about every test (RTF 2.x's -p, -e, --repetition).
+struct Overrides {
+    std::string param;            // for tests without a param of their own
+    std::string environment;      // appended to the suite's and the test's
+    unsigned int repetition = 0;  // for tests without a repetition of their own; 0: once
+};
+
+// The effective spec of each test of `suite` once the command line is applied.
+void applyOverrides(SuiteSpec& suite, const Overrides& overrides);
+
+class RunPlan {
+public:
+    explicit RunPlan(TestExecutor& executor);
+    ~RunPlan();
+    RunPlan(const RunPlan&) = delete;
+    RunPlan& operator=(const RunPlan&) = delete;
+
+    // Adds a suite to run after the ones already added. Its fixtures are made now; one that
+    // cannot be made fails the suite's set-up with the reason when the suite runs.
+    void addSuite(SuiteSpec spec);
+
+    TestRunner& runner() { return runner_; }
+    std::size_t testCount() const { return tests_.size(); }
+
+private:
+    TestExecutor& executor_;
+    TestRunner runner_;
+    std::deque<SuiteSpec> specs_;  // a deque: the stand-ins point into it
+    std::deque<TestSuite> suites_;
+    std::deque<PluginTest> tests_;
+    std::vector<std::unique_ptr<FixtureManager>> fixtures_;
+};
+
+}  // namespace runner
+}  // namespace robottestingframework

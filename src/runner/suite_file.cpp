@@ -1,0 +1,364 @@
+#include "suite_file.h"
+
+#include <robottestingframework/dll/DllPluginLoader.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <sstream>
+#include <unordered_map>
+
+#include <pugixml.hpp>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+const char* const testTypes[] = {"dll", "python", "lua", "ruby", "exec"};
+const char* const fixtureTypes[] = {"dll", "python", "process"};
+
+std::string trim(const std::string& text) {
+    const char* space = " \t\r\n";
+    std::size_t first = text.find_first_not_of(space);
+    if (first == std::string::npos) {
+        return {};
+    }
+    std::size_t last = text.find_last_not_of(space);
+    return text.substr(first, last - first + 1);
+}
+
+std::string folderOf(const std::string& path) {
+    std::size_t slash = path.rfind('/');
+    if (slash == std::string::npos) {
+        return ".";
+    }
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string stemOf(const std::string& path) {
+    std::size_t slash = path.rfind('/');
+    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    std::size_t dot = name.rfind('.');
+    return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        item = trim(item);
+        if (!item.empty()) {
+            items.push_back(item);
+        }
+    }
+    return items;
+}
+
+template <std::size_t N>
+std::string listOf(const char* const (&names)[N]) {
+    std::string text;
+    for (std::size_t i = 0; i < N; ++i) {
+        text += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(names[i]);
+    }
+    return text;
+}
+
+template <std::size_t N>
+bool isOneOf(const std::string& value, const char* const (&names)[N]) {
+    return std::any_of(std::begin(names), std::end(names),
+                       [&value](const char* name) { return value == name; });
+}
+
+// Reads one suite document; every error names the file and the line of the offending element.
+class SuiteReader {
+public:
+    SuiteReader(const std::string& text, const std::string& path,
+                std::vector<std::string>& warnings)
+        : text_(text), path_(path), folder_(folderOf(path)), warnings_(warnings) {
+        for (std::size_t i = 0; i < text_.size(); ++i) {
+            if (text_[i] == '\n') {
+                newlines_.push_back(i);
+            }
+        }
+    }
+
+    SuiteSpec read() {
+        pugi::xml_document document;
+        pugi::xml_parse_result parsed = document.load_buffer(
+            text_.data(), text_.size(), pugi::parse_default, pugi::encoding_auto);
+        if (!parsed) {
+            fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
+        }
+        pugi::xml_node root;
+        for (pugi::xml_node node : document.children()) {
+            if (node.type() == pugi::node_element) {
+                if (root) {
+                    fail(node, "a second root element <" + std::string(node.name()) +
+                                   ">; a suite file holds one <suite>");
+                }
+                root = node;
+            } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+                fail(node, "text outside the <suite> element");
+            }
+        }
+        if (!root) {
+            fail(text_.size(), "no root element; expected <suite name=\"...\">");
+        }
+        SuiteSpec suite = readSuite(root);
+        suite.tests.shrink_to_fit();
+        return suite;
+    }
+
+private:
+    unsigned int lineAt(std::ptrdiff_t offset) const {
+        if (offset < 0) {
+            offset = 0;
+        }
+        auto before =
+            std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset));
+        return static_cast<unsigned int>(before - newlines_.begin()) + 1;
+    }
+
+    SourceLocation where(pugi::xml_node node) const {
+        return SourceLocation{path_, lineAt(node.offset_debug())};
+    }
+
+    [[noreturn]] void fail(std::ptrdiff_t offset, const std::string& what) const {
+        throw SuiteFileError(path_ + ":" + std::to_string(lineAt(offset)) + ": " + what);
+    }
+    [[noreturn]] void fail(pugi::xml_node node, const std::string& what) const {
+        fail(node.offset_debug(), what);
+    }
+
+    void checkAttributes(pugi::xml_node node, std::initializer_list<const char*> allowed) const {
+        for (pugi::xml_attribute attribute : node.attributes()) {
+            bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* name) {
+                return std::strcmp(name, attribute.name()) == 0;
+            });
+            if (!known) {
+                std::string expected;
+                for (const char* name : allowed) {
+                    expected += (expected.empty() ? "" : ", ") + std::string(name);
+                }
+                fail(node,
+                     "unknown attribute '" + std::string(attribute.name()) + "' on <" +
+                         node.name() + ">" +
+                         (expected.empty() ? " (it takes none)" : " (expected " + expected + ")"));
+            }
+        }
+    }
+
+    // The element's text, trimmed; it may hold nothing but text.
+    std::string textOf(pugi::xml_node node) const {
+        std::string text;
+        for (pugi::xml_node child : node.children()) {
+            if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+                text += child.value();
+            } else if (child.type() == pugi::node_element) {
+                fail(child, "<" + std::string(child.name()) + "> inside <" + node.name() + ">; <" +
+                                node.name() + "> holds only text");
+            }
+        }
+        return trim(text);
+    }
+
+    std::string pluginOf(pugi::xml_node node) const {
+        std::string plugin = textOf(node);
+        if (plugin.empty()) {
+            fail(node, "<" + std::string(node.name()) +
+                           "> without a plug-in; write its file name as the element's text, "
+                           "e.g. <" +
+                           node.name() + ">libmytest.so</" + node.name() + ">");
+        }
+        return plugin;
+    }
+
+    unsigned int repetitionOf(pugi::xml_node node, pugi::xml_attribute attribute) const {
+        std::string value = trim(attribute.value());
+        bool digits = !value.empty() && std::all_of(value.begin(), value.end(),
+                                                    [](char c) { return c >= '0' && c <= '9'; });
+        unsigned long number = 0;
+        if (digits) {
+            errno = 0;
+            number = std::strtoul(value.c_str(), nullptr, 10);
+        }
+        if (!digits || errno == ERANGE || number == 0 || number > 1000000000UL) {
+            fail(node, "repetition=\"" + std::string(attribute.value()) +
+                           "\" is not a whole number of runs >= 1 (e.g. repetition=\"3\")");
+        }
+        return static_cast<unsigned int>(number);
+    }
+
+    double secondsOf(pugi::xml_node node, const std::string& text, const std::string& what) const {
+        std::string value = trim(text);
+        char* end = nullptr;
+        double seconds = value.empty() ? -1 : std::strtod(value.c_str(), &end);
+        if (value.empty() || end == nullptr || *end != '\0' || !std::isfinite(seconds) ||
+            seconds < 0) {
+            fail(node, what + " \"" + text +
+                           "\" is not a number of seconds >= 0 (e.g. 30 or 2.5; 0 for none)");
+        }
+        return seconds;
+    }
+
+    std::string typeOf(pugi::xml_node node, const char* const* begin, const char* const* end,
+                       const std::string& expected) const {
+        pugi::xml_attribute attribute = node.attribute("type");
+        if (!attribute) {
+            return {};
+        }
+        std::string type = trim(attribute.value());
+        if (std::find_if(begin, end, [&type](const char* name) { return type == name; }) == end) {
+            fail(node, "unknown " + std::string(node.name()) + " type '" + type + "' (expected " +
+                           expected + ")");
+        }
+        return type;
+    }
+
+    // Suites often list one plug-in many times: look each name up once.
+    std::string resolve(const std::string& plugin) const {
+        auto known = resolved_.find(plugin);
+        if (known != resolved_.end()) {
+            return known->second;
+        }
+        return resolved_[plugin] = plugin::findPlugin(plugin, folder_);
+    }
+
+    SuiteSpec readSuite(pugi::xml_node root) {
+        std::string rootName = root.name();
+        if (rootName == "suit") {
+            warnings_.push_back(where(root).toString() +
+                                ": warning: the root element <suit> is the old spelling of "
+                                "<suite>; it is read the same way");
+        } else if (rootName != "suite") {
+            fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
+        }
+        checkAttributes(root, {"name"});
+
+        SuiteSpec suite;
+        suite.where = where(root);
+        suite.name = trim(root.attribute("name").value());
+        if (suite.name.empty()) {
+            suite.name = stemOf(path_);
+        }
+        bool haveDescription = false;
+        bool haveEnvironment = false;
+        bool haveTimeout = false;
+        auto once = [this](pugi::xml_node node, bool& seen) {
+            if (seen) {
+                fail(node, "<" + std::string(node.name()) + "> given twice; a suite has one");
+            }
+            seen = true;
+        };
+
+        for (pugi::xml_node node : root.children()) {
+            if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+                fail(node, "text \"" + trim(node.value()) +
+                               "\" directly inside <suite>; put plug-ins in <test> elements");
+            }
+            if (node.type() != pugi::node_element) {
+                continue;
+            }
+            std::string name = node.name();
+            if (name == "description") {
+                once(node, haveDescription);
+                checkAttributes(node, {});
+                suite.description = textOf(node);
+            } else if (name == "environment") {
+                once(node, haveEnvironment);
+                checkAttributes(node, {});
+                suite.environment = textOf(node);
+            } else if (name == "timeout") {
+                once(node, haveTimeout);
+                checkAttributes(node, {});
+                suite.timeout = secondsOf(node, textOf(node), "<timeout>");
+            } else if (name == "fixture") {
+                suite.fixtures.push_back(readFixture(node));
+            } else if (name == "test") {
+                suite.tests.push_back(readTest(node));
+            } else {
+                fail(node, "unknown element <" + name +
+                               "> (expected description, environment, timeout, fixture or "
+                               "test)");
+            }
+        }
+        return suite;
+    }
+
+    FixtureSpec readFixture(pugi::xml_node node) const {
+        checkAttributes(node, {"param", "type"});
+        FixtureSpec fixture;
+        fixture.where = where(node);
+        fixture.plugin = pluginOf(node);
+        fixture.type =
+            typeOf(node, std::begin(fixtureTypes), std::end(fixtureTypes), listOf(fixtureTypes));
+        fixture.param = node.attribute("param").value();
+        fixture.path = resolve(fixture.plugin);
+        return fixture;
+    }
+
+    TestSpec readTest(pugi::xml_node node) const {
+        checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
+                               "depends", "tags"});
+        TestSpec test;
+        test.where = where(node);
+        test.plugin = pluginOf(node);
+        test.type = typeOf(node, std::begin(testTypes), std::end(testTypes), listOf(testTypes));
+        test.param = node.attribute("param").value();
+        test.environment = node.attribute("environment").value();
+        test.name = trim(node.attribute("name").value());
+        if (pugi::xml_attribute repetition = node.attribute("repetition")) {
+            test.repetition = repetitionOf(node, repetition);
+        } else {
+            test.repetition = 0;  // not given: the command line or the default decides
+        }
+        if (pugi::xml_attribute timeout = node.attribute("timeout")) {
+            test.timeout = secondsOf(node, timeout.value(), "timeout");
+        }
+        test.depends = splitList(node.attribute("depends").value());
+        test.tags = splitList(node.attribute("tags").value());
+        test.path = resolve(test.plugin);
+        return test;
+    }
+
+    const std::string& text_;
+    std::string path_;
+    std::string folder_;
+    std::vector<std::string>& warnings_;
+    std::vector<std::size_t> newlines_;
+    mutable std::unordered_map<std::string, std::string> resolved_;
+};
+
+}  // namespace
+
+SuiteSpec parseSuite(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings) {
+    return SuiteReader(text, path, warnings).read();
+}
+
+SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings) {
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored)) {
+        throw SuiteFileError(path + ": is a folder, not a suite file (use --suites for folders)");
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw SuiteFileError(path + ": cannot read the suite file (" + std::strerror(errno) + ")");
+    }
+    std::ostringstream content;
+    content << in.rdbuf();
+    if (in.bad()) {
+        throw SuiteFileError(path + ": cannot read the suite file");
+    }
+    return parseSuite(content.str(), path, warnings);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

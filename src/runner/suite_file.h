@@ -1,0 +1,31 @@
+// Reading a suite file (SPEC 2, "Suite files") into a SuiteSpec. Strict: anything the runner
+// would not understand is an error naming the file and line, never silently ignored.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "suite_model.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// what() is "FILE:LINE: what was wrong and what was expected".
+class SuiteFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Reads and checks `path`. Plug-in names are resolved next to the suite file, then on the
+// library search path (TestSpec::path stays empty when not found: the test then fails to load).
+// Non-fatal remarks (the old `suit` root) are appended to `warnings`.
+SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings);
+
+// The same from text already read; `path` names it in messages and gives the folder plug-ins
+// are looked for in.
+SuiteSpec parseSuite(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings);
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,318 @@
+"""The built-in process fixture through the real runner: readiness of every kind, dependencies,
+deadlines, collapse, failing fixtures, long names, Ctrl-C and SIGKILL. After each test no
+process of the run is left (each run marks its processes with an environment variable)."""
+import os
+import re
+import shlex
+import signal
+import socket
+import subprocess
+import sys
+import time
+import uuid
+from pathlib import Path
+
+import pytest
+
+from conftest import RUNNER, plugin, run_runner, validate_junit
+
+ACTOR = Path(__file__).parent / "world" / "actor.py"
+PYTHON = "/usr/bin/python3"
+MARK = "RTF_E2E_PROCESS_FIXTURE"
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def marked(mark):
+    """Pids of the live processes carrying MARK=mark."""
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                state = f.read().rsplit(")", 1)[1].split()[0]
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                env = f.read().split(b"\0")
+        except OSError:
+            continue
+        if state != "Z" and f"{MARK}={mark}".encode() in env:
+            found.append(int(entry))
+    return found
+
+
+def wait_until(condition, timeout=10):
+    end = time.monotonic() + timeout
+    while time.monotonic() < end:
+        if condition():
+            return True
+        time.sleep(0.02)
+    return condition()
+
+
+@pytest.fixture
+def mark():
+    """A unique mark for this test's run; afterwards nothing may carry it."""
+    value = uuid.uuid4().hex
+    yield value
+    left = marked(value)
+    for pid in left:
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+    assert not left, f"processes left behind: {left}"
+
+
+def actor(*args):
+    """The command line of the test server, quoted for the world file's command splitting."""
+    return " ".join(shlex.quote(str(word)) for word in [PYTHON, ACTOR, *args])
+
+
+def world(tmp_path, processes, name="world.xml"):
+    path = tmp_path / name
+    path.write_text(f'<world name="e2e" logdir="logs">\n{processes}\n</world>\n')
+    return path
+
+
+def suite(tmp_path, fixtures, tests=None, name="suite.xml"):
+    tests = tests if tests is not None else [plugin("passing_test")]
+    text = '<suite name="process world">\n' + "\n".join(fixtures) + "\n" + "\n".join(
+        f"<test>{t}</test>" for t in tests) + "\n</suite>\n"
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def process_fixture(world_path, param=""):
+    return f'<fixture type="process" param="{param}">{world_path}</fixture>'
+
+
+def run(mark, *args, **kwargs):
+    return run_runner(*args, env={MARK: mark}, **kwargs)
+
+
+def sleeper(tmp_path, seconds):
+    """An exec test that takes `seconds`."""
+    path = tmp_path / f"sleep_{seconds}.sh"
+    path.write_text(f"#!/bin/sh\nsleep {seconds}\n")
+    path.chmod(0o755)
+    return path
+
+
+# --- Readiness of every kind -------------------------------------------------------------------
+
+def test_ready_by_port_of_a_real_http_server(tmp_path, mark):
+    port = free_port()
+    w = world(tmp_path, f"""
+  <process name="web" command="{PYTHON} -m http.server --bind 127.0.0.1 {port}">
+    <ready timeout="10s"><port>{port}</port></ready>
+  </process>""")
+    r = run(mark, "-v", "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
+    assert r.returncode == 0, r
+    assert f"starting 'web': {PYTHON} -m http.server --bind 127.0.0.1 {port}" in r.output, r
+    assert f"waiting for 'web'" in r.output and f"TCP port 127.0.0.1:{port}" in r.output, r
+    assert re.search(r"'web' is ready after \d+", r.output), r
+    assert "stopping 'web'" in r.output, r
+    assert (tmp_path / "logs" / "web.log").exists()
+
+
+@pytest.mark.parametrize("kind", ["output", "file", "probe", "delay"])
+def test_ready_by_each_kind_of_check(tmp_path, mark, kind):
+    flag = tmp_path / "up.flag"
+    checks = {
+        "output": "<output>^calibration done in \\d+ ms$</output>",
+        "file": f"<file>{flag.name}</file>",
+        "probe": f'<probe interval="20ms">test -e {flag}</probe>',
+        "delay": "<delay>600ms</delay>",
+    }
+    w = world(tmp_path, f"""
+  <process name="robot" command="{actor('--sleep', 0.4, '--touch', flag,
+                                         '--say', 'calibration done in 400 ms')}">
+    <ready timeout="10s">{checks[kind]}</ready>
+  </process>""")
+    r = run(mark, "-v", "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
+    assert r.returncode == 0, r
+    took = re.search(r"'robot' is ready after (\d+) ms", r.output)
+    assert took, r
+    assert int(took.group(1)) >= 400 if kind != "delay" else int(took.group(1)) >= 600, r
+    assert int(took.group(1)) < 3000, r
+
+
+def test_a_chain_of_three_starts_each_after_the_one_it_depends_on(tmp_path, mark):
+    port = free_port()
+    # Written out of order: the dependencies decide, and each fails unless its
+    # dependency was ready (its file exists) when it started.
+    w = world(tmp_path, f"""
+  <process name="robot" depends="middleware">
+    <command>{actor('--require', 'middleware.ready', '--say', 'robot up')}</command>
+    <ready><output>robot up</output></ready>
+  </process>
+  <process name="simulator">
+    <command>{actor('--sleep', 0.3, '--listen', port, '--touch', 'simulator.ready')}</command>
+    <ready><port>{port}</port></ready>
+  </process>
+  <process name="middleware" depends="simulator">
+    <command>{actor('--require', 'simulator.ready', '--sleep', 0.2,
+                    '--touch', 'middleware.ready')}</command>
+    <ready><file>middleware.ready</file></ready>
+  </process>""")
+    r = run(mark, "-v", "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
+    assert r.returncode == 0, r
+    started = re.findall(r"starting '(\w+)'", r.output)
+    stopped = re.findall(r"stopping '(\w+)'", r.output)
+    assert started == ["simulator", "middleware", "robot"], r
+    assert stopped == ["robot", "middleware", "simulator"], r
+
+
+# --- Failures ----------------------------------------------------------------------------------
+
+def test_a_process_that_never_becomes_ready_fails_the_suite_with_the_deadline(tmp_path, mark):
+    w = world(tmp_path, f"""
+  <process name="stuck" command="{actor('--say', 'waiting for the hardware')}">
+    <ready timeout="700ms"><output>^ready$</output></ready>
+  </process>""")
+    junit = tmp_path / "out.xml"
+    # No --verbose: the failure alone must tell the whole story.
+    r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), "-o", junit,
+            "--output-type", "junit", cwd=tmp_path)
+    assert r.returncode == 1, r
+    assert ("process 'stuck' did not become ready: a line of output matching '^ready$' did not "
+            "happen within 700 ms") in r.output, r
+    assert "waiting for the hardware" in r.output, r       # its last lines
+    assert str(tmp_path / "logs" / "stuck.log") in r.output, r
+    assert re.search(r"skipped\s+PassingTest", r.output), r
+    text = junit.read_text()
+    assert "did not become ready" in text
+    validate_junit(junit)
+
+
+def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, mark):
+    w = world(tmp_path, f"""
+  <process name="motor driver" command="{actor('--say', 'ready', '--die-after', 0.5,
+                                                '--status', 5)}">
+    <ready><output>ready</output></ready>
+  </process>""")
+    junit = tmp_path / "out.xml"
+    s = suite(tmp_path, [process_fixture(w)],
+              [sleeper(tmp_path, 3), plugin("passing_test"), plugin("passing_test")])
+    began = time.monotonic()
+    r = run(mark, "-s", s, "-o", junit, "--output-type", "junit", cwd=tmp_path)
+    assert r.returncode == 1, r
+    assert time.monotonic() - began < 10, r
+    reason = "process 'motor driver' exited with status 5"
+    assert reason in r.output, r
+    assert "lost contact with the motors" in r.output, r
+    assert len(re.findall(r"skipped\s+PassingTest", r.output)) == 2, r
+    text = junit.read_text()
+    assert text.count(reason) >= 2, text   # at least on each skipped test
+    validate_junit(junit)
+
+
+def test_a_failing_fixture_plugin_after_the_world_takes_the_world_down(tmp_path, mark):
+    w = world(tmp_path, f"""
+  <process name="broker" command="{actor('--say', 'ready')}">
+    <ready><output>ready</output></ready>
+  </process>""")
+    log = tmp_path / "order.log"
+    failing = (f'<fixture param="--log {log} --name B --fail-setup">'
+               f'{plugin("order_fixture")}</fixture>')
+    r = run(mark, "-v", "-s", suite(tmp_path, [process_fixture(w), failing]), cwd=tmp_path)
+    assert r.returncode == 1, r
+    assert "'broker' is ready" in r.output, r
+    assert "stopping 'broker'" in r.output, r
+    assert re.search(r"skipped\s+PassingTest", r.output), r
+
+
+def test_a_bad_world_file_names_file_and_line(tmp_path, mark):
+    w = world(tmp_path, """
+  <process name="a" command="true"/>
+  <process name="b" depends="c" command="true"/>""")
+    r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
+    assert r.returncode == 1, r
+    assert f"{w}:3: process 'b' depends on 'c', which is not a process of this world" \
+        in r.output, r
+
+
+# --- Names, signals ----------------------------------------------------------------------------
+
+def test_a_200_character_application_and_process_name(tmp_path, mark):
+    name = "robot-interface-" + "x" * 184
+    assert len(name) == 200
+    program = tmp_path / ("app-" + "y" * 196)   # a 200-character program name too
+    program.write_text(f"#!/bin/sh\nexec {PYTHON} {ACTOR} \"$@\"\n")
+    program.chmod(0o755)
+    w = world(tmp_path, f"""
+  <process name="{name}">
+    <command><arg>./{program.name}</arg><arg>--say</arg><arg>ready</arg>
+             <arg>--die-after</arg><arg>0.5</arg></command>
+    <ready><output>ready</output></ready>
+  </process>""")
+    s = suite(tmp_path, [process_fixture(w)], [sleeper(tmp_path, 3), plugin("passing_test")])
+    r = run(mark, "-v", "-s", s, cwd=tmp_path)
+    assert r.returncode == 1, r
+    assert f"'{name}' is ready" in r.output, r
+    assert f"process '{name}' exited with status 3" in r.output, r
+
+
+def test_sigint_during_setup_stops_the_world(tmp_path, mark):
+    port = free_port()
+    w = world(tmp_path, f"""
+  <process name="up" command="{actor('--listen', port)}">
+    <ready><port>{port}</port></ready>
+  </process>
+  <process name="slow" depends="up" command="{actor('--say', 'booting')}">
+    <ready timeout="60s"><output>^never$</output></ready>
+  </process>""")
+    s = suite(tmp_path, [process_fixture(w)])
+    proc = subprocess.Popen([RUNNER, "-s", str(s)], cwd=tmp_path, env={**os.environ, MARK: mark},
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True)
+    try:
+        # Both processes of the world run: the runner is inside the fixture's setup.
+        assert wait_until(lambda: len(marked(mark)) >= 3), "the world did not start"
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.communicate()
+    assert proc.returncode != 0, out + err
+    assert wait_until(lambda: not marked(mark), 5), f"left: {marked(mark)}\n{out}\n{err}"
+
+
+@pytest.mark.parametrize("isolation", ["none", "default"])
+def test_sigkill_of_the_runner_leaves_no_process(tmp_path, mark, isolation):
+    w = world(tmp_path, f"""
+  <process name="broker" command="{actor('--say', 'ready', '--orphan')}">
+    <ready><output>ready</output></ready>
+  </process>""")
+    s = suite(tmp_path, [process_fixture(w)], [sleeper(tmp_path, 30)])
+    args = [RUNNER, "-s", str(s)] + (["--isolation", isolation] if isolation != "default" else [])
+    proc = subprocess.Popen(args, cwd=tmp_path, env={**os.environ, MARK: mark},
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    try:
+        # Runner, actor, its orphan and the sleeping test.
+        assert wait_until(lambda: len(marked(mark)) >= 4), "the world did not start"
+        world_pids = set(marked(mark)) - {proc.pid}
+        proc.kill()
+        proc.wait(timeout=10)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.wait()
+    survivors = lambda: [p for p in marked(mark) if p in world_pids]  # noqa: E731
+    gone = wait_until(lambda: not survivors(), 5)
+    if not gone and isolation == "none":
+        # Documented residual risk: in --isolation none a grandchild that left its process
+        # group (setsid) is not killed when the runner is SIGKILLed. Clean up and tell.
+        left = survivors()
+        for pid in left:
+            os.kill(pid, signal.SIGKILL)
+        pytest.xfail(f"--isolation none: {len(left)} escaped grandchild(ren) outlived a SIGKILL "
+                     "of the runner (docs/process-fixture.md)")
+    assert gone, f"left behind: {survivors()}"

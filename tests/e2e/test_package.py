@@ -1,0 +1,151 @@
+"""The CMake package and pkg-config file, used the way another project uses them: install the
+build tree into a prefix, check the layout, then build and run an external project
+(external_project/) against the install tree and against the build tree."""
+import os
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from conftest import BUILD_DIR, SOURCE_DIR
+
+EXTERNAL = Path(__file__).parent / "external_project"
+
+
+def run(args, timeout, env=None, cwd=None):
+    full_env = dict(os.environ)
+    full_env.update(env or {})
+    result = subprocess.run([str(a) for a in args], capture_output=True, text=True,
+                            timeout=timeout, env=full_env, cwd=cwd)
+    return result
+
+
+def check(args, timeout=300, **kwargs):
+    result = run(args, timeout, **kwargs)
+    assert result.returncode == 0, f"{args}\n{result.stdout}\n{result.stderr}"
+    return result
+
+
+def cache_value(name, default):
+    for line in (BUILD_DIR / "CMakeCache.txt").read_text().splitlines():
+        if line.startswith(name + ":"):
+            return line.split("=", 1)[1]
+    return default
+
+
+LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
+
+
+@pytest.fixture(scope="module")
+def prefix(tmp_path_factory):
+    """The build tree installed into a fresh prefix (under the build tree)."""
+    prefix = tmp_path_factory.mktemp("prefix")
+    check(["cmake", "--install", BUILD_DIR, "--prefix", prefix])
+    return prefix
+
+
+def configure_and_build(build, package_option):
+    generator = ["-G", "Ninja"] if shutil.which("ninja") else []
+    check(["cmake", "-S", EXTERNAL, "-B", build, *generator, package_option,
+           "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"], timeout=120)
+    check(["cmake", "--build", build], timeout=300)
+    values = dict(line.split("=", 1) for line in
+                  (build / "package.txt").read_text().splitlines() if "=" in line)
+    return values
+
+
+def plugin_file(build):
+    return build / "libanswer_test.so"
+
+
+def run_external(build, runner, package_dir):
+    """Builds nothing; runs what configure_and_build built, through `runner`."""
+    right = run([runner, "--test", plugin_file(build), "--param", "--answer 42", "--no-output"],
+                60)
+    assert right.returncode == 0, right.stdout + right.stderr
+    wrong = run([runner, "--test", plugin_file(build), "--param", "--answer 41", "--no-output"],
+                60)
+    assert wrong.returncode == 1, wrong.stdout + wrong.stderr
+
+    own = run([build / "own_main"], 60)
+    assert own.returncode == 0, own.stdout + own.stderr
+
+    tests = check(["ctest", "--test-dir", build, "--output-on-failure", "--timeout", "120"],
+                  timeout=300)
+    assert "100% tests passed" in tests.stdout, tests.stdout
+    assert "answer.right" in tests.stdout and "answer.wrong" in tests.stdout
+    assert (build / "answer-junit.xml").is_file(), "the JUNIT option wrote no report"
+
+
+def test_install_layout(prefix):
+    expected = [
+        "include/robottestingframework/TestCase.h",
+        "include/robottestingframework/TestAssert.h",
+        "include/robottestingframework/dll/Plugin.h",
+        f"{LIBDIR}/libRobotTestingFramework.so",
+        f"{LIBDIR}/libRobotTestingFrameworkDll.so",
+        "bin/robottestingframework-testrunner",
+        f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkConfig.cmake",
+        f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkConfigVersion.cmake",
+        f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkTargets.cmake",
+        f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkCTest.cmake",
+        f"{LIBDIR}/pkgconfig/robottestingframework.pc",
+    ]
+    missing = [path for path in expected if not (prefix / path).exists()]
+    assert not missing, f"missing from the install tree: {missing}"
+    # Every public header of the source tree is installed.
+    headers = SOURCE_DIR / "include" / "robottestingframework"
+    for header in headers.rglob("*.h"):
+        assert (prefix / "include" / "robottestingframework" /
+                header.relative_to(headers)).is_file(), header
+
+
+def test_installed_runner_uses_installed_libraries(prefix):
+    runner = prefix / "bin" / "robottestingframework-testrunner"
+    ldd = check(["ldd", runner], timeout=30).stdout
+    assert "not found" not in ldd, ldd
+    line = next(l for l in ldd.splitlines() if "libRobotTestingFramework.so" in l)
+    found = Path(line.split("=>")[1].split("(")[0].strip())
+    assert found.resolve().parent == (prefix / LIBDIR).resolve(), line
+    version = check([runner, "--version"], timeout=30)
+    assert re.search(r"\b3\.\d+\.\d+", version.stdout + version.stderr), version.stdout
+
+
+def test_external_project_against_install_tree(prefix, tmp_path):
+    build = tmp_path / "external"
+    values = configure_and_build(build, f"-DCMAKE_PREFIX_PATH={prefix}")
+    package_dir = prefix / LIBDIR / "cmake" / "RobotTestingFramework"
+    assert Path(values["dir"]).resolve() == package_dir.resolve(), values
+    runner = prefix / "bin" / "robottestingframework-testrunner"
+    assert Path(values["runner"]).resolve() == runner.resolve(), values
+    assert values["version"].startswith("3."), values
+    run_external(build, runner, package_dir)
+
+
+def test_external_project_against_build_tree(tmp_path):
+    build = tmp_path / "external"
+    values = configure_and_build(build, f"-DRobotTestingFramework_DIR={BUILD_DIR}")
+    assert Path(values["dir"]).resolve() == BUILD_DIR.resolve(), values
+    runner = Path(values["runner"])
+    assert runner.resolve() == (BUILD_DIR / "bin" / "robottestingframework-testrunner").resolve()
+    run_external(build, runner, BUILD_DIR)
+
+
+def test_pkg_config(prefix, tmp_path):
+    env = {"PKG_CONFIG_PATH": str(prefix / LIBDIR / "pkgconfig")}
+    flags = check(["pkg-config", "--cflags", "--libs", "robottestingframework"], timeout=30,
+                  env=env).stdout.split()
+    assert "-lRobotTestingFramework" in flags and "-lRobotTestingFrameworkDll" in flags, flags
+    includes = [Path(f[2:]).resolve() for f in flags if f.startswith("-I")]
+    assert (prefix / "include").resolve() in includes, flags
+    version = check(["pkg-config", "--modversion", "robottestingframework"], timeout=30,
+                    env=env).stdout.strip()
+    assert version.startswith("3."), version
+
+    # The flags are enough to build and link a program.
+    program = tmp_path / "own_main"
+    check(["c++", "-std=c++17", EXTERNAL / "own_main.cpp", "-o", program, *flags], timeout=120)
+    result = run([program], 60, env={"LD_LIBRARY_PATH": str(prefix / LIBDIR)})
+    assert result.returncode == 0, result.stdout + result.stderr

@@ -1,0 +1,93 @@
+"""Result files: text and JUnit (valid against the Jenkins schema), what tests print."""
+import xml.etree.ElementTree as ET
+
+from conftest import plugin, run_runner, validate_junit
+
+
+def test_default_output_is_result_txt_unless_no_output(tmp_path):
+    run = run_runner("-t", plugin("passing_test"), cwd=tmp_path)
+    assert run.returncode == 0, run
+    text = (tmp_path / "result.txt").read_text()
+    assert "PassingTest" in text and "1 passed, 0 failed" in text, text
+
+    other = tmp_path / "quiet"
+    other.mkdir()
+    run = run_runner("-t", plugin("passing_test"), "--no-output", cwd=other)
+    assert run.returncode == 0, run
+    assert list(other.iterdir()) == [], list(other.iterdir())
+
+
+def test_text_output_and_no_summary(tmp_path):
+    out = tmp_path / "out.txt"
+    run = run_runner("-t", plugin("failing_test"), "-o", out, "--output-type", "text",
+                     cwd=tmp_path)
+    assert run.returncode == 1, run
+    text = out.read_text()
+    assert "FailingTest" in text and "two and two make five" in text, text
+    assert "0 passed, 1 failed" in text, text
+
+    bare = tmp_path / "bare.txt"
+    run = run_runner("-t", plugin("failing_test"), "-o", bare, "--no-summary", cwd=tmp_path)
+    assert run.returncode == 1, run
+    assert "FailingTest" in bare.read_text(), bare.read_text()
+    assert "Summary" not in bare.read_text(), bare.read_text()
+
+
+def test_junit_output_validates_and_carries_failures_and_output(tmp_path):
+    out = tmp_path / "results.xml"
+    run = run_runner("-t", plugin("passing_test"), "-t", plugin("failing_test"),
+                     "-t", plugin("printing_test"), "-t", plugin("nasty_text_test"),
+                     "-o", f"junit:{out}", cwd=tmp_path)
+    assert run.returncode == 1, run
+    validate_junit(out)
+    root = ET.parse(out).getroot()
+    cases = {case.get("name"): case for case in root.iter("testcase")}
+    assert set(cases) >= {"PassingTest", "FailingTest", "PrintingTest"}, cases.keys()
+    assert cases["FailingTest"].find("failure") is not None
+    assert cases["PassingTest"].find("failure") is None
+    printed = cases["PrintingTest"].findtext("system-out") or ""
+    assert "printf line from the test" in printed, printed
+    assert "iostream line from the test" in printed, printed
+    nasty = next(case for name, case in cases.items() if name.startswith("NastyTextTest"))
+    assert nasty.find("failure") is not None
+    # What the test printed did not reach the console.
+    assert "printf line from the test" not in run.stdout, run
+
+
+def test_output_type_junit_with_plain_file_name(tmp_path):
+    out = tmp_path / "r.xml"
+    run = run_runner("-t", plugin("passing_test"), "--output", out, "--output-type", "junit",
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    validate_junit(out)
+
+
+def test_several_outputs_at_once(tmp_path):
+    run = run_runner("-t", plugin("passing_test"), "-o", "junit:a.xml", "-o", "text:b.txt",
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    validate_junit(tmp_path / "a.xml")
+    assert "PassingTest" in (tmp_path / "b.txt").read_text()
+
+
+def test_verbose_console_shows_what_the_test_printed(tmp_path):
+    run = run_runner("-t", plugin("printing_test"), "-v", cwd=tmp_path)
+    assert run.returncode == 0, run
+    assert "printf line from the test" in run.stdout, run
+    assert "stderr line from the test" in run.stdout, run
+
+
+def test_unwritable_output_is_reported_and_exits_two(tmp_path):
+    run = run_runner("-t", plugin("passing_test"), "-o", tmp_path / "no" / "such" / "dir.txt",
+                     cwd=tmp_path)
+    assert run.returncode == 2, run
+    assert "cannot write the text output" in run.stderr, run
+
+
+def test_no_summary_keeps_the_closing_line_on_the_console(tmp_path):
+    full = run_runner("-t", plugin("passing_test"), "--no-output", cwd=tmp_path)
+    assert "Summary" in full.stdout, full
+    bare = run_runner("-t", plugin("passing_test"), "--no-output", "--no-summary", cwd=tmp_path)
+    assert bare.returncode == 0, bare
+    assert "Summary" not in bare.stdout, bare
+    assert bare.stdout.rstrip().splitlines()[-1] == "1 passed, 0 failed", bare

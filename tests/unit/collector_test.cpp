@@ -1,0 +1,216 @@
+#include <gtest/gtest.h>
+
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "core_test_helpers.h"
+
+using namespace rtf_test;
+
+namespace {
+
+class Named : public Test {
+public:
+    explicit Named(std::string name) : Test(std::move(name)) {}
+    void run(TestResult&) override {}
+    bool succeeded() const override { return true; }
+};
+
+// Sends one test with the given outcome events to the collector.
+void oneTest(TestResultCollector& c, const Test& t,
+             std::initializer_list<ResultEvent::Kind> outcomes) {
+    using Kind = ResultEvent::Kind;
+    c.startTest(&t);
+    for (Kind kind : outcomes) {
+        const TestMessage msg(std::string(toString(kind)) + " message");
+        switch (kind) {
+            case Kind::Failure:
+                c.addFailure(&t, msg);
+                break;
+            case Kind::Error:
+                c.addError(&t, msg);
+                break;
+            case Kind::Crash:
+                c.addCrash(&t, msg);
+                break;
+            case Kind::Timeout:
+                c.addTimeout(&t, msg);
+                break;
+            case Kind::Interrupted:
+                c.addInterrupted(&t, msg);
+                break;
+            case Kind::Skipped:
+                c.addSkipped(&t, msg);
+                break;
+            case Kind::Report:
+                c.addReport(&t, msg);
+                break;
+            default:
+                break;
+        }
+    }
+    c.endTest(&t);
+}
+
+TestStatus statusOf(std::initializer_list<ResultEvent::Kind> outcomes) {
+    TestResultCollector c;
+    Named t("t");
+    oneTest(c, t, outcomes);
+    return c.suites().at(0).tests.at(0).status;
+}
+
+}  // namespace
+
+using Kind = ResultEvent::Kind;
+
+TEST(TestResultCollector, StatusIsTheHighestOutcome) {
+    EXPECT_EQ(statusOf({}), TestStatus::Passed);
+    EXPECT_EQ(statusOf({Kind::Report}), TestStatus::Passed);
+    EXPECT_EQ(statusOf({Kind::Skipped}), TestStatus::Skipped);
+    EXPECT_EQ(statusOf({Kind::Skipped, Kind::Failure}), TestStatus::Failed);
+    EXPECT_EQ(statusOf({Kind::Failure, Kind::Error}), TestStatus::Error);
+    EXPECT_EQ(statusOf({Kind::Error, Kind::Crash}), TestStatus::Crashed);
+    EXPECT_EQ(statusOf({Kind::Crash, Kind::Timeout}), TestStatus::TimedOut);
+    EXPECT_EQ(statusOf({Kind::Timeout, Kind::Interrupted, Kind::Failure}), TestStatus::Interrupted);
+}
+
+TEST(TestResultCollector, ReasonIsTheFirstEventOfTheDecidingKind) {
+    TestResultCollector c;
+    Named t("t");
+    c.startTest(&t);
+    c.addFailure(&t, TestMessage("f1"));
+    c.addError(&t, TestMessage("e1"));
+    c.addError(&t, TestMessage("e2"));
+    c.endTest(&t);
+    EXPECT_EQ(c.suites()[0].tests[0].reason()->message.getMessage(), "e1");
+}
+
+TEST(TestResultCollector, CountsEveryState) {
+    TestResultCollector c;
+    Named a("a"), b("b"), d("d"), e("e"), f("f");
+    oneTest(c, a, {});
+    oneTest(c, b, {Kind::Failure});
+    oneTest(c, d, {Kind::Skipped});
+    oneTest(c, e, {Kind::Crash});
+    oneTest(c, f, {Kind::Timeout});
+    EXPECT_EQ(c.testCount(), 5u);
+    EXPECT_EQ(c.passedCount(), 1u);
+    EXPECT_EQ(c.failedCount(), 3u);
+    EXPECT_EQ(c.skippedCount(), 1u);
+    EXPECT_EQ(c.countOf(TestStatus::Crashed), 1u);
+}
+
+TEST(TestResultCollector, TestsOutsideASuiteGoToAnUnnamedSuiteRecord) {
+    TestResultCollector c;
+    Named a("a");
+    oneTest(c, a, {});
+    ASSERT_EQ(c.suites().size(), 1u);
+    EXPECT_EQ(c.suites()[0].name, "");
+    EXPECT_EQ(c.suites()[0].tests[0].name, "a");
+    EXPECT_EQ(c.suiteCount(), 0u);
+}
+
+TEST(TestResultCollector, SuiteRecordsHoldTheirTestsAndOwnEvents) {
+    TestResultCollector c;
+    TestSuite s("s");
+    Named a("a");
+    c.startTestSuite(&s);
+    c.addReport(&s, TestMessage("fixture up"));
+    oneTest(c, a, {Kind::Report});
+    c.addError(&s, TestMessage("fixture collapsed"));
+    c.endTestSuite(&s);
+    ASSERT_EQ(c.suites().size(), 1u);
+    const SuiteRecord& suite = c.suites()[0];
+    EXPECT_EQ(suite.name, "s");
+    ASSERT_EQ(suite.events.size(), 2u);
+    EXPECT_EQ(suite.tests.at(0).events.size(), 1u);
+    EXPECT_TRUE(suite.fixtureFailed);
+    EXPECT_FALSE(suite.succeeded());
+    EXPECT_EQ(c.suiteCount(), 1u);
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+    EXPECT_EQ(c.passedSuiteCount(), 0u);
+}
+
+TEST(TestResultCollector, EventsAreInOrderWithIncreasingTimes) {
+    TestResultCollector c;
+    Named a("a");
+    c.startTestRunner();
+    oneTest(c, a, {Kind::Report});
+    c.endTestRunner();
+    const auto& events = c.getResults();
+    ASSERT_EQ(events.size(), 5u);
+    EXPECT_EQ(events[0].kind, Kind::StartRunner);
+    EXPECT_EQ(events[2].kind, Kind::Report);
+    EXPECT_EQ(events[2].testName, "a");
+    for (std::size_t i = 1; i < events.size(); ++i) {
+        EXPECT_GE(events[i].time, events[i - 1].time);
+    }
+    EXPECT_GE(c.duration(), 0.0);
+}
+
+TEST(TestResultCollector, DurationIsEndMinusStart) {
+    TestResultCollector c;
+    Named a("a");
+    oneTest(c, a, {});
+    const auto& events = c.getResults();
+    EXPECT_DOUBLE_EQ(c.suites()[0].tests[0].duration, events[1].time - events[0].time);
+}
+
+TEST(TestResultCollector, OutputIsKeptAsTextNotAsEvents) {
+    TestResultCollector c;
+    Named a("a");
+    c.startTest(&a);
+    c.addOutput(&a, "line 1\n");
+    c.addOutput(&a, "line 2\n");
+    c.endTest(&a);
+    EXPECT_EQ(c.suites()[0].tests[0].output, "line 1\nline 2\n");
+    EXPECT_TRUE(c.suites()[0].tests[0].events.empty());
+}
+
+TEST(TestResultCollector, WithoutKeepingEventsCountsStayAndRecordsAreDropped) {
+    TestResultCollector c;
+    c.setKeepEvents(false);
+    Named a("a");
+    for (int i = 0; i < 100; ++i) {
+        oneTest(c, a, {i % 2 ? Kind::Failure : Kind::Report});
+    }
+    EXPECT_TRUE(c.getResults().empty());
+    EXPECT_EQ(c.testCount(), 100u);
+    EXPECT_EQ(c.failedCount(), 50u);
+    ASSERT_EQ(c.suites().size(), 1u);
+    EXPECT_EQ(c.suites()[0].tests.size(), 1u);  // the last test only
+}
+
+TEST(TestResult, DispatchesToEveryListenerInOrderAndRemoves) {
+    struct Log : TestListener {
+        Log(std::string name, std::vector<std::string>& log) : name(std::move(name)), log(log) {}
+        void addReport(const robottestingframework::Test*, TestMessage msg) override {
+            log.push_back(name + ":" + msg.getMessage());
+        }
+        std::string name;
+        std::vector<std::string>& log;
+    };
+    std::vector<std::string> log;
+    Log first("1", log), second("2", log);
+    TestResult result;
+    result.addListener(&first);
+    result.addListener(&second);
+    result.addListener(&first);  // once only
+    result.addReport(nullptr, TestMessage("a"));
+    result.removeListener(&first);
+    result.addReport(nullptr, TestMessage("b"));
+    EXPECT_EQ(log, (std::vector<std::string>{"1:a", "2:a", "2:b"}));
+}
+
+TEST(TestResultCollector, WithoutKeepingEventsAnEarlierFailureStillFailsTheSuite) {
+    TestResultCollector c;
+    c.setKeepEvents(false);
+    TestSuite s("s");
+    Named a("a"), b("b");
+    c.startTestSuite(&s);
+    oneTest(c, a, {Kind::Failure});
+    oneTest(c, b, {});
+    c.endTestSuite(&s);
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+}

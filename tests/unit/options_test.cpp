@@ -1,0 +1,175 @@
+// The runner's command line: every RTF 2.x option with its short form, and usage errors.
+#include <gtest/gtest.h>
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+#include "options.h"
+
+using robottestingframework::runner::Options;
+using robottestingframework::runner::parseOptions;
+using robottestingframework::runner::ParseResult;
+
+namespace {
+
+ParseResult parse(std::initializer_list<const char*> args, Options& options) {
+    std::vector<const char*> argv{"robottestingframework-testrunner"};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return parseOptions(static_cast<int>(argv.size()), argv.data(), options);
+}
+
+bool runs(const ParseResult& result) {
+    return result.outcome == ParseResult::Outcome::Run;
+}
+
+}  // namespace
+
+TEST(Options, ShortFormsMeanTheLongOnes) {
+    Options options;
+    ParseResult result =
+        parse({"-t", "a.so", "-t", "b.so", "-s", "s.xml", "-r", "-p", "--part left", "-e",
+               "--robot sim", "-o", "out.txt", "-w", "-d", "-v"},
+              options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(options.tests, (std::vector<std::string>{"a.so", "b.so"}));
+    EXPECT_EQ(options.suites, (std::vector<std::string>{"s.xml"}));
+    EXPECT_TRUE(options.recursive);
+    EXPECT_EQ(options.param, "--part left");
+    EXPECT_EQ(options.environment, "--robot sim");
+    ASSERT_EQ(options.outputs.size(), 1u);
+    EXPECT_EQ(options.outputs[0].file, "out.txt");
+    EXPECT_EQ(options.outputs[0].type, "text");
+    EXPECT_TRUE(options.webReporter);
+    EXPECT_TRUE(options.detail);
+    EXPECT_TRUE(options.verbose);
+}
+
+TEST(Options, LongForms) {
+    Options options;
+    ParseResult result = parse({"--test",
+                                "a.so",
+                                "--tests",
+                                "dir",
+                                "--suite",
+                                "s.xml",
+                                "--suites",
+                                "sdir",
+                                "--recursive",
+                                "--param",
+                                "x",
+                                "--environment",
+                                "y",
+                                "--repetition",
+                                "3",
+                                "--output",
+                                "r.xml",
+                                "--output-type",
+                                "junit",
+                                "--no-summary",
+                                "--web-reporter",
+                                "--web-port",
+                                "9000",
+                                "--detail",
+                                "--verbose",
+                                "--isolation",
+                                "none",
+                                "--var",
+                                "robot=icub"},
+                               options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(options.testDirs, (std::vector<std::string>{"dir"}));
+    EXPECT_EQ(options.suiteDirs, (std::vector<std::string>{"sdir"}));
+    EXPECT_EQ(options.repetition, 3u);
+    ASSERT_EQ(options.outputs.size(), 1u);
+    EXPECT_EQ(options.outputs[0].type, "junit");
+    EXPECT_TRUE(options.noSummary);
+    EXPECT_EQ(options.webPort, 9000);
+    ASSERT_EQ(options.variables.size(), 1u);
+    EXPECT_EQ(options.variables[0].first, "robot");
+    EXPECT_EQ(options.variables[0].second, "icub");
+}
+
+TEST(Options, ParamThatLooksLikeAnOptionIsAValue) {
+    Options options;
+    ParseResult result = parse({"-t", "a.so", "-p", "--verbose", "-e", "-x"}, options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(options.param, "--verbose");
+    EXPECT_EQ(options.environment, "-x");
+    EXPECT_FALSE(options.verbose);
+}
+
+TEST(Options, TypedOutputsAndDefaults) {
+    Options options;
+    ParseResult result = parse(
+        {"-t", "a.so", "-o", "junit:results.xml", "--output", "text:r.txt", "-o", "plain.txt"},
+        options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    ASSERT_EQ(options.outputs.size(), 3u);
+    EXPECT_EQ(options.outputs[0].type, "junit");
+    EXPECT_EQ(options.outputs[0].file, "results.xml");
+    EXPECT_EQ(options.outputs[1].type, "text");
+    EXPECT_EQ(options.outputs[2].type, "text");
+
+    Options defaults;
+    ASSERT_TRUE(runs(parse({"-t", "a.so"}, defaults)));
+    ASSERT_EQ(defaults.outputs.size(), 1u);
+    EXPECT_EQ(defaults.outputs[0].file, "result.txt");
+
+    Options none;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--no-output", "-o", "x.txt"}, none)));
+    EXPECT_TRUE(none.outputs.empty());
+}
+
+TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
+    struct Case {
+        std::initializer_list<const char*> args;
+        const char* says;
+    };
+    const Case cases[] = {
+        {{}, "nothing to run"},
+        {{"-t", "a.so", "--bogus"}, "--bogus"},
+        {{"-t"}, "--test"},
+        {{"-t", "a.so", "--repetition", "0"}, "repetition"},
+        {{"-t", "a.so", "--repetition", "abc"}, "repetition"},
+        {{"-t", "a.so", "--web-port", "70000"}, "web-port"},
+        {{"-t", "a.so", "--output-type", "xml"}, "unknown output type 'xml'"},
+        {{"-t", "a.so", "-o", "tap:out.tap"}, "not available in this build"},
+        {{"-t", "a.so", "-o", "junit:"}, "no file name"},
+        {{"-t", "a.so", "--isolation", "thread"}, "isolation"},
+        {{"-t", "a.so", "--isolation", "process"},
+         "process isolation is not available in this build"},
+        {{"-t", "a.so", "--var", "novalue"}, "NAME=VALUE"},
+        {{"-t", "a.so", "stray"}, "stray"},
+    };
+    for (const auto& c : cases) {
+        Options options;
+        std::vector<const char*> argv{"robottestingframework-testrunner"};
+        argv.insert(argv.end(), c.args.begin(), c.args.end());
+        ParseResult result = parseOptions(static_cast<int>(argv.size()), argv.data(), options);
+        std::string line;
+        for (const char* arg : c.args) {
+            line += std::string(arg) + " ";
+        }
+        EXPECT_EQ(result.outcome, ParseResult::Outcome::Exit) << line;
+        EXPECT_EQ(result.status, 2) << line;
+        EXPECT_NE(result.text.find(c.says), std::string::npos) << line << "→ " << result.text;
+    }
+}
+
+TEST(Options, HelpAndVersionExitWithZero) {
+    Options options;
+    ParseResult help = parse({"--help"}, options);
+    EXPECT_EQ(help.outcome, ParseResult::Outcome::Exit);
+    EXPECT_EQ(help.status, 0);
+    for (const char* option :
+         {"--test", "--tests", "--suite", "--suites", "--recursive", "--param", "--environment",
+          "--repetition", "--output", "--output-type", "--no-output", "--no-summary",
+          "--web-reporter", "--web-port", "--detail", "--verbose", "--version"}) {
+        EXPECT_NE(help.text.find(option), std::string::npos) << option;
+    }
+    Options other;
+    ParseResult version = parse({"--version"}, other);
+    EXPECT_EQ(version.status, 0);
+    EXPECT_NE(version.text.find("3."), std::string::npos) << version.text;
+}

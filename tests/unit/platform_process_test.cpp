@@ -1,0 +1,216 @@
+// The platform layer: spawning, killing whole process trees, signal names, passing descriptors.
+#include <gtest/gtest.h>
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <thread>
+
+#include "clock.h"
+#include "fd_passing.h"
+#include "file_descriptor.h"
+#include "process.h"
+#include "process_tree.h"
+#include "signal_name.h"
+#include "signal_pipe.h"
+
+using namespace robottestingframework::platform;
+
+namespace {
+
+bool alive(pid_t pid)
+{
+    // A zombie is dead for our purpose.
+    std::string stat;
+    FILE* file = std::fopen(("/proc/" + std::to_string(pid) + "/stat").c_str(), "r");
+    if (file == nullptr) {
+        return false;
+    }
+    char buffer[512] = {};
+    std::fread(buffer, 1, sizeof(buffer) - 1, file);
+    std::fclose(file);
+    const char* close = std::strrchr(buffer, ')');
+    return close != nullptr && close[2] != 'Z' && close[2] != 'X';
+}
+
+bool waitUntilGone(pid_t pid, double seconds)
+{
+    Deadline deadline(seconds);
+    while (alive(pid)) {
+        if (deadline.expired()) {
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return true;
+}
+
+// A shell that starts a grandchild and prints its pid; both ignore SIGTERM when asked.
+pid_t spawnTree(bool ignoreTerm, pid_t& grandchild)
+{
+    FileDescriptor readEnd, writeEnd;
+    EXPECT_TRUE(makePipe(readEnd, writeEnd));
+    std::string trap = ignoreTerm ? "trap '' TERM; " : "";
+    SpawnOptions options;
+    options.argv = {"/bin/sh", "-c", trap + "sleep 300 & echo $!; exec 1>&-; wait"};
+    options.fds = {{1, writeEnd.get()}};
+    std::string error;
+    pid_t pid = spawnProcess(options, error);
+    EXPECT_GT(pid, 0) << error;
+    writeEnd.reset();
+    std::string text;
+    while (readSome(readEnd.get(), text) > 0) {
+    }
+    grandchild = static_cast<pid_t>(std::stol(text));
+    return pid;
+}
+
+}  // namespace
+
+TEST(SignalName, NamesTheCommonSignals)
+{
+    EXPECT_EQ(signalName(SIGSEGV), "SIGSEGV");
+    EXPECT_EQ(signalName(SIGABRT), "SIGABRT");
+    EXPECT_EQ(signalName(SIGKILL), "SIGKILL");
+    EXPECT_EQ(signalName(SIGRTMIN + 2), "SIGRTMIN+2");
+    EXPECT_EQ(signalName(0), "signal 0");
+    EXPECT_EQ(signalDescription(SIGSEGV), "Segmentation fault");
+}
+
+TEST(ExitStatus, DescribesExitAndSignal)
+{
+    EXPECT_EQ(ExitStatus::fromWaitStatus(3 << 8).toString(), "exited with status 3");
+    ExitStatus killed = ExitStatus::fromWaitStatus(SIGSEGV);
+    EXPECT_TRUE(killed.signaled);
+    EXPECT_EQ(killed.toString(), "killed by SIGSEGV (Segmentation fault)");
+}
+
+TEST(SpawnProcess, ReportsExecFailureInsteadOfAPid)
+{
+    SpawnOptions options;
+    options.argv = {"/no/such/program"};
+    std::string error;
+    EXPECT_EQ(spawnProcess(options, error), -1);
+    EXPECT_NE(error.find("/no/such/program"), std::string::npos) << error;
+}
+
+TEST(SpawnProcess, ChildLeadsItsOwnGroupAndGetsOnlyTheMappedDescriptors)
+{
+    FileDescriptor readEnd, writeEnd, unrelatedRead, unrelatedWrite;
+    ASSERT_TRUE(makePipe(readEnd, writeEnd));
+    ASSERT_TRUE(makePipe(unrelatedRead, unrelatedWrite));
+    setCloseOnExec(unrelatedWrite.get(), false);  // would leak without the explicit close
+    SpawnOptions options;
+    options.argv = {"/bin/sh", "-c", "ps -o pgid= -p $$; ls /proc/self/fd | wc -l"};
+    options.fds = {{1, writeEnd.get()}};
+    std::string error;
+    pid_t pid = spawnProcess(options, error);
+    ASSERT_GT(pid, 0) << error;
+    writeEnd.reset();
+    std::string text;
+    while (readSome(readEnd.get(), text) > 0) {
+    }
+    int status;
+    ASSERT_TRUE(waitChild(pid, 10, status));
+    EXPECT_EQ(std::stol(text), pid) << "process group id";
+    // ls sees 0, 1, 2 and its own directory descriptor.
+    EXPECT_EQ(std::stol(text.substr(text.find('\n') + 1)), 4) << text;
+}
+
+TEST(ProcessTree, DescendantsIncludeGrandchildren)
+{
+    pid_t grandchild;
+    pid_t child = spawnTree(false, grandchild);
+    std::vector<pid_t> found = descendantsOf(::getpid());
+    EXPECT_NE(std::find(found.begin(), found.end(), child), found.end());
+    EXPECT_NE(std::find(found.begin(), found.end(), grandchild), found.end());
+    EXPECT_EQ(descendantsOf(child), std::vector<pid_t>{grandchild});
+    stopChildGroup(child, 1.0);
+    EXPECT_TRUE(waitUntilGone(grandchild, 5));
+}
+
+TEST(ProcessTree, StopChildGroupKillsAGroupThatIgnoresSigterm)
+{
+    pid_t grandchild;
+    pid_t child = spawnTree(true, grandchild);
+    double start = monotonicSeconds();
+    int status = stopChildGroup(child, 0.2);
+    double took = monotonicSeconds() - start;
+    ExitStatus ending = ExitStatus::fromWaitStatus(status);
+    EXPECT_TRUE(ending.signaled);
+    EXPECT_EQ(ending.signal, SIGKILL);
+    EXPECT_GE(took, 0.2);
+    EXPECT_LT(took, 3.0);
+    EXPECT_TRUE(waitUntilGone(grandchild, 5)) << "the grandchild went with the group";
+}
+
+TEST(ProcessTree, KillDescendantsReachesProcessesThatLeftTheGroup)
+{
+    // The grandchild starts a session of its own: only the /proc walk finds it.
+    FileDescriptor readEnd, writeEnd;
+    ASSERT_TRUE(makePipe(readEnd, writeEnd));
+    SpawnOptions options;
+    options.argv = {"/bin/sh", "-c", "setsid sleep 300 & echo $!; exec 1>&-; wait"};
+    options.fds = {{1, writeEnd.get()}};
+    std::string error;
+    pid_t child = spawnProcess(options, error);
+    ASSERT_GT(child, 0) << error;
+    writeEnd.reset();
+    std::string text;
+    while (readSome(readEnd.get(), text) > 0) {
+    }
+    pid_t grandchild = static_cast<pid_t>(std::stol(text));
+    EXPECT_EQ(killDescendants(::getpid()) >= 2, true);
+    int status;
+    EXPECT_TRUE(waitChild(child, 5, status));
+    EXPECT_TRUE(waitUntilGone(grandchild, 5));
+}
+
+TEST(FdPassing, DescriptorsArriveWithTheMessage)
+{
+    FileDescriptor a, b, readEnd, writeEnd;
+    ASSERT_TRUE(makeSocketPair(a, b, true));
+    ASSERT_TRUE(makePipe(readEnd, writeEnd));
+    ASSERT_TRUE(sendWithFds(a.get(), "hello", {writeEnd.get()}));
+    writeEnd.reset();
+    std::string data;
+    std::vector<FileDescriptor> fds;
+    ASSERT_TRUE(receiveWithFds(b.get(), data, fds));
+    EXPECT_EQ(data, "hello");
+    ASSERT_EQ(fds.size(), 1u);
+    ASSERT_TRUE(writeAll(fds[0].get(), "through the passed pipe"));
+    fds.clear();
+    std::string text;
+    while (readSome(readEnd.get(), text) > 0) {
+    }
+    EXPECT_EQ(text, "through the passed pipe");
+    a.reset();
+    EXPECT_FALSE(receiveWithFds(b.get(), data, fds)) << "end of stream when the peer is gone";
+}
+
+TEST(SignalPipe, SignalBecomesReadableByte)
+{
+    SignalPipe signals({SIGUSR1});
+    EXPECT_EQ(signals.take(), 0);
+    ::kill(::getpid(), SIGUSR1);
+    EXPECT_EQ(signals.wait(2000), SIGUSR1);
+    EXPECT_EQ(signals.wait(10), 0);
+}
+
+TEST(Deadline, NeverAndExpired)
+{
+    Deadline never(0);
+    EXPECT_TRUE(never.never());
+    EXPECT_FALSE(never.expired());
+    EXPECT_EQ(never.remainingMs(), -1);
+    EXPECT_EQ(never.remainingMs(50), 50);
+    Deadline soon(0.01);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    EXPECT_TRUE(soon.expired());
+    EXPECT_EQ(soon.remainingMs(), 0);
+}

@@ -1,0 +1,163 @@
+// The process fixture as a suite sees it: set-up failures with their story, reports, collapse.
+#include "process_fixture.h"
+
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include <robottestingframework/Arguments.h>
+#include <robottestingframework/Exception.h>
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "core_test_helpers.h"
+#include "process_test_helpers.h"
+
+using namespace robottestingframework;
+using robottestingframework::fixtures::ProcessFixture;
+using rtf_process_test::freshFolder;
+using rtf_process_test::writeFile;
+
+namespace {
+
+bool contains(const std::string& text, const std::string& words)
+{
+    return text.find(words) != std::string::npos;
+}
+
+std::string allEvents(const TestResultCollector& collector)
+{
+    std::string out;
+    for (const std::string& line : rtf_test::eventLines(collector)) {
+        out += line + "\n";
+    }
+    return out;
+}
+
+class CollapseRecorder : public FixtureEvents {
+public:
+    void fixtureCollapsed(TestMessage reason) override { reasons.push_back(reason); }
+    std::vector<TestMessage> reasons;
+};
+
+}  // namespace
+
+TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine)
+{
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world>\n  <process name='a' depends='b' command='true'/>\n"
+                                 "</world>\n");
+    ProcessFixture fixture(world.string());
+    ArgumentVector args("world.xml", "");
+    try {
+        fixture.setup(args.argc(), args.argv());
+        FAIL() << "setup did not throw";
+    } catch (const TestErrorException& e) {
+        EXPECT_TRUE(contains(e.what(), world.string() + ":2: process 'a' depends on 'b'"))
+            << e.what();
+    }
+}
+
+TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder)
+{
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world><process name='a' command=\"/bin/sh -c 'echo "
+                                 "${greeting}; exec sleep 30'\"><ready><output>^${greeting}$"
+                                 "</output></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    ArgumentVector args("world.xml",
+                        "--var greeting=hello --logdir " + (folder / "mylogs").string());
+    ASSERT_TRUE(fixture.setup(args.argc(), args.argv()));
+    EXPECT_TRUE(fixture.check());
+    fixture.tearDown();
+    EXPECT_TRUE(std::filesystem::exists(folder / "mylogs" / "a.log"));
+
+    ArgumentVector wrong("world.xml", "--colour red");
+    EXPECT_THROW(fixture.setup(wrong.argc(), wrong.argv()), TestErrorException);
+}
+
+TEST(ProcessFixture, TellsTheDispatcherWhenTheWorldCollapses)
+{
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world>\n<process name='robot' command=\"/bin/sh -c 'echo "
+                                 "ready; sleep 0.2; echo motor fault; exit 2'\">\n"
+                                 "<ready><output>ready</output></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    CollapseRecorder recorder;
+    fixture.setDispatcher(&recorder);
+    ArgumentVector args("world.xml", "");
+    ASSERT_TRUE(fixture.setup(args.argc(), args.argv()));
+    for (int i = 0; i < 300 && fixture.check(); ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_FALSE(fixture.check());
+    ASSERT_FALSE(recorder.reasons.empty());
+    const TestMessage& reason = recorder.reasons.front();
+    EXPECT_TRUE(contains(reason.getMessage(), "process 'robot' exited with status 2"))
+        << reason.getMessage();
+    EXPECT_TRUE(contains(reason.getMessage(), "| motor fault")) << reason.getMessage();
+    EXPECT_EQ(reason.getSourceFileName(), world.string());
+    EXPECT_EQ(reason.getSourceLineNumber(), 2u);
+    fixture.tearDown();
+}
+
+TEST(ProcessFixture, InASuiteACollapseSkipsTheRemainingTestsWithTheReason)
+{
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world name='lab'>\n<process name='sim' command=\"/bin/sh -c "
+                                 "'echo ready; sleep 0.3; echo simulator crashed; exit 1'\">\n"
+                                 "<ready><output>ready</output></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    TestSuite suite("with a world");
+    suite.addFixtureManager(&fixture);
+    rtf_test::LambdaTest first("first", [] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(800));
+    });
+    rtf_test::LambdaTest second("second");
+    suite.addTest(&first);
+    suite.addTest(&second);
+
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    suite.run(result);
+    EXPECT_FALSE(suite.succeeded());
+    const std::string events = allEvents(collector);
+    EXPECT_TRUE(contains(events, "'sim' is ready after")) << events;  // a fixture report
+    EXPECT_TRUE(second.log.empty()) << events;                      // never run
+    EXPECT_TRUE(contains(events, "process 'sim' exited with status 1")) << events;
+    EXPECT_TRUE(contains(events, "simulator crashed")) << events;
+    EXPECT_TRUE(contains(events, "stopping 'sim'")) << events;
+}
+
+TEST(ProcessFixture, InASuiteASetupFailureSkipsEveryTestWithTheWholeStory)
+{
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world>\n<process name='server' command=\"/bin/sh -c 'echo "
+                                 "binding; exec sleep 30'\">\n<ready timeout='200ms'>"
+                                 "<port>1</port></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    TestSuite suite("no world");
+    suite.addFixtureManager(&fixture);
+    rtf_test::LambdaTest only("only");
+    suite.addTest(&only);
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    suite.run(result);
+    EXPECT_FALSE(suite.succeeded());
+    EXPECT_TRUE(only.log.empty());
+    const std::string events = allEvents(collector);
+    EXPECT_TRUE(contains(events, "process 'server' did not become ready: TCP port 127.0.0.1:1 "
+                                 "accepting connections did not happen within 200 ms"))
+        << events;
+    EXPECT_TRUE(contains(events, "| binding")) << events;
+    EXPECT_TRUE(contains(events, "last seen: Connection refused")) << events;
+}

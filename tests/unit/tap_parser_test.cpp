@@ -1,0 +1,201 @@
+// The TAP parser against a corpus of streams, valid and broken (tests/unit/tap/).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "tap_parser.h"
+
+using robottestingframework::languages::parseTap;
+using robottestingframework::languages::TapPoint;
+using robottestingframework::languages::TapStream;
+
+namespace {
+
+TapStream parseFile(const std::string& name) {
+    std::ifstream file(std::string(RTF_TAP_CORPUS_DIR) + "/" + name);
+    EXPECT_TRUE(file.good()) << name;
+    std::stringstream text;
+    text << file.rdbuf();
+    return parseTap(text.str());
+}
+
+bool hasProblem(const TapStream& stream, const std::string& part) {
+    for (const auto& problem : stream.problems) {
+        if (problem.message.find(part) != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace
+
+TEST(TapParser, ReadsPlanFirst) {
+    TapStream tap = parseFile("plan_first.tap");
+    EXPECT_TRUE(tap.isTap);
+    ASSERT_EQ(tap.points.size(), 3u);
+    EXPECT_EQ(tap.points[0].description, "first");
+    EXPECT_EQ(tap.points[2].description, "");
+    EXPECT_EQ(tap.points[2].number, 3u);
+    EXPECT_TRUE(tap.problems.empty());
+    EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, ReadsPlanLastAndFailingPoint) {
+    TapStream tap = parseFile("plan_last.tap");
+    ASSERT_EQ(tap.points.size(), 3u);
+    EXPECT_FALSE(tap.points[1].ok);
+    EXPECT_TRUE(tap.points[1].failed());
+    EXPECT_EQ(tap.points[1].line, 2u);
+    EXPECT_TRUE(tap.problems.empty());
+    EXPECT_TRUE(tap.failed());
+}
+
+TEST(TapParser, AttachesYamlDiagnosticsToThePointBefore) {
+    TapStream tap = parseFile("v13_yaml.tap");
+    EXPECT_EQ(tap.version, 13);
+    ASSERT_EQ(tap.points.size(), 2u);
+    EXPECT_EQ(tap.points[0].diagnostics, "");
+    EXPECT_NE(tap.points[1].diagnostics.find("message: 'joint 3 out of range'"), std::string::npos);
+    EXPECT_NE(tap.points[1].diagnostics.find("    indented line"), std::string::npos);
+    EXPECT_TRUE(tap.otherText.empty());
+    EXPECT_TRUE(tap.problems.empty());
+}
+
+TEST(TapParser, ReadsNestedIndentedSubtests) {
+    TapStream tap = parseFile("v14_subtests.tap");
+    EXPECT_EQ(tap.version, 14);
+    ASSERT_EQ(tap.points.size(), 6u);
+    EXPECT_EQ(tap.points[0].subtest, "arm > shoulder");
+    EXPECT_EQ(tap.points[0].description, "pitch");
+    EXPECT_EQ(tap.points[2].subtest, "arm");
+    EXPECT_EQ(tap.points[2].description, "shoulder");
+    EXPECT_EQ(tap.points[3].subtest, "arm");
+    EXPECT_FALSE(tap.points[3].ok);
+    EXPECT_NE(tap.points[3].diagnostics.find("message: stuck"), std::string::npos);
+    EXPECT_EQ(tap.points[4].subtest, "");
+    EXPECT_EQ(tap.points[4].description, "arm");
+    EXPECT_TRUE(tap.problems.empty()) << tap.problems[0].message;
+}
+
+TEST(TapParser, ReadsOlderSubtestForm) {
+    TapStream tap = parseFile("subtest_older_form.tap");
+    ASSERT_EQ(tap.points.size(), 4u);
+    EXPECT_EQ(tap.points[0].subtest, "camera");
+    EXPECT_EQ(tap.points[2].subtest, "");
+    EXPECT_TRUE(tap.problems.empty());
+    EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, HonoursSkipAndTodo) {
+    TapStream tap = parseFile("skip_todo.tap");
+    ASSERT_EQ(tap.points.size(), 4u);
+    EXPECT_EQ(tap.points[0].directive, TapPoint::Directive::Skip);
+    EXPECT_EQ(tap.points[0].reason, "no gripper on this robot");
+    EXPECT_EQ(tap.points[0].description, "has a gripper");
+    EXPECT_EQ(tap.points[1].directive, TapPoint::Directive::Todo);
+    EXPECT_FALSE(tap.points[1].failed());
+    EXPECT_EQ(tap.points[2].directive, TapPoint::Directive::Todo);
+    EXPECT_EQ(tap.points[2].reason, "surprisingly works");
+    // A failing point is a failure even when skipped: only TODO excuses it.
+    EXPECT_TRUE(tap.points[3].failed());
+    EXPECT_TRUE(tap.failed());
+}
+
+TEST(TapParser, ReadsSkipAllPlan) {
+    TapStream tap = parseFile("skip_all.tap");
+    EXPECT_TRUE(tap.isTap);
+    EXPECT_TRUE(tap.skipAll);
+    EXPECT_EQ(tap.skipReason, "no robot connected");
+    EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, StopsAtBailOut) {
+    TapStream tap = parseFile("bail_out.tap");
+    EXPECT_TRUE(tap.bailedOut);
+    EXPECT_EQ(tap.bailOutReason, "lost the connection to the robot");
+    EXPECT_EQ(tap.points.size(), 1u);
+    EXPECT_TRUE(tap.problems.empty());  // no plan check after a bail out
+    EXPECT_TRUE(tap.failed());
+}
+
+TEST(TapParser, ReportsPlanMismatch) {
+    TapStream tap = parseFile("plan_too_many.tap");
+    EXPECT_TRUE(hasProblem(tap, "planned 3 test(s) but ran 2"));
+    EXPECT_TRUE(tap.failed());
+}
+
+TEST(TapParser, ReportsPlanInTheMiddle) {
+    TapStream tap = parseFile("plan_in_middle.tap");
+    EXPECT_TRUE(hasProblem(tap, "the plan must come before the first test or after the last"));
+}
+
+TEST(TapParser, ReportsMissingPlan) {
+    TapStream tap = parseFile("no_plan.tap");
+    EXPECT_TRUE(tap.isTap);
+    EXPECT_TRUE(hasProblem(tap, "no plan"));
+}
+
+TEST(TapParser, ReportsNumberOutOfSequence) {
+    TapStream tap = parseFile("out_of_sequence.tap");
+    EXPECT_TRUE(hasProblem(tap, "test number 3 out of sequence (expected 2)"));
+    EXPECT_EQ(tap.problems[0].line, 3u);
+}
+
+TEST(TapParser, ReportsSecondPlan) {
+    EXPECT_TRUE(hasProblem(parseFile("two_plans.tap"), "more than one plan"));
+}
+
+TEST(TapParser, ReportsUnclosedYaml) {
+    TapStream tap = parseFile("unclosed_yaml.tap");
+    EXPECT_TRUE(hasProblem(tap, "YAML block not closed"));
+    ASSERT_EQ(tap.points.size(), 1u);
+    EXPECT_NE(tap.points[0].diagnostics.find("never closed"), std::string::npos);
+}
+
+TEST(TapParser, KeepsEscapedHashInDescription) {
+    TapStream tap = parseFile("escaped_hash.tap");
+    ASSERT_EQ(tap.points.size(), 2u);
+    EXPECT_EQ(tap.points[0].description, "the # sign is text");
+    EXPECT_EQ(tap.points[0].directive, TapPoint::Directive::Skip);
+    EXPECT_EQ(tap.points[1].directive, TapPoint::Directive::None);
+    EXPECT_EQ(tap.points[1].description, "trailing comment # not a directive");
+}
+
+TEST(TapParser, RejectsUnsupportedVersion) {
+    EXPECT_TRUE(hasProblem(parseFile("unsupported_version.tap"), "unsupported 'TAP version 99'"));
+}
+
+TEST(TapParser, LeavesPlainOutputAlone) {
+    TapStream tap = parseFile("not_tap.txt");
+    EXPECT_FALSE(tap.isTap);
+    EXPECT_TRUE(tap.points.empty());
+    EXPECT_TRUE(tap.comments.empty());
+    ASSERT_EQ(tap.otherText.size(), 3u);
+    EXPECT_EQ(tap.otherText[1], "# a comment, not TAP");
+    EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, SeparatesOutputAndCommentsFromTap) {
+    TapStream tap = parseFile("mixed_output.tap");
+    EXPECT_TRUE(tap.isTap);
+    ASSERT_EQ(tap.otherText.size(), 2u);
+    EXPECT_EQ(tap.otherText[0], "connecting to 127.0.0.1");
+    ASSERT_EQ(tap.comments.size(), 1u);
+    EXPECT_EQ(tap.comments[0], "about to check");
+    EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, AcceptsCrLfLineEnds) {
+    TapStream tap = parseFile("crlf.tap");
+    ASSERT_EQ(tap.points.size(), 2u);
+    EXPECT_EQ(tap.points[0].description, "crlf");
+    EXPECT_TRUE(tap.problems.empty());
+}
+
+TEST(TapParser, EmptyStreamIsNotTap) {
+    TapStream tap = parseTap("");
+    EXPECT_FALSE(tap.isTap);
+    EXPECT_FALSE(tap.failed());
+}

@@ -1,0 +1,319 @@
+#include <atomic>
+#include <chrono>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include <robottestingframework/TestAssert.h>
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "core_test_helpers.h"
+
+using namespace rtf_test;
+using Lines = std::vector<std::string>;
+
+namespace {
+
+struct SuiteRun {
+    TestResult result;
+    TestResultCollector collector;
+    SuiteRun() { result.addListener(&collector); }
+    const SuiteRecord& suite() { return collector.suites().at(0); }
+    const TestRecord& test(std::size_t i) { return suite().tests.at(i); }
+};
+
+class NamedGate : public TestGate {
+public:
+    explicit NamedGate(std::string name) : name_(std::move(name)) {}
+    bool skip(const Test* test, TestMessage& reason) override {
+        if (test->getName() != name_) {
+            return false;
+        }
+        reason = TestMessage("skipped: depends on a failed test");
+        return true;
+    }
+
+private:
+    std::string name_;
+};
+
+}  // namespace
+
+TEST(TestSuite, FixturesSetUpInOrderAndTornDownInReverse) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log), b("b", log);
+    LambdaTest t("t", [&] { log.push_back("test"); });
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    suite.addFixtureManager(&b);
+    suite.addTest(&t);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(log, (Lines{"setup a", "setup b", "test", "tearDown b", "tearDown a"}));
+    EXPECT_TRUE(suite.succeeded());
+    EXPECT_TRUE(r.suite().succeeded());
+}
+
+TEST(TestSuite, FixtureSetupGetsItsNameAndParam) {
+    std::vector<std::string> log;
+    LoggingFixture a("sim", log);
+    a.setParam("--from 'sim world.ini'");
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(a.args, (Lines{"sim", "--from", "sim world.ini"}));
+}
+
+TEST(TestSuite, SuiteBecomesTheDispatcherOfAFixtureWithoutOne) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log);
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(a.getDispatcher(), &suite);
+    EXPECT_EQ(a.getResult(), &r.result);
+    EXPECT_EQ(a.getOwner(), &suite);
+}
+
+TEST(TestSuite, FailingFixtureTearsDownTheOnesAlreadyUpAndSkipsEveryTest) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log), b("b", log), c("c", log);
+    b.setupResult = false;
+    LambdaTest t1("t1"), t2("t2");
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    suite.addFixtureManager(&b);
+    suite.addFixtureManager(&c);
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(log, (Lines{"setup a", "setup b", "tearDown a"}));
+    EXPECT_TRUE(t1.log.empty());
+    EXPECT_FALSE(suite.succeeded());
+    ASSERT_EQ(r.suite().tests.size(), 2u);
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(0).reason()->message.getMessage(), "fixture b failed: setup returned false");
+    EXPECT_TRUE(r.suite().fixtureFailed);
+    EXPECT_TRUE(
+        contains(eventLines(r.collector), "error s: fixture b failed: setup returned false"));
+    EXPECT_EQ(r.collector.failedSuiteCount(), 1u);
+}
+
+TEST(TestSuite, FixtureThrowingInSetupIsAFixtureFailureWithTheReason) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log);
+    a.throwInSetup = true;
+    LambdaTest t1("t1");
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    suite.addTest(&t1);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(0).reason()->message.getMessage(), "fixture a failed: boom");
+    EXPECT_EQ(suite.fixtureFailure().getMessage(), "fixture a failed: boom");
+}
+
+TEST(TestSuite, FailingTestFailsTheSuite) {
+    LambdaTest t1("t1", [] { ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("x"); }), t2("t2");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_FALSE(suite.succeeded());
+    EXPECT_EQ(r.test(1).status, TestStatus::Passed);  // the others still run
+}
+
+TEST(TestSuite, CheckFalseBeforeATestCollapsesTheSuite) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log);
+    a.checkResult = false;
+    LambdaTest t1("t1"), t2("t2");
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(t1.log.empty());
+    EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+    EXPECT_TRUE(
+        contains(eventLines(r.collector), "error s: fixture collapsed: fixture a: check failed"));
+    EXPECT_EQ(log.back(), "tearDown a");
+    EXPECT_FALSE(suite.succeeded());
+}
+
+TEST(TestSuite, CollapseFromAnotherThreadInterruptsTheTestAndSkipsTheRest) {
+    TestSuite suite("s");
+    std::atomic<bool> sawInterrupt{false};
+    LambdaTest* self = nullptr;
+    LambdaTest t1("t1", [&] {
+        std::thread watcher([&] { suite.fixtureCollapsed(TestMessage("simulator died")); });
+        watcher.join();
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+        while (!self->interrupted() && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        sawInterrupt = self->interrupted();
+    });
+    self = &t1;
+    LambdaTest t2("t2");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(sawInterrupt);
+    EXPECT_TRUE(t2.log.empty());
+    EXPECT_EQ(r.test(0).status, TestStatus::Interrupted);
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(1).reason()->message.getMessage(), "fixture collapsed: simulator died");
+    EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture collapsed: simulator died"));
+    EXPECT_FALSE(suite.succeeded());
+    EXPECT_EQ(suite.fixtureFailure().getMessage(), "simulator died");
+}
+
+TEST(TestSuite, CollapseIsReportedOnceAfterTheRunningTestEnds) {
+    TestSuite suite("s");
+    LambdaTest t1("t1", [&] {
+        suite.fixtureCollapsed(TestMessage("first"));
+        suite.fixtureCollapsed(TestMessage("second"));
+    });
+    suite.addTest(&t1);
+    SuiteRun r;
+    suite.run(r.result);
+    const Lines lines = eventLines(r.collector);
+    EXPECT_EQ(lines,
+              (Lines{"start-suite s", "start-test t1", "interrupted t1: interrupted while running",
+                     "end-test t1", "error s: fixture collapsed: first", "end-suite s"}));
+}
+
+TEST(TestSuite, CriticalErrorSkipsTheRestOfTheSuite) {
+    LambdaTest t1("t1", [] { ROBOTTESTINGFRAMEWORK_ASSERT_CRITICAL("robot fell"); });
+    LambdaTest t2("t2"), t3("t3");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    suite.addTest(&t3);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(t2.log.empty());
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(2).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(1).reason()->message.getMessage(), "critical error in t1: robot fell");
+}
+
+TEST(TestSuite, SkipRemainingSkipsTheTestsAfterTheCurrentOne) {
+    TestSuite suite("s");
+    LambdaTest t1("t1", [&] { suite.skipRemaining(TestMessage("no more")); }), t2("t2");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(r.test(0).status, TestStatus::Passed);
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+}
+
+TEST(TestSuite, GateSkipsTheTestItRefuses) {
+    NamedGate gate("t2");
+    LambdaTest t1("t1"), t2("t2"), t3("t3");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    suite.addTest(&t3);
+    suite.setGate(&gate);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(t2.log.empty());
+    EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
+    EXPECT_EQ(r.test(1).reason()->message.getMessage(), "skipped: depends on a failed test");
+    EXPECT_EQ(r.test(2).status, TestStatus::Passed);
+    EXPECT_TRUE(suite.succeeded());
+}
+
+TEST(TestSuite, InterruptDuringATestReportsTheRestInterrupted) {
+    TestSuite suite("s");
+    LambdaTest t1("t1", [&] { suite.interrupt(); }), t2("t2");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(r.test(0).status, TestStatus::Interrupted);
+    EXPECT_EQ(r.test(1).status, TestStatus::Interrupted);
+    EXPECT_TRUE(t2.log.empty());
+    EXPECT_FALSE(suite.succeeded());
+}
+
+TEST(TestSuite, ReportNotRunReportsEveryTestWithTheReason) {
+    LambdaTest t1("t1"), t2("t2");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    SuiteRun r;
+    suite.reportNotRun(r.result, TestMessage("shard 2 only"), false);
+    EXPECT_EQ(eventLines(r.collector),
+              (Lines{"start-suite s", "start-test t1", "skipped t1: shard 2 only", "end-test t1",
+                     "start-test t2", "skipped t2: shard 2 only", "end-test t2", "end-suite s"}));
+}
+
+TEST(TestSuite, RemoveTestAndSize) {
+    LambdaTest t1("t1"), t2("t2");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    suite.addTest(&t2);
+    suite.removeTest(&t1);
+    ASSERT_EQ(suite.size(), 1u);
+    EXPECT_EQ(suite.tests()[0], &t2);
+    suite.reset();
+    EXPECT_EQ(suite.size(), 0u);
+}
+
+TEST(TestSuite, FixtureWatcherThreadReportsWhileTheTestReports) {
+    // A fixture watching the world from its own thread: reports, then the world collapses.
+    class Watcher : public FixtureManager {
+    public:
+        bool setup(int, char**) override {
+            thread_ = std::thread([this] {
+                while (!testStarted) {
+                    std::this_thread::yield();
+                }
+                for (int i = 0; i < 200; ++i) {
+                    ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT("world ok");
+                }
+                getDispatcher()->fixtureCollapsed(TestMessage("world gone"));
+            });
+            return true;
+        }
+        void tearDown() override { thread_.join(); }
+        std::atomic<bool> testStarted{false};
+
+    private:
+        std::thread thread_;
+    } watcher;
+    watcher.setName("watcher");
+    TestSuite suite("s");
+    LambdaTest* self = nullptr;
+    LambdaTest t1("t1", [&] {
+        watcher.testStarted = true;
+        for (int i = 0; i < 200; ++i) {
+            ROBOTTESTINGFRAMEWORK_TEST_REPORT("test ok");
+        }
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+        while (!self->interrupted() && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+    });
+    self = &t1;
+    suite.addFixtureManager(&watcher);
+    suite.addTest(&t1);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_EQ(r.suite().events.size(), 201u);  // 200 reports and the collapse
+    EXPECT_EQ(r.test(0).events.size(), 201u);  // 200 reports and the interruption
+    EXPECT_FALSE(suite.succeeded());
+}

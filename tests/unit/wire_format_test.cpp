@@ -1,0 +1,157 @@
+// The runner/worker wire format: records survive any split of the stream, and truncated or
+// garbage input is never mistaken for a record.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "wire_format.h"
+
+using robottestingframework::ResultEvent;
+using robottestingframework::TestMessage;
+using namespace robottestingframework::isolation;
+
+namespace {
+
+WireRecord sample()
+{
+    WireRecord record;
+    record.kind = WireKind::Event;
+    record.event = ResultEvent::Kind::Check;
+    record.name = "arm test";
+    record.message = TestMessage("joint 3 \xc3\xa9 in range", std::string("a\0b", 3), "arm.cpp", 42);
+    record.flag = false;
+    record.number = -1234567890123LL;
+    return record;
+}
+
+void expectSame(const WireRecord& a, const WireRecord& b)
+{
+    EXPECT_EQ(a.kind, b.kind);
+    EXPECT_EQ(a.event, b.event);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.message.getMessage(), b.message.getMessage());
+    EXPECT_EQ(a.message.getDetail(), b.message.getDetail());
+    EXPECT_EQ(a.message.getSourceFileName(), b.message.getSourceFileName());
+    EXPECT_EQ(a.message.getSourceLineNumber(), b.message.getSourceLineNumber());
+    EXPECT_EQ(a.flag, b.flag);
+    EXPECT_EQ(a.number, b.number);
+}
+
+}  // namespace
+
+TEST(WireFormat, RecordRoundTripsEveryField)
+{
+    WireDecoder decoder;
+    decoder.feed(encode(sample()));
+    WireRecord out;
+    ASSERT_EQ(decoder.next(out), WireDecoder::Status::Record);
+    expectSame(out, sample());
+    EXPECT_EQ(decoder.next(out), WireDecoder::Status::NeedMore);
+    EXPECT_EQ(decoder.pending(), 0u);
+}
+
+TEST(WireFormat, RecordsSplitAtEveryByteAreReassembled)
+{
+    std::string stream = encode(sample());
+    WireRecord second;
+    second.kind = WireKind::Finished;
+    encode(second, stream);
+    WireDecoder decoder;
+    int records = 0;
+    for (char byte : stream) {
+        decoder.feed(&byte, 1);
+        WireRecord out;
+        while (decoder.next(out) == WireDecoder::Status::Record) {
+            if (records == 0) {
+                expectSame(out, sample());
+            } else {
+                EXPECT_EQ(out.kind, WireKind::Finished);
+            }
+            ++records;
+        }
+    }
+    EXPECT_EQ(records, 2);
+}
+
+TEST(WireFormat, TruncatedRecordIsNeverReturned)
+{
+    std::string bytes = encode(sample());
+    for (std::size_t cut = 0; cut < bytes.size(); ++cut) {
+        WireDecoder decoder;
+        decoder.feed(bytes.data(), cut);
+        WireRecord out;
+        EXPECT_EQ(decoder.next(out), WireDecoder::Status::NeedMore) << "cut at " << cut;
+    }
+}
+
+TEST(WireFormat, OversizedLengthIsCorrupt)
+{
+    WireDecoder decoder;
+    decoder.feed(std::string("\xff\xff\xff\xff garbage", 12));
+    WireRecord out;
+    EXPECT_EQ(decoder.next(out), WireDecoder::Status::Corrupt);
+    decoder.feed(encode(sample()));
+    EXPECT_EQ(decoder.next(out), WireDecoder::Status::Corrupt) << "corrupt stays corrupt";
+}
+
+TEST(WireFormat, BodyWithBadKindOrStringLengthIsCorrupt)
+{
+    std::string bytes = encode(sample());
+    std::string badKind = bytes;
+    badKind[4] = 99;  // the kind byte, just after the length
+    WireDecoder first;
+    first.feed(badKind);
+    WireRecord out;
+    EXPECT_EQ(first.next(out), WireDecoder::Status::Corrupt);
+
+    std::string badString = bytes;
+    badString[4 + 3 + 8] = static_cast<char>(0x7f);  // the name's length runs past the body
+    WireDecoder second;
+    second.feed(badString);
+    EXPECT_EQ(second.next(out), WireDecoder::Status::Corrupt);
+}
+
+TEST(WireFormat, RandomGarbageNeverCrashesTheDecoder)
+{
+    unsigned int seed = 12345;
+    for (int round = 0; round < 2000; ++round) {
+        std::string junk;
+        for (int i = 0; i < 64; ++i) {
+            seed = seed * 1103515245u + 12345u;
+            junk.push_back(static_cast<char>(seed >> 16));
+        }
+        junk[0] = static_cast<char>(round % 60);  // small lengths, so bodies get parsed
+        junk[1] = junk[2] = junk[3] = 0;
+        WireDecoder decoder;
+        decoder.feed(junk);
+        WireRecord out;
+        WireDecoder::Status status;
+        int guard = 0;
+        while ((status = decoder.next(out)) == WireDecoder::Status::Record && ++guard < 100) {
+        }
+        EXPECT_NE(status, WireDecoder::Status::Record);
+    }
+}
+
+TEST(WireFormat, RequestRoundTripsAndRejectsTrailingBytes)
+{
+    WorkRequest request;
+    request.role = WorkRequest::Role::Fixture;
+    request.type = "dll";
+    request.path = "/tmp/libx.so";
+    request.name = "x";
+    request.param = "--robot icubSim";
+    request.environment = "--env 1";
+    request.repetition = 7;
+    std::string bytes = encodeRequest(request);
+    WorkRequest out;
+    ASSERT_TRUE(decodeRequest(bytes, out));
+    EXPECT_EQ(out.role, WorkRequest::Role::Fixture);
+    EXPECT_EQ(out.path, "/tmp/libx.so");
+    EXPECT_EQ(out.param, "--robot icubSim");
+    EXPECT_EQ(out.environment, "--env 1");
+    EXPECT_EQ(out.repetition, 7u);
+    EXPECT_FALSE(decodeRequest(bytes + "x", out));
+    EXPECT_FALSE(decodeRequest(bytes.substr(0, bytes.size() - 1), out));
+    EXPECT_FALSE(decodeRequest("", out));
+}
