@@ -39,9 +39,10 @@ build() {
     cmake --build "$1" -j2
 }
 
-# ctest_summary <ctest log>: prints "N passed, N failed" from ctest's own summary line.
+# ctest_summary <ctest log>: prints "N passed, N failed" from ctest's own summary line. Tests
+# that did not run (skipped, disabled) are neither.
 ctest_summary() {
-    local line total failed
+    local line total failed skipped
     line=$(grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$1" | tail -n 1)
     if [[ -z "$line" ]]; then
         echo "0 passed, 1 failed"
@@ -49,7 +50,9 @@ ctest_summary() {
     fi
     failed=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
     total=$(sed -E 's/.* ([0-9]+) tests? failed out of ([0-9]+).*/\2/' <<<"$line")
-    echo "$((total - failed)) passed, ${failed} failed"
+    skipped=$(sed -n '/^The following tests did not run:/,/^$/p' "$1" |
+        grep -cE '\((Skipped|Disabled)\)$' || true)
+    echo "$((total - failed - skipped)) passed, ${failed} failed"
 }
 
 run_ctest() {
@@ -62,9 +65,7 @@ run_ctest() {
     local summary
     summary=$(ctest_summary "$log")
     echo "$summary"
-    if [[ $status -ne 0 || "$summary" != *" 0 failed" ]]; then
-        exit 1
-    fi
+    [[ $status -eq 0 && "$summary" == *" 0 failed" ]]
 }
 
 [[ $# -eq 1 ]] || usage
@@ -91,11 +92,24 @@ test)
     ;;
 sanitize)
     scripts/install-deps.sh
-    configure build-asan -DRTF_SANITIZE=ON -DRTF_BUILD_EXAMPLES=OFF -DRTF_BUILD_BENCH=OFF
+    # Debug: clearer reports. Warnings stay warnings: GCC 12 gives false maybe-uninitialized
+    # ones in <regex> with the sanitizers on; the normal build keeps -Werror.
+    configure build-asan -DRTF_SANITIZE=ON -DCMAKE_BUILD_TYPE=Debug \
+        -DRTF_WARNINGS_AS_ERRORS=OFF -DRTF_BUILD_EXAMPLES=OFF -DRTF_BUILD_BENCH=OFF
     build build-asan
     # The unit tests (GoogleTest), not the end-to-end ones (e2e.*) nor the format check.
-    ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-        run_ctest build-asan -E '^(e2e\.|ctest\.|format$|bench\.)'
+    # Signals stay the program's: some tests crash plug-ins on purpose and expect SIGSEGV.
+    export ASAN_OPTIONS=detect_leaks=1:handle_segv=0:handle_sigbus=0:handle_sigfpe=0
+    export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
+    export UBSAN_OPTIONS=print_stacktrace=1
+    status=0
+    run_ctest build-asan -E '^(e2e\.|ctest\.|format$|bench\.)' || status=1
+    # Undefined behaviour does not stop a test; any outside the crashing test plug-ins fails.
+    if grep -E 'runtime error:' build-asan/ctest-summary.log | grep -v '/tests/plugins/'; then
+        echo "run.sh: undefined behaviour reported (above)" >&2
+        status=1
+    fi
+    exit $status
     ;;
 *)
     usage

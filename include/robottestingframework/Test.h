@@ -30,8 +30,7 @@ public:
     // carries it here; its suite then skips the tests after it with this reason.
     bool hasCriticalError() const { return critical_; }
     const TestMessage& getCriticalError() const { return criticalError_; }
-    void setCriticalError(const TestMessage& reason)
-    {
+    void setCriticalError(const TestMessage& reason) {
         critical_ = true;
         criticalError_ = reason;
     }

@@ -11,15 +11,13 @@
 #define ROBOTTESTINGFRAMEWORK_SOURCELINE() __LINE__
 
 // The message is the user's text; the detail is the condition checked, when there is one.
-#define ROBOTTESTINGFRAMEWORK_MESSAGE_(message, detail)                      \
-    ::robottestingframework::TestMessage((message), (detail),                \
-                                         ROBOTTESTINGFRAMEWORK_SOURCEFILE(), \
+#define ROBOTTESTINGFRAMEWORK_MESSAGE_(message, detail)                                           \
+    ::robottestingframework::TestMessage((message), (detail), ROBOTTESTINGFRAMEWORK_SOURCEFILE(), \
                                          ROBOTTESTINGFRAMEWORK_SOURCELINE())
 
 // A message in the test's report.
 #define ROBOTTESTINGFRAMEWORK_TEST_REPORT(message) \
-    ::robottestingframework::Asserter::report(     \
-        ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
+    ::robottestingframework::Asserter::report(ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
 
 // Records the check; a false condition marks the test failed and the test goes on.
 #define ROBOTTESTINGFRAMEWORK_TEST_CHECK(condition, message) \
@@ -38,10 +36,9 @@
 // A failure: the test stops.
 #define ROBOTTESTINGFRAMEWORK_ASSERT_FAIL(message) \
     ::robottestingframework::Asserter::fail(ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
-#define ROBOTTESTINGFRAMEWORK_ASSERT_FAIL_IF_TRUE(condition, message) \
-    ::robottestingframework::Asserter::fail(                          \
-        !static_cast<bool>(condition),                                \
-        ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
+#define ROBOTTESTINGFRAMEWORK_ASSERT_FAIL_IF_TRUE(condition, message)      \
+    ::robottestingframework::Asserter::fail(!static_cast<bool>(condition), \
+                                            ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
 #define ROBOTTESTINGFRAMEWORK_ASSERT_FAIL_IF_FALSE(condition, message) \
     ::robottestingframework::Asserter::fail(                           \
         static_cast<bool>(condition),                                  \
@@ -50,22 +47,20 @@
 // An error: the test stops.
 #define ROBOTTESTINGFRAMEWORK_ASSERT_ERROR(message) \
     ::robottestingframework::Asserter::error(ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
-#define ROBOTTESTINGFRAMEWORK_ASSERT_ERROR_IF_TRUE(condition, message) \
-    ::robottestingframework::Asserter::error(                          \
-        !static_cast<bool>(condition),                                 \
-        ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
+#define ROBOTTESTINGFRAMEWORK_ASSERT_ERROR_IF_TRUE(condition, message)      \
+    ::robottestingframework::Asserter::error(!static_cast<bool>(condition), \
+                                             ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
 #define ROBOTTESTINGFRAMEWORK_ASSERT_ERROR_IF_FALSE(condition, message) \
     ::robottestingframework::Asserter::error(                           \
         static_cast<bool>(condition),                                   \
         ROBOTTESTINGFRAMEWORK_MESSAGE_(message, "!(" #condition ")"))
 
 // Beyond RTF 2.x: a critical error. The test stops and the rest of its suite is skipped.
-#define ROBOTTESTINGFRAMEWORK_ASSERT_CRITICAL(message)   \
-    ::robottestingframework::Asserter::criticalError(    \
-        ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
+#define ROBOTTESTINGFRAMEWORK_ASSERT_CRITICAL(message) \
+    ::robottestingframework::Asserter::criticalError(ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""))
 
 // A message in a fixture manager's report (inside FixtureManager member functions).
-#define ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT(message)                                          \
-    ::robottestingframework::Asserter::report(ROBOTTESTINGFRAMEWORK_MESSAGE_(message, \
-                                                                             ""),              \
-                                              static_cast<::robottestingframework::FixtureManager*>(this))
+#define ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT(message) \
+    ::robottestingframework::Asserter::report(        \
+        ROBOTTESTINGFRAMEWORK_MESSAGE_(message, ""),  \
+        static_cast<::robottestingframework::FixtureManager*>(this))

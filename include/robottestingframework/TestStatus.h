@@ -18,8 +18,7 @@ enum class TestStatus {
 const char* toString(TestStatus status);
 
 // True for the states that make a run fail (everything but passed and skipped).
-inline bool isFailure(TestStatus status)
-{
+inline bool isFailure(TestStatus status) {
     return status != TestStatus::Passed && status != TestStatus::Skipped;
 }
 

@@ -5,46 +5,75 @@ namespace isolation {
 
 using Kind = ResultEvent::Kind;
 
-bool relayEvent(const WireRecord& record, const Test* about, TestResult& result)
-{
+bool relayEvent(const WireRecord& record, const Test* about, TestResult& result) {
     if (record.kind != WireKind::Event) {
         return false;
     }
     const TestMessage& msg = record.message;
     switch (record.event) {
-        case Kind::Report: result.addReport(about, msg); break;
-        case Kind::Check: result.addCheck(about, msg, record.flag); break;
-        case Kind::Failure: result.addFailure(about, msg); break;
-        case Kind::Error: result.addError(about, msg); break;
-        case Kind::Skipped: result.addSkipped(about, msg); break;
-        case Kind::Crash: result.addCrash(about, msg); break;
-        case Kind::Timeout: result.addTimeout(about, msg); break;
-        case Kind::Interrupted: result.addInterrupted(about, msg); break;
-        case Kind::Output: result.addOutput(about, msg.getMessage()); break;
-        default: return false;
+        case Kind::Report:
+            result.addReport(about, msg);
+            break;
+        case Kind::Check:
+            result.addCheck(about, msg, record.flag);
+            break;
+        case Kind::Failure:
+            result.addFailure(about, msg);
+            break;
+        case Kind::Error:
+            result.addError(about, msg);
+            break;
+        case Kind::Skipped:
+            result.addSkipped(about, msg);
+            break;
+        case Kind::Crash:
+            result.addCrash(about, msg);
+            break;
+        case Kind::Timeout:
+            result.addTimeout(about, msg);
+            break;
+        case Kind::Interrupted:
+            result.addInterrupted(about, msg);
+            break;
+        case Kind::Output:
+            result.addOutput(about, msg.getMessage());
+            break;
+        default:
+            return false;
     }
     return true;
 }
 
-void EventRelay::start()
-{
+void EventRelay::start() {
     if (!started_) {
         started_ = true;
         result_.startTest(&self_);
     }
 }
 
-void EventRelay::note(Kind kind, const TestMessage& message)
-{
+void EventRelay::note(Kind kind, const TestMessage& message) {
     TestStatus status = status_;
     switch (kind) {
-        case Kind::Skipped: status = TestStatus::Skipped; break;
-        case Kind::Failure: status = TestStatus::Failed; break;
-        case Kind::Error: status = TestStatus::Error; break;
-        case Kind::Crash: status = TestStatus::Crashed; break;
-        case Kind::Timeout: status = TestStatus::TimedOut; break;
-        case Kind::Interrupted: status = TestStatus::Interrupted; break;
-        default: break;
+        case Kind::Skipped:
+            status = TestStatus::Skipped;
+            break;
+        case Kind::Failure:
+            status = TestStatus::Failed;
+            break;
+        case Kind::Error:
+            status = TestStatus::Error;
+            break;
+        case Kind::Crash:
+            status = TestStatus::Crashed;
+            break;
+        case Kind::Timeout:
+            status = TestStatus::TimedOut;
+            break;
+        case Kind::Interrupted:
+            status = TestStatus::Interrupted;
+            break;
+        default:
+            break;
     }
     if (status > status_) {
         status_ = status;
@@ -55,8 +84,7 @@ void EventRelay::note(Kind kind, const TestMessage& message)
     }
 }
 
-void EventRelay::relay(const WireRecord& record)
-{
+void EventRelay::relay(const WireRecord& record) {
     if (record.kind == WireKind::Finished) {
         finished_ = true;
         return;
@@ -92,8 +120,7 @@ void EventRelay::relay(const WireRecord& record)
     }
 }
 
-void EventRelay::add(Kind kind, const TestMessage& message)
-{
+void EventRelay::add(Kind kind, const TestMessage& message) {
     start();
     WireRecord record;
     record.event = kind;
@@ -102,8 +129,7 @@ void EventRelay::add(Kind kind, const TestMessage& message)
     note(kind, message);
 }
 
-void EventRelay::end(const std::string& output)
-{
+void EventRelay::end(const std::string& output) {
     start();
     if (!output.empty()) {
         result_.addOutput(&self_, output);

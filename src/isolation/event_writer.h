@@ -15,8 +15,11 @@ class EventWriter : public TestListener {
 public:
     explicit EventWriter(int fd) : fd_(fd) {}
 
-    // Sends one record; false when the runner is gone.
+    // Sends one record (with any held one before it); false when the runner is gone.
     bool send(const WireRecord& record);
+    // Holds a record until the next send: for records whose loss in a crash costs nothing
+    // (the runner frames the test itself), so that they share a write with the next one.
+    void hold(const WireRecord& record);
     void sendEvent(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
                    bool passed = true);
 
@@ -35,6 +38,7 @@ public:
 private:
     int fd_;
     std::mutex mutex_;
+    std::string held_;
 };
 
 }  // namespace isolation

@@ -28,8 +28,7 @@ public:
 class CollapseSender : public FixtureEvents {
 public:
     explicit CollapseSender(EventWriter& writer) : writer_(writer) {}
-    void fixtureCollapsed(TestMessage reason) override
-    {
+    void fixtureCollapsed(TestMessage reason) override {
         WireRecord record;
         record.kind = WireKind::FixtureCollapsed;
         record.message = reason;
@@ -40,8 +39,7 @@ private:
     EventWriter& writer_;
 };
 
-std::string exceptionText()
-{
+std::string exceptionText() {
     try {
         throw;
     } catch (const std::exception& e) {
@@ -51,8 +49,7 @@ std::string exceptionText()
     }
 }
 
-void reply(EventWriter& writer, bool ok, const TestMessage& why = TestMessage())
-{
+void reply(EventWriter& writer, bool ok, const TestMessage& why = TestMessage()) {
     WireRecord record;
     record.kind = WireKind::Reply;
     record.flag = ok;
@@ -62,8 +59,7 @@ void reply(EventWriter& writer, bool ok, const TestMessage& why = TestMessage())
 
 }  // namespace
 
-int runFixtureWorker(const WorkRequest& request, int channel)
-{
+int runFixtureWorker(const WorkRequest& request, int channel) {
     EventWriter writer(channel);
     std::string error;
     std::unique_ptr<languages::LoadedFixture> loaded;

@@ -22,20 +22,17 @@ namespace {
 
 const char* const kWorkerName = "robottestingframework-worker";
 
-bool isExecutable(const std::string& path)
-{
+bool isExecutable(const std::string& path) {
     return !path.empty() && ::access(path.c_str(), X_OK) == 0;
 }
 
 }  // namespace
 
-ForkServer::~ForkServer()
-{
+ForkServer::~ForkServer() {
     stop();
 }
 
-bool ForkServer::start(const std::string& workerPath, std::string& error)
-{
+bool ForkServer::start(const std::string& workerPath, std::string& error) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ > 0) {
         return true;
@@ -60,8 +57,7 @@ bool ForkServer::start(const std::string& workerPath, std::string& error)
 }
 
 bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int status,
-                       std::string& error)
-{
+                       std::string& error) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ <= 0) {
         error = "the fork server is not running";
@@ -74,8 +70,7 @@ bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int 
     return true;
 }
 
-void ForkServer::stop()
-{
+void ForkServer::stop() {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ <= 0) {
         return;
@@ -90,8 +85,7 @@ void ForkServer::stop()
     pid_ = -1;
 }
 
-std::string findWorker()
-{
+std::string findWorker() {
     if (const char* override = std::getenv("RTF_WORKER")) {
         if (isExecutable(override)) {
             return override;

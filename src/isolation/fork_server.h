@@ -30,8 +30,7 @@ public:
     // Asks for a worker running `request`. `channel` becomes its fd 3 (events out, calls in),
     // `output` its stdout and stderr; Started and Exited records are written to `status`.
     // Thread-safe.
-    bool spawn(const WorkRequest& request, int channel, int output, int status,
-               std::string& error);
+    bool spawn(const WorkRequest& request, int channel, int output, int status, std::string& error);
 
     // Ends the server and, through it, every worker and their descendants. Waits (bounded).
     void stop();

@@ -26,9 +26,8 @@ namespace {
 
 using platform::FileDescriptor;
 
-// In the forked child: become the worker. Never returns.
-[[noreturn]] void becomeWorker(const WorkRequest& request, pid_t server, int channel, int output)
-{
+// In a freshly forked child: the state every worker starts from. Returns in the child.
+void prepareChild(pid_t server) {
     platform::SignalPipe::resetInChild();
     ::signal(SIGPIPE, SIG_DFL);
     ::setpgid(0, 0);
@@ -39,7 +38,10 @@ using platform::FileDescriptor;
     sigset_t none;
     sigemptyset(&none);
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
+}
 
+// Become the worker of `request`. Never returns.
+[[noreturn]] void becomeWorker(const WorkRequest& request, int channel, int output) {
     // 0: /dev/null, 1 and 2: the output pipe, 3: the channel; nothing else is inherited.
     int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
     int high = ::fcntl(channel, F_DUPFD_CLOEXEC, 10);
@@ -59,8 +61,49 @@ using platform::FileDescriptor;
     ::_exit(code);
 }
 
-bool sendStatus(int fd, WireKind kind, std::int64_t number)
-{
+// A spare: forked ahead of time, so the fork is not on the path of the next test. It waits
+// on `link` for its request and the two descriptors, then becomes that worker.
+[[noreturn]] void waitAsSpare(int link, pid_t server) {
+    prepareChild(server);
+    ::dup2(link, 4);
+    platform::closeDescriptorsFrom(5);
+    ::close(3);
+    std::string packet;
+    std::vector<FileDescriptor> fds;
+    WorkRequest request;
+    if (!platform::receiveWithFds(4, packet, fds) || fds.size() != 2 ||
+        !decodeRequest(packet, request)) {
+        ::_exit(0);  // the server is gone or shutting down
+    }
+    becomeWorker(request, fds[0].get(), fds[1].get());
+}
+
+struct Spare {
+    pid_t pid = -1;
+    FileDescriptor link;
+};
+
+// Forks the next spare; false (no spare) when fork fails.
+bool makeSpare(Spare& spare, pid_t server) {
+    FileDescriptor ours, theirs;
+    if (!platform::makeSocketPair(ours, theirs, true)) {
+        return false;
+    }
+    pid_t pid = ::fork();
+    if (pid == 0) {
+        waitAsSpare(theirs.get(), server);
+    }
+    if (pid < 0) {
+        return false;
+    }
+    // Both sides set the group, so it exists before anyone signals it.
+    ::setpgid(pid, pid);
+    spare.pid = pid;
+    spare.link = std::move(ours);
+    return true;
+}
+
+bool sendStatus(int fd, WireKind kind, std::int64_t number) {
     WireRecord record;
     record.kind = kind;
     record.number = number;
@@ -68,8 +111,7 @@ bool sendStatus(int fd, WireKind kind, std::int64_t number)
 }
 
 // Kills every descendant until none is left, reaping as they go. Bounded.
-void killEverything()
-{
+void killEverything() {
     pid_t self = ::getpid();
     platform::Deadline deadline(5.0);
     while (!deadline.expired()) {
@@ -89,8 +131,7 @@ void killEverything()
 
 }  // namespace
 
-int serveForkRequests(int control)
-{
+int serveForkRequests(int control) {
     ::signal(SIGPIPE, SIG_IGN);  // a runner that went away must not kill us before we clean up
     platform::SignalPipe signals({SIGCHLD, SIGTERM, SIGINT, SIGHUP});
     platform::becomeSubreaper();
@@ -104,7 +145,12 @@ int serveForkRequests(int control)
     std::string packet;
     std::vector<FileDescriptor> fds;
     std::vector<bool> ready;
+    Spare spare;
     while (running) {
+        // The next worker is forked while the runner is busy with the current one.
+        if (spare.pid < 0) {
+            makeSpare(spare, self);
+        }
         platform::waitReadable({control, signals.fd()}, -1, ready);
         if (ready[1]) {
             while (int signal = signals.take()) {
@@ -122,6 +168,10 @@ int serveForkRequests(int control)
                     sendStatus(it->second.get(), WireKind::Exited, status);
                     statusOf.erase(it);
                 }
+                if (pid == spare.pid) {
+                    spare.pid = -1;  // the spare died waiting (killed from outside)
+                    spare.link.reset();
+                }
                 // Otherwise an orphan that was re-parented to us: reaped, nothing to say.
             }
         }
@@ -136,21 +186,31 @@ int serveForkRequests(int control)
             if (fds.size() != 3 || !decodeRequest(packet, request)) {
                 continue;  // not a request we understand; its descriptors close here
             }
-            pid_t pid = ::fork();
-            if (pid == 0) {
-                becomeWorker(request, self, fds[0].get(), fds[1].get());
+            // Hand the request to the spare (forking one now if there is none).
+            pid_t pid = -1;
+            for (int attempt = 0; attempt < 2 && pid < 0; ++attempt) {
+                if (spare.pid < 0 && !makeSpare(spare, self)) {
+                    break;
+                }
+                if (platform::sendWithFds(spare.link.get(), packet, {fds[0].get(), fds[1].get()})) {
+                    pid = spare.pid;
+                } else {
+                    ::kill(spare.pid, SIGKILL);  // a broken spare; reaped as an orphan
+                }
+                spare.link.reset();
+                spare.pid = -1;
             }
             if (pid < 0) {
                 sendStatus(fds[2].get(), WireKind::Exited, -1);
+                fds.clear();
                 continue;
             }
-            // Both sides set the group, so it exists before anyone signals it.
-            ::setpgid(pid, pid);
             sendStatus(fds[2].get(), WireKind::Started, pid);
             statusOf[pid] = std::move(fds[2]);
             fds.clear();
         }
     }
+    spare.link.reset();
     killEverything();
     return 0;
 }

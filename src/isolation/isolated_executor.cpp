@@ -22,21 +22,18 @@ namespace {
 
 using Kind = ResultEvent::Kind;
 
-std::string seconds(double value)
-{
+std::string seconds(double value) {
     std::ostringstream text;
     text << value << " s";
     return text.str();
 }
 
-std::string said(const EventRelay& relay)
-{
+std::string said(const EventRelay& relay) {
     return relay.lastSaid().empty() ? "it reported nothing before"
                                     : "last reported: " + relay.lastSaid();
 }
 
-std::string folderOf(const std::string& file)
-{
+std::string folderOf(const std::string& file) {
     std::size_t slash = file.rfind('/');
     if (file.empty() || slash == std::string::npos) {
         return ".";
@@ -47,8 +44,7 @@ std::string folderOf(const std::string& file)
 // The file and type of a plug-in, as the in-process executor finds them. False with `error`.
 bool locate(const std::string& plugin, const std::string& given, const std::string& givenType,
             const runner::SourceLocation& where, std::string& path, std::string& type,
-            std::string& error)
-{
+            std::string& error) {
     path = given;
     if (path.empty()) {
         std::string searched;
@@ -72,8 +68,7 @@ bool locate(const std::string& plugin, const std::string& given, const std::stri
     return true;
 }
 
-void drain(int fd)
-{
+void drain(int fd) {
     char buffer[64];
     while (::read(fd, buffer, sizeof(buffer)) > 0) {
     }
@@ -82,20 +77,17 @@ void drain(int fd)
 }  // namespace
 
 IsolatedExecutor::IsolatedExecutor(IsolationOptions options)
-    : options_(std::move(options)), server_(std::make_shared<ForkServer>())
-{
+    : options_(std::move(options)), server_(std::make_shared<ForkServer>()) {
     platform::makePipe(wakeRead_, wakeWrite_);
     platform::setNonBlocking(wakeRead_.get());
     platform::setNonBlocking(wakeWrite_.get());
 }
 
-IsolatedExecutor::~IsolatedExecutor()
-{
+IsolatedExecutor::~IsolatedExecutor() {
     shutdown();
 }
 
-bool IsolatedExecutor::start(std::string& error)
-{
+bool IsolatedExecutor::start(std::string& error) {
     if (server_->running()) {
         return true;
     }
@@ -107,13 +99,11 @@ bool IsolatedExecutor::start(std::string& error)
     return server_->start(worker, error);
 }
 
-void IsolatedExecutor::shutdown()
-{
+void IsolatedExecutor::shutdown() {
     server_->stop();
 }
 
-void IsolatedExecutor::interrupt()
-{
+void IsolatedExecutor::interrupt() {
     interrupted_ = true;
     char byte = 1;
     // Async-signal-safe: may be called from a signal handler as well as another thread.
@@ -121,8 +111,7 @@ void IsolatedExecutor::interrupt()
     (void)ignored;
 }
 
-TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestResult& result)
-{
+TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestResult& result) {
     self.clearCriticalError();
     EventRelay relay(self, result);
     drain(wakeRead_.get());
@@ -135,8 +124,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     request.repetition = spec.repetition == 0 ? 1 : spec.repetition;
 
     std::string error;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type,
-                error)) {
+    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type, error)) {
         relay.add(Kind::Failure, TestMessage("cannot load " + spec.plugin, error));
         relay.end("");
         return relay.status();
@@ -154,14 +142,15 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     enum class Stop { None, Timeout, Interrupt, Garbage } why = Stop::None;
     platform::Deadline deadline(spec.timeout);
     std::vector<WireRecord> records;
-    while (!worker.exited()) {
+    for (;;) {
         records.clear();
         bool woken = false;
         worker.pump(deadline.remainingMs(), records, wakeRead_.get(), &woken);
         for (const WireRecord& record : records) {
             relay.relay(record);
         }
-        if (worker.exited()) {
+        // Finished is the worker's last word (only _exit follows): the test is over.
+        if (worker.exited() || relay.finished()) {
             break;
         }
         if (woken || interrupted_) {
@@ -184,6 +173,9 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
             relay.relay(record);
         }
     }
+    if (relay.finished() && !worker.exited()) {
+        worker.drainOutput();
+    }
     platform::ExitStatus ending = platform::ExitStatus::fromWaitStatus(worker.waitStatus());
     std::string forced = polite ? "" : " (it ignored SIGTERM and was killed)";
     if (why == Stop::Timeout) {
@@ -195,36 +187,29 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
         relay.add(Kind::Error, TestMessage("the worker sent unreadable events; it was stopped",
                                            ending.toString()));
     } else if (!relay.finished()) {
-        // The worker died before the test ended.
+        // The worker died before it finished (in the test, or destroying it after endTest).
         if (ending.signaled) {
             relay.add(Kind::Crash,
                       TestMessage("crashed: " + platform::signalName(ending.signal) + " (" +
                                       platform::signalDescription(ending.signal) + ")",
                                   said(relay)));
         } else {
-            relay.add(Kind::Error, TestMessage("exited with status " +
-                                                   std::to_string(ending.code) +
+            relay.add(Kind::Error, TestMessage("exited with status " + std::to_string(ending.code) +
                                                    " before the test ended",
                                                said(relay)));
         }
-    } else if (!ending.success()) {
-        relay.add(ending.signaled ? Kind::Crash : Kind::Error,
-                  TestMessage("the test's process " + ending.toString() + " after the test ended",
-                              "while destroying the test or unloading its plug-in"));
     }
     relay.end(worker.output().take());
     return relay.status();
 }
 
 std::unique_ptr<FixtureManager> IsolatedExecutor::makeFixture(const runner::FixtureSpec& spec,
-                                                              std::string& error)
-{
+                                                              std::string& error) {
     WorkRequest request;
     request.role = WorkRequest::Role::Fixture;
     request.param = spec.param;
     request.name = spec.plugin;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type,
-                error)) {
+    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type, error)) {
         return nullptr;
     }
     if (!start(error)) {

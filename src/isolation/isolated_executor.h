@@ -20,9 +20,9 @@ namespace robottestingframework {
 namespace isolation {
 
 struct IsolationOptions {
-    std::string workerPath;         // empty: findWorker()
-    double killGrace = 1.0;         // seconds between SIGTERM and SIGKILL when stopping a test
-    double fixtureTimeout = 120.0;  // bound on each fixture setup/check/tearDown; 0: none
+    std::string workerPath;              // empty: findWorker()
+    double killGrace = 1.0;              // seconds between SIGTERM and SIGKILL when stopping a test
+    double fixtureTimeout = 120.0;       // bound on each fixture setup/check/tearDown; 0: none
     std::size_t outputTail = 64 * 1024;  // bytes of a test's output kept for the report
 };
 

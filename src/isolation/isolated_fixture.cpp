@@ -22,13 +22,11 @@ IsolatedFixture::IsolatedFixture(std::shared_ptr<ForkServer> server, WorkRequest
     : FixtureManager(nullptr, request.param),
       server_(std::move(server)),
       request_(std::move(request)),
-      options_(std::move(options))
-{
+      options_(std::move(options)) {
     setName(request_.name);
 }
 
-IsolatedFixture::~IsolatedFixture()
-{
+IsolatedFixture::~IsolatedFixture() {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         quitting_ = true;
@@ -51,8 +49,7 @@ IsolatedFixture::~IsolatedFixture()
     }
 }
 
-void IsolatedFixture::watch()
-{
+void IsolatedFixture::watch() {
     std::vector<WireRecord> records;
     for (;;) {
         records.clear();
@@ -95,8 +92,8 @@ void IsolatedFixture::watch()
         }
         if (diedQuietly && dispatcher != nullptr) {
             dispatcher->fixtureCollapsed(
-                TestMessage("fixture " + getName() + " died: " +
-                            platform::ExitStatus::fromWaitStatus(status).toString()));
+                TestMessage("fixture " + getName() +
+                            " died: " + platform::ExitStatus::fromWaitStatus(status).toString()));
         }
         if (worker_->exited() || woken) {
             return;
@@ -104,8 +101,7 @@ void IsolatedFixture::watch()
     }
 }
 
-void IsolatedFixture::flush()
-{
+void IsolatedFixture::flush() {
     std::deque<WireRecord> events;
     std::string output;
     {
@@ -125,14 +121,12 @@ void IsolatedFixture::flush()
     }
 }
 
-void IsolatedFixture::waitDead(double seconds)
-{
+void IsolatedFixture::waitDead(double seconds) {
     std::unique_lock<std::mutex> lock(mutex_);
     changed_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return dead_; });
 }
 
-void IsolatedFixture::kill()
-{
+void IsolatedFixture::kill() {
     if (pid_ <= 0) {
         return;
     }
@@ -150,8 +144,7 @@ void IsolatedFixture::kill()
     }
 }
 
-bool IsolatedFixture::call(const std::string& name, const std::string& payload)
-{
+bool IsolatedFixture::call(const std::string& name, const std::string& payload) {
     failure_.clear();
     if (!worker_) {
         worker_.reset(new WorkerProcess());
@@ -229,8 +222,7 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload)
     return ok;
 }
 
-bool IsolatedFixture::setup(int argc, char** argv)
-{
+bool IsolatedFixture::setup(int argc, char** argv) {
     std::string payload;
     for (int i = 0; i < argc; ++i) {
         if (i > 0) {
@@ -244,13 +236,11 @@ bool IsolatedFixture::setup(int argc, char** argv)
     return call("setup", payload);
 }
 
-bool IsolatedFixture::check()
-{
+bool IsolatedFixture::check() {
     return call("check", "");
 }
 
-void IsolatedFixture::tearDown()
-{
+void IsolatedFixture::tearDown() {
     if (!worker_) {
         return;
     }

@@ -38,9 +38,9 @@ public:
 
 private:
     bool call(const std::string& name, const std::string& payload);
-    void watch();            // the reader thread: pumps the worker, never touches the result
-    void flush();            // on the caller's thread: queued events and output to the result
-    void kill();             // stops the worker's process tree (called with nothing locked)
+    void watch();  // the reader thread: pumps the worker, never touches the result
+    void flush();  // on the caller's thread: queued events and output to the result
+    void kill();   // stops the worker's process tree (called with nothing locked)
     void waitDead(double seconds);
 
     std::shared_ptr<ForkServer> server_;

@@ -1,3 +1,4 @@
+#include <cstdio>
 #include <exception>
 #include <stdexcept>
 #include <typeinfo>
@@ -16,8 +17,7 @@ namespace {
 EventWriter* activeWriter = nullptr;
 std::string activeName;
 
-std::string describeCurrentException()
-{
+std::string describeCurrentException() {
     try {
         throw;
     } catch (const std::exception& e) {
@@ -29,8 +29,7 @@ std::string describeCurrentException()
 
 // An exception that escapes everything (a test's own thread, a noexcept function): say what
 // it was before the process aborts, so the report has more than "SIGABRT".
-[[noreturn]] void onTerminate()
-{
+[[noreturn]] void onTerminate() {
     if (activeWriter != nullptr && std::current_exception()) {
         WireRecord record;
         record.kind = WireKind::Event;
@@ -42,16 +41,14 @@ std::string describeCurrentException()
     std::abort();
 }
 
-std::string baseName(const std::string& path)
-{
+std::string baseName(const std::string& path) {
     std::size_t slash = path.find_last_of('/');
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 }  // namespace
 
-int runTestWorker(const WorkRequest& request, int channel)
-{
+int runTestWorker(const WorkRequest& request, int channel) {
     EventWriter writer(channel);
     activeWriter = &writer;
     activeName = request.name.empty() ? baseName(request.path) : request.name;
@@ -92,7 +89,7 @@ int runTestWorker(const WorkRequest& request, int channel)
     described.kind = WireKind::Described;
     described.name = test->getName();
     described.message = TestMessage(test->getDescription());
-    writer.send(described);
+    writer.hold(described);  // goes out with startTest
 
     TestResult result;
     result.addListener(&writer);
@@ -100,8 +97,7 @@ int runTestWorker(const WorkRequest& request, int channel)
         test->run(result);
     } catch (...) {
         // TestCase::run catches what the test throws; this is for what escapes it anyway.
-        writer.sendEvent(ResultEvent::Kind::Error, test,
-                         TestMessage(describeCurrentException()));
+        writer.sendEvent(ResultEvent::Kind::Error, test, TestMessage(describeCurrentException()));
         writer.sendEvent(ResultEvent::Kind::EndTest, test, TestMessage());
     }
     if (test->hasCriticalError()) {
@@ -111,9 +107,13 @@ int runTestWorker(const WorkRequest& request, int channel)
         record.message = test->getCriticalError();
         writer.send(record);
     }
-    writer.send(WireRecord{WireKind::Finished, {}, test->getName(), {}, true, 0});
-    // Destroying the test runs the plug-in's destructors: a crash there is still reported.
+    std::string name = test->getName();
+    // Destroying the test runs the plug-in's destructors: a crash there is still reported,
+    // as it comes before Finished. After Finished the runner no longer waits for us.
     loaded.reset();
+    std::fflush(stdout);
+    std::fflush(stderr);
+    writer.send(WireRecord{WireKind::Finished, {}, name, {}, true, 0});
     activeWriter = nullptr;
     return 0;
 }

@@ -10,8 +10,7 @@ namespace {
 constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::Described);
 constexpr std::uint8_t kLastEvent = static_cast<std::uint8_t>(ResultEvent::Kind::Output);
 
-void putU32(std::string& out, std::uint32_t value)
-{
+void putU32(std::string& out, std::uint32_t value) {
     char bytes[4];
     for (int i = 0; i < 4; ++i) {
         bytes[i] = static_cast<char>((value >> (8 * i)) & 0xff);
@@ -19,15 +18,13 @@ void putU32(std::string& out, std::uint32_t value)
     out.append(bytes, 4);
 }
 
-void putI64(std::string& out, std::int64_t value)
-{
+void putI64(std::string& out, std::int64_t value) {
     auto bits = static_cast<std::uint64_t>(value);
     putU32(out, static_cast<std::uint32_t>(bits & 0xffffffffu));
     putU32(out, static_cast<std::uint32_t>(bits >> 32));
 }
 
-void putString(std::string& out, const std::string& text)
-{
+void putString(std::string& out, const std::string& text) {
     putU32(out, static_cast<std::uint32_t>(text.size()));
     out.append(text);
 }
@@ -37,16 +34,14 @@ class Reader {
 public:
     Reader(const char* data, std::size_t size) : data_(data), size_(size) {}
 
-    bool u8(std::uint8_t& value)
-    {
+    bool u8(std::uint8_t& value) {
         if (size_ - at_ < 1) {
             return false;
         }
         value = static_cast<std::uint8_t>(data_[at_++]);
         return true;
     }
-    bool u32(std::uint32_t& value)
-    {
+    bool u32(std::uint32_t& value) {
         if (size_ - at_ < 4) {
             return false;
         }
@@ -58,8 +53,7 @@ public:
         at_ += 4;
         return true;
     }
-    bool i64(std::int64_t& value)
-    {
+    bool i64(std::int64_t& value) {
         std::uint32_t low, high;
         if (!u32(low) || !u32(high)) {
             return false;
@@ -67,8 +61,7 @@ public:
         value = static_cast<std::int64_t>((static_cast<std::uint64_t>(high) << 32) | low);
         return true;
     }
-    bool string(std::string& text)
-    {
+    bool string(std::string& text) {
         std::uint32_t length;
         if (!u32(length) || size_ - at_ < length) {
             return false;
@@ -85,15 +78,14 @@ private:
     std::size_t at_ = 0;
 };
 
-bool decodeBody(const char* data, std::size_t size, WireRecord& record)
-{
+bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     Reader in(data, size);
     std::uint8_t kind, event, flag;
     std::string message, detail, file;
     std::uint32_t line;
     if (!in.u8(kind) || !in.u8(event) || !in.u8(flag) || !in.i64(record.number) ||
-        !in.string(record.name) || !in.string(message) || !in.string(detail) ||
-        !in.string(file) || !in.u32(line) || !in.done()) {
+        !in.string(record.name) || !in.string(message) || !in.string(detail) || !in.string(file) ||
+        !in.u32(line) || !in.done()) {
         return false;
     }
     if (kind < 1 || kind > kLastKind || event > kLastEvent || flag > 1) {
@@ -108,8 +100,7 @@ bool decodeBody(const char* data, std::size_t size, WireRecord& record)
 
 }  // namespace
 
-void encode(const WireRecord& record, std::string& out)
-{
+void encode(const WireRecord& record, std::string& out) {
     std::size_t start = out.size();
     putU32(out, 0);  // the length, filled in below
     out.push_back(static_cast<char>(record.kind));
@@ -127,15 +118,13 @@ void encode(const WireRecord& record, std::string& out)
     }
 }
 
-std::string encode(const WireRecord& record)
-{
+std::string encode(const WireRecord& record) {
     std::string out;
     encode(record, out);
     return out;
 }
 
-WireDecoder::Status WireDecoder::next(WireRecord& record)
-{
+WireDecoder::Status WireDecoder::next(WireRecord& record) {
     if (corrupt_) {
         return Status::Corrupt;
     }
@@ -168,8 +157,7 @@ WireDecoder::Status WireDecoder::next(WireRecord& record)
     return Status::Record;
 }
 
-std::string encodeRequest(const WorkRequest& request)
-{
+std::string encodeRequest(const WorkRequest& request) {
     std::string out;
     out.push_back(static_cast<char>(request.role));
     putString(out, request.type);
@@ -181,13 +169,12 @@ std::string encodeRequest(const WorkRequest& request)
     return out;
 }
 
-bool decodeRequest(const std::string& data, WorkRequest& request)
-{
+bool decodeRequest(const std::string& data, WorkRequest& request) {
     Reader in(data.data(), data.size());
     std::uint8_t role;
     if (!in.u8(role) || !in.string(request.type) || !in.string(request.path) ||
-        !in.string(request.name) || !in.string(request.param) ||
-        !in.string(request.environment) || !in.u32(request.repetition) || !in.done()) {
+        !in.string(request.name) || !in.string(request.param) || !in.string(request.environment) ||
+        !in.u32(request.repetition) || !in.done()) {
         return false;
     }
     if (role != static_cast<std::uint8_t>(WorkRequest::Role::Test) &&

@@ -71,9 +71,9 @@ private:
 struct WorkRequest {
     enum class Role : std::uint8_t { Test = 1, Fixture };
     Role role = Role::Test;
-    std::string type;         // "dll", "python", ... as languages::loadTest takes it
-    std::string path;         // the resolved file
-    std::string name;         // the name to give it (empty: the plug-in's own)
+    std::string type;  // "dll", "python", ... as languages::loadTest takes it
+    std::string path;  // the resolved file
+    std::string name;  // the name to give it (empty: the plug-in's own)
     std::string param;
     std::string environment;  // the suite's environment string (TestCase::setEnvironment)
     std::uint32_t repetition = 1;

@@ -8,8 +8,7 @@
 
 #include "fork_server_loop.h"
 
-int main(int argc, char** argv)
-{
+int main(int argc, char** argv) {
     if (argc == 3 && std::strcmp(argv[1], "--fork-server") == 0) {
         char* end = nullptr;
         long fd = std::strtol(argv[2], &end, 10);

@@ -9,8 +9,7 @@
 namespace robottestingframework {
 namespace isolation {
 
-void OutputTail::append(const std::string& bytes)
-{
+void OutputTail::append(const std::string& bytes) {
     text_ += bytes;
     if (text_.size() > limit_ + limit_ / 2) {
         // Trim in chunks, not on every append.
@@ -20,8 +19,7 @@ void OutputTail::append(const std::string& bytes)
     }
 }
 
-std::string OutputTail::take()
-{
+std::string OutputTail::take() {
     if (text_.size() > limit_) {
         dropped_ += text_.size() - limit_;
         text_.erase(0, text_.size() - limit_);
@@ -36,16 +34,15 @@ std::string OutputTail::take()
     return text;
 }
 
-WorkerProcess::~WorkerProcess()
-{
+WorkerProcess::~WorkerProcess() {
     if (pid_ > 0 && !exited_) {
-        // The fork server reaps it; nobody waits here.
+        // Whatever is left of the worker's group goes now (it may be a worker that finished and
+        // is exiting, or the children it left). The fork server reaps; nobody waits here.
         platform::signalProcessGroup(pid_, SIGKILL);
     }
 }
 
-bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error)
-{
+bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error) {
     platform::FileDescriptor theirChannel, outputWrite, statusWrite;
     if (!platform::makeSocketPair(channel_, theirChannel, false) ||
         !platform::makePipe(output_fd_, outputWrite) ||
@@ -66,22 +63,23 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
     platform::setNonBlocking(status_fd_.get());
 
     platform::Deadline deadline(10.0);
+    // The worker may write (even end) before the server tells us its pid: keep what comes.
     std::vector<WireRecord> early;
     while (pid_ <= 0 && !exited_ && !deadline.expired()) {
-        pump(deadline.remainingMs(), early);
+        early.clear();
+        collect(deadline.remainingMs(), early, -1, nullptr);
+        backlog_.insert(backlog_.end(), early.begin(), early.end());
     }
     if (pid_ <= 0) {
-        error = exited_ ? "the fork server could not start a worker"
-                        : "the fork server did not answer";
+        error =
+            exited_ ? "the fork server could not start a worker" : "the fork server did not answer";
         exited_ = true;
         return false;
     }
-    // Records cannot come before the pid (the server writes it first), but keep the rule simple.
     return true;
 }
 
-void WorkerProcess::readChannel(std::vector<WireRecord>& records)
-{
+void WorkerProcess::readChannel(std::vector<WireRecord>& records) {
     std::string bytes;
     for (;;) {
         bytes.clear();
@@ -111,8 +109,7 @@ void WorkerProcess::readChannel(std::vector<WireRecord>& records)
     }
 }
 
-void WorkerProcess::readOutput()
-{
+void WorkerProcess::readOutput() {
     std::string bytes;
     for (;;) {
         bytes.clear();
@@ -128,8 +125,13 @@ void WorkerProcess::readOutput()
     }
 }
 
-void WorkerProcess::readStatus(std::vector<WireRecord>& records)
-{
+void WorkerProcess::drainOutput() {
+    if (output_fd_.valid()) {
+        readOutput();
+    }
+}
+
+void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     std::string bytes;
     long n;
     while ((n = platform::readSome(status_fd_.get(), bytes)) > 0) {
@@ -165,8 +167,20 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records)
     }
 }
 
-bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken)
-{
+bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
+    if (!backlog_.empty()) {
+        if (woken != nullptr) {
+            *woken = false;
+        }
+        records.insert(records.end(), backlog_.begin(), backlog_.end());
+        backlog_.clear();
+        return true;
+    }
+    return collect(timeoutMs, records, wake, woken);
+}
+
+bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int wake,
+                            bool* woken) {
     if (woken != nullptr) {
         *woken = false;
     }
@@ -193,20 +207,17 @@ bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wa
     return true;
 }
 
-bool WorkerProcess::send(const WireRecord& record)
-{
+bool WorkerProcess::send(const WireRecord& record) {
     return channel_.valid() && !exited_ && platform::sendAll(channel_.get(), encode(record));
 }
 
-void WorkerProcess::signal(int signal)
-{
+void WorkerProcess::signal(int signal) {
     if (pid_ > 0 && !exited_) {
         platform::signalProcessGroup(pid_, signal);
     }
 }
 
-bool WorkerProcess::stop(double grace, std::vector<WireRecord>& records)
-{
+bool WorkerProcess::stop(double grace, std::vector<WireRecord>& records) {
     signal(SIGTERM);
     signal(SIGCONT);  // a stopped worker acts on SIGTERM only once continued
     platform::Deadline polite(grace > 0 ? grace : 1e-6);

@@ -53,7 +53,7 @@ public:
 
     // Sends a record to the worker (fixture calls). False when it is gone.
     bool send(const WireRecord& record);
-    // Signals the worker's whole process group.
+    // Signals the worker's whole process group (until it is known to have ended).
     void signal(int signal);
     // SIGTERM to the group, up to `grace` seconds (pumping records into `records`), then
     // SIGKILL; returns once the worker ended (bounded: 10 s after the SIGKILL).
@@ -61,16 +61,21 @@ public:
     bool stop(double grace, std::vector<WireRecord>& records);
 
     OutputTail& output() { return output_; }
+    // Reads whatever output is already waiting in the pipe (the worker said it is done).
+    void drainOutput();
     // Our end of the channel (fixture calls go out on a duplicate of it).
     int channel() const { return channel_.get(); }
 
 private:
+    // pump() without the backlog.
+    bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
     void readChannel(std::vector<WireRecord>& records);
     void readOutput();
     void readStatus(std::vector<WireRecord>& records);
 
     platform::FileDescriptor channel_, output_fd_, status_fd_;
     WireDecoder events_, statuses_;
+    std::vector<WireRecord> backlog_;  // received while start() waited for the pid
     OutputTail output_;
     pid_t pid_ = -1;
     bool exited_ = false;

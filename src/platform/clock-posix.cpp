@@ -7,8 +7,7 @@
 namespace robottestingframework {
 namespace platform {
 
-double monotonicSeconds()
-{
+double monotonicSeconds() {
     timespec now{};
     ::clock_gettime(CLOCK_MONOTONIC, &now);
     return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
@@ -16,13 +15,11 @@ double monotonicSeconds()
 
 Deadline::Deadline(double seconds) : at_(seconds > 0 ? monotonicSeconds() + seconds : -1) {}
 
-bool Deadline::expired() const
-{
+bool Deadline::expired() const {
     return at_ >= 0 && monotonicSeconds() >= at_;
 }
 
-int Deadline::remainingMs(int cap) const
-{
+int Deadline::remainingMs(int cap) const {
     if (at_ < 0) {
         return cap;
     }

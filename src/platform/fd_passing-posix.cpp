@@ -9,8 +9,7 @@
 namespace robottestingframework {
 namespace platform {
 
-bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds)
-{
+bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
     if (data.size() > kMaxPacket || fds.size() > kMaxPassedFds) {
         errno = EMSGSIZE;
         return false;
@@ -46,8 +45,7 @@ bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fd
     }
 }
 
-bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds)
-{
+bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds) {
     data.resize(kMaxPacket);
     iovec iov{};
     iov.iov_base = &data[0];

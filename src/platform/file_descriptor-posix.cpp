@@ -14,31 +14,27 @@
 namespace robottestingframework {
 namespace platform {
 
-FileDescriptor& FileDescriptor::operator=(FileDescriptor&& other) noexcept
-{
+FileDescriptor& FileDescriptor::operator=(FileDescriptor&& other) noexcept {
     if (this != &other) {
         reset(other.release());
     }
     return *this;
 }
 
-int FileDescriptor::release()
-{
+int FileDescriptor::release() {
     int fd = fd_;
     fd_ = -1;
     return fd;
 }
 
-void FileDescriptor::reset(int fd)
-{
+void FileDescriptor::reset(int fd) {
     if (fd_ >= 0) {
         ::close(fd_);
     }
     fd_ = fd;
 }
 
-bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd)
-{
+bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd) {
     int fds[2];
     if (::pipe2(fds, O_CLOEXEC) != 0) {
         return false;
@@ -48,8 +44,7 @@ bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd)
     return true;
 }
 
-bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets)
-{
+bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets) {
     int fds[2];
     int type = (packets ? SOCK_SEQPACKET : SOCK_STREAM) | SOCK_CLOEXEC;
     if (::socketpair(AF_UNIX, type, 0, fds) != 0) {
@@ -60,8 +55,7 @@ bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets)
     return true;
 }
 
-void closeDescriptorsFrom(int first)
-{
+void closeDescriptorsFrom(int first) {
 #if defined(__linux__) && defined(SYS_close_range)
     if (::syscall(SYS_close_range, first, UINT_MAX, 0) == 0) {
         return;
@@ -73,24 +67,21 @@ void closeDescriptorsFrom(int first)
     }
 }
 
-void setNonBlocking(int fd, bool on)
-{
+void setNonBlocking(int fd, bool on) {
     int flags = ::fcntl(fd, F_GETFL);
     if (flags >= 0) {
         ::fcntl(fd, F_SETFL, on ? (flags | O_NONBLOCK) : (flags & ~O_NONBLOCK));
     }
 }
 
-void setCloseOnExec(int fd, bool on)
-{
+void setCloseOnExec(int fd, bool on) {
     int flags = ::fcntl(fd, F_GETFD);
     if (flags >= 0) {
         ::fcntl(fd, F_SETFD, on ? (flags | FD_CLOEXEC) : (flags & ~FD_CLOEXEC));
     }
 }
 
-bool writeAll(int fd, const void* data, std::size_t size)
-{
+bool writeAll(int fd, const void* data, std::size_t size) {
     const char* p = static_cast<const char*>(data);
     while (size > 0) {
         // send() with MSG_NOSIGNAL would only work on sockets; writers ignore SIGPIPE instead.
@@ -110,8 +101,7 @@ bool writeAll(int fd, const void* data, std::size_t size)
     return true;
 }
 
-bool sendAll(int socket, const std::string& data)
-{
+bool sendAll(int socket, const std::string& data) {
     const char* p = data.data();
     std::size_t size = data.size();
     while (size > 0) {
@@ -131,8 +121,7 @@ bool sendAll(int socket, const std::string& data)
     return true;
 }
 
-long readSome(int fd, std::string& out, std::size_t max)
-{
+long readSome(int fd, std::string& out, std::size_t max) {
     char buffer[65536];
     if (max > sizeof(buffer)) {
         max = sizeof(buffer);
@@ -152,8 +141,7 @@ long readSome(int fd, std::string& out, std::size_t max)
     }
 }
 
-bool waitReadable(const std::vector<int>& fds, int timeoutMs, std::vector<bool>& ready)
-{
+bool waitReadable(const std::vector<int>& fds, int timeoutMs, std::vector<bool>& ready) {
     std::vector<pollfd> pfds(fds.size());
     for (std::size_t i = 0; i < fds.size(); ++i) {
         pfds[i] = pollfd{fds[i], POLLIN, 0};

@@ -41,8 +41,7 @@ void setCloseOnExec(int fd, bool on = true);
 
 // Writes everything (waiting while a non-blocking fd is full). False when the reader is gone.
 bool writeAll(int fd, const void* data, std::size_t size);
-inline bool writeAll(int fd, const std::string& data)
-{
+inline bool writeAll(int fd, const std::string& data) {
     return writeAll(fd, data.data(), data.size());
 }
 

@@ -22,8 +22,7 @@ namespace platform {
 
 namespace {
 
-[[noreturn]] void failChild(int reportFd, const char* what)
-{
+[[noreturn]] void failChild(int reportFd, const char* what) {
     int code = errno;
     ssize_t ignored = ::write(reportFd, &code, sizeof(code));
     ignored = ::write(reportFd, what, ::strlen(what));
@@ -33,8 +32,7 @@ namespace {
 
 }  // namespace
 
-pid_t spawnProcess(const SpawnOptions& options, std::string& error)
-{
+pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
     if (options.argv.empty()) {
         error = "nothing to run";
         return -1;
@@ -142,8 +140,7 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error)
     return pid;
 }
 
-ExitStatus ExitStatus::fromWaitStatus(int status)
-{
+ExitStatus ExitStatus::fromWaitStatus(int status) {
     ExitStatus result;
     if (WIFSIGNALED(status)) {
         result.signaled = true;
@@ -157,16 +154,14 @@ ExitStatus ExitStatus::fromWaitStatus(int status)
     return result;
 }
 
-std::string ExitStatus::toString() const
-{
+std::string ExitStatus::toString() const {
     if (signaled) {
         return "killed by " + signalName(signal) + " (" + signalDescription(signal) + ")";
     }
     return "exited with status " + std::to_string(code);
 }
 
-bool waitChild(pid_t pid, double timeoutSeconds, int& status)
-{
+bool waitChild(pid_t pid, double timeoutSeconds, int& status) {
     Deadline deadline(timeoutSeconds);
     int pause = 1;
     for (;;) {
@@ -188,8 +183,7 @@ bool waitChild(pid_t pid, double timeoutSeconds, int& status)
     }
 }
 
-bool becomeSubreaper()
-{
+bool becomeSubreaper() {
 #if defined(__linux__)
     return ::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0;
 #else
@@ -197,8 +191,7 @@ bool becomeSubreaper()
 #endif
 }
 
-bool setParentDeathSignal(int signal)
-{
+bool setParentDeathSignal(int signal) {
 #if defined(__linux__)
     return ::prctl(PR_SET_PDEATHSIG, signal) == 0;
 #else
@@ -207,8 +200,7 @@ bool setParentDeathSignal(int signal)
 #endif
 }
 
-std::string executablePath()
-{
+std::string executablePath() {
     char buffer[PATH_MAX];
     ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);
     return n > 0 ? std::string(buffer, static_cast<std::size_t>(n)) : std::string();

@@ -12,11 +12,11 @@ namespace robottestingframework {
 namespace platform {
 
 struct SpawnOptions {
-    std::vector<std::string> argv;          // argv[0] is the program (a path, or searched)
-    std::vector<std::pair<int, int>> fds;   // {descriptor in the child, ours}; others closed
-    bool newProcessGroup = true;            // the child leads a group of its own
-    int parentDeathSignal = 0;              // sent to the child when we die (Linux); 0: none
-    bool nullStdin = true;                  // stdin is /dev/null unless `fds` maps 0
+    std::vector<std::string> argv;         // argv[0] is the program (a path, or searched)
+    std::vector<std::pair<int, int>> fds;  // {descriptor in the child, ours}; others closed
+    bool newProcessGroup = true;           // the child leads a group of its own
+    int parentDeathSignal = 0;             // sent to the child when we die (Linux); 0: none
+    bool nullStdin = true;                 // stdin is /dev/null unless `fds` maps 0
 };
 
 // Starts a program. Returns its pid, or -1 with `error` set (including exec failures, which

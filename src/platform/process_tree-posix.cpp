@@ -19,8 +19,7 @@ namespace platform {
 namespace {
 
 // pid -> parent pid of every process, from /proc/<pid>/stat (Linux).
-std::multimap<pid_t, pid_t> childrenByParent()
-{
+std::multimap<pid_t, pid_t> childrenByParent() {
     std::multimap<pid_t, pid_t> children;
     DIR* proc = ::opendir("/proc");
     if (proc == nullptr) {
@@ -57,13 +56,11 @@ std::multimap<pid_t, pid_t> childrenByParent()
 
 }  // namespace
 
-bool signalProcessGroup(pid_t group, int signal)
-{
+bool signalProcessGroup(pid_t group, int signal) {
     return group > 1 && ::kill(-group, signal) == 0;
 }
 
-std::vector<pid_t> descendantsOf(pid_t root)
-{
+std::vector<pid_t> descendantsOf(pid_t root) {
     std::multimap<pid_t, pid_t> children = childrenByParent();
     std::vector<pid_t> found;
     std::vector<pid_t> parents{root};
@@ -81,8 +78,7 @@ std::vector<pid_t> descendantsOf(pid_t root)
     return found;
 }
 
-std::size_t killDescendants(pid_t root)
-{
+std::size_t killDescendants(pid_t root) {
     std::set<pid_t> frozen;
     // A process may fork between our scan and its SIGSTOP; scan again until nothing is new.
     for (int round = 0; round < 50; ++round) {
@@ -103,8 +99,7 @@ std::size_t killDescendants(pid_t root)
     return frozen.size();
 }
 
-int stopChildGroup(pid_t leader, double grace)
-{
+int stopChildGroup(pid_t leader, double grace) {
     int status = 0;
     signalProcessGroup(leader, SIGTERM);
     // A stopped process does not act on SIGTERM until continued.

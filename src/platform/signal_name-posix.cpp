@@ -6,8 +6,7 @@
 namespace robottestingframework {
 namespace platform {
 
-std::string signalName(int signal)
-{
+std::string signalName(int signal) {
     switch (signal) {
         // clang-format off
         case SIGHUP: return "SIGHUP";     case SIGINT: return "SIGINT";
@@ -43,8 +42,7 @@ std::string signalName(int signal)
     return "signal " + std::to_string(signal);
 }
 
-std::string signalDescription(int signal)
-{
+std::string signalDescription(int signal) {
     const char* text = ::strsignal(signal);
     return text != nullptr ? text : signalName(signal);
 }

@@ -19,8 +19,7 @@ struct sigaction previous[NSIG];
 int installed[NSIG];
 int installedCount = 0;
 
-extern "C" void onSignal(int signal)
-{
+extern "C" void onSignal(int signal) {
     int saved = errno;
     unsigned char byte = static_cast<unsigned char>(signal);
     if (writeFd >= 0) {
@@ -33,8 +32,7 @@ extern "C" void onSignal(int signal)
 
 }  // namespace
 
-SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals)
-{
+SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals) {
     if (readFd >= 0) {
         throw std::logic_error("only one SignalPipe per process");
     }
@@ -56,8 +54,7 @@ SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals)
     }
 }
 
-SignalPipe::~SignalPipe()
-{
+SignalPipe::~SignalPipe() {
     for (int signal : signals_) {
         ::sigaction(signal, &previous[signal], nullptr);
     }
@@ -69,13 +66,11 @@ SignalPipe::~SignalPipe()
     readFd = -1;
 }
 
-int SignalPipe::fd() const
-{
+int SignalPipe::fd() const {
     return readFd;
 }
 
-int SignalPipe::take()
-{
+int SignalPipe::take() {
     unsigned char byte;
     for (;;) {
         ssize_t n = ::read(readFd, &byte, 1);
@@ -89,8 +84,7 @@ int SignalPipe::take()
     }
 }
 
-int SignalPipe::wait(int timeoutMs)
-{
+int SignalPipe::wait(int timeoutMs) {
     int signal = take();
     if (signal != 0) {
         return signal;
@@ -103,8 +97,7 @@ int SignalPipe::wait(int timeoutMs)
     return n > 0 ? take() : 0;
 }
 
-void SignalPipe::resetInChild()
-{
+void SignalPipe::resetInChild() {
     struct sigaction action {};
     action.sa_handler = SIG_DFL;
     sigemptyset(&action.sa_mask);

@@ -19,6 +19,8 @@ from conftest import RUNNER, plugin, run_runner, validate_junit
 ACTOR = Path(__file__).parent / "world" / "actor.py"
 PYTHON = "/usr/bin/python3"
 MARK = "RTF_E2E_PROCESS_FIXTURE"
+# A skipped test that was never loaded is named by its file.
+SKIPPED_PASSING = r"skipped\s+\S*(PassingTest|passing_test)"
 
 
 def free_port():
@@ -82,7 +84,7 @@ def world(tmp_path, processes, name="world.xml"):
 def suite(tmp_path, fixtures, tests=None, name="suite.xml"):
     tests = tests if tests is not None else [plugin("passing_test")]
     text = '<suite name="process world">\n' + "\n".join(fixtures) + "\n" + "\n".join(
-        f"<test>{t}</test>" for t in tests) + "\n</suite>\n"
+        t if str(t).startswith("<") else f"<test>{t}</test>" for t in tests) + "\n</suite>\n"
     path = tmp_path / name
     path.write_text(text)
     return path
@@ -96,12 +98,9 @@ def run(mark, *args, **kwargs):
     return run_runner(*args, env={MARK: mark}, **kwargs)
 
 
-def sleeper(tmp_path, seconds):
-    """An exec test that takes `seconds`."""
-    path = tmp_path / f"sleep_{seconds}.sh"
-    path.write_text(f"#!/bin/sh\nsleep {seconds}\n")
-    path.chmod(0o755)
-    return path
+def waiting(seconds):
+    """A test that takes `seconds` unless it is interrupted."""
+    return f'<test param="--seconds {seconds}">{plugin("waiting_test")}</test>'
 
 
 # --- Readiness of every kind -------------------------------------------------------------------
@@ -185,7 +184,7 @@ def test_a_process_that_never_becomes_ready_fails_the_suite_with_the_deadline(tm
             "happen within 700 ms") in r.output, r
     assert "waiting for the hardware" in r.output, r       # its last lines
     assert str(tmp_path / "logs" / "stuck.log") in r.output, r
-    assert re.search(r"skipped\s+PassingTest", r.output), r
+    assert re.search(SKIPPED_PASSING, r.output), r
     text = junit.read_text()
     assert "did not become ready" in text
     validate_junit(junit)
@@ -199,7 +198,7 @@ def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, 
   </process>""")
     junit = tmp_path / "out.xml"
     s = suite(tmp_path, [process_fixture(w)],
-              [sleeper(tmp_path, 3), plugin("passing_test"), plugin("passing_test")])
+              [waiting(3), plugin("passing_test"), plugin("passing_test")])
     began = time.monotonic()
     r = run(mark, "-s", s, "-o", junit, "--output-type", "junit", cwd=tmp_path)
     assert r.returncode == 1, r
@@ -207,7 +206,7 @@ def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, 
     reason = "process 'motor driver' exited with status 5"
     assert reason in r.output, r
     assert "lost contact with the motors" in r.output, r
-    assert len(re.findall(r"skipped\s+PassingTest", r.output)) == 2, r
+    assert len(re.findall(SKIPPED_PASSING, r.output)) == 2, r
     text = junit.read_text()
     assert text.count(reason) >= 2, text   # at least on each skipped test
     validate_junit(junit)
@@ -225,7 +224,7 @@ def test_a_failing_fixture_plugin_after_the_world_takes_the_world_down(tmp_path,
     assert r.returncode == 1, r
     assert "'broker' is ready" in r.output, r
     assert "stopping 'broker'" in r.output, r
-    assert re.search(r"skipped\s+PassingTest", r.output), r
+    assert re.search(SKIPPED_PASSING, r.output), r
 
 
 def test_a_bad_world_file_names_file_and_line(tmp_path, mark):
@@ -234,7 +233,7 @@ def test_a_bad_world_file_names_file_and_line(tmp_path, mark):
   <process name="b" depends="c" command="true"/>""")
     r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
     assert r.returncode == 1, r
-    assert f"{w}:3: process 'b' depends on 'c', which is not a process of this world" \
+    assert f"{w}:4: process 'b' depends on 'c', which is not a process of this world" \
         in r.output, r
 
 
@@ -252,7 +251,7 @@ def test_a_200_character_application_and_process_name(tmp_path, mark):
              <arg>--die-after</arg><arg>0.5</arg></command>
     <ready><output>ready</output></ready>
   </process>""")
-    s = suite(tmp_path, [process_fixture(w)], [sleeper(tmp_path, 3), plugin("passing_test")])
+    s = suite(tmp_path, [process_fixture(w)], [waiting(3), plugin("passing_test")])
     r = run(mark, "-v", "-s", s, cwd=tmp_path)
     assert r.returncode == 1, r
     assert f"'{name}' is ready" in r.output, r
@@ -291,13 +290,13 @@ def test_sigkill_of_the_runner_leaves_no_process(tmp_path, mark, isolation):
   <process name="broker" command="{actor('--say', 'ready', '--orphan')}">
     <ready><output>ready</output></ready>
   </process>""")
-    s = suite(tmp_path, [process_fixture(w)], [sleeper(tmp_path, 30)])
+    s = suite(tmp_path, [process_fixture(w)], [waiting(30)])
     args = [RUNNER, "-s", str(s)] + (["--isolation", isolation] if isolation != "default" else [])
     proc = subprocess.Popen(args, cwd=tmp_path, env={**os.environ, MARK: mark},
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     try:
-        # Runner, actor, its orphan and the sleeping test.
-        assert wait_until(lambda: len(marked(mark)) >= 4), "the world did not start"
+        # The runner, the actor and its orphan.
+        assert wait_until(lambda: len(marked(mark)) >= 3), "the world did not start"
         world_pids = set(marked(mark)) - {proc.pid}
         proc.kill()
         proc.wait(timeout=10)

@@ -48,8 +48,9 @@ def prefix(tmp_path_factory):
 
 def configure_and_build(build, package_option):
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
-    check(["cmake", "-S", EXTERNAL, "-B", build, *generator, package_option,
-           "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"], timeout=120)
+    configured = check(["cmake", "-S", EXTERNAL, "-B", build, *generator, "-Wdev", package_option,
+                        "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"], timeout=120)
+    assert "CMake Warning" not in configured.stdout + configured.stderr, configured.stderr
     check(["cmake", "--build", build], timeout=300)
     values = dict(line.split("=", 1) for line in
                   (build / "package.txt").read_text().splitlines() if "=" in line)
@@ -60,8 +61,8 @@ def plugin_file(build):
     return build / "libanswer_test.so"
 
 
-def run_external(build, runner, package_dir):
-    """Builds nothing; runs what configure_and_build built, through `runner`."""
+def run_external(build, runner):
+    """Runs what configure_and_build built: through `runner`, on its own, and by its ctest."""
     right = run([runner, "--test", plugin_file(build), "--param", "--answer 42", "--no-output"],
                 60)
     assert right.returncode == 0, right.stdout + right.stderr
@@ -92,6 +93,8 @@ def test_install_layout(prefix):
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkTargets.cmake",
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkCTest.cmake",
         f"{LIBDIR}/pkgconfig/robottestingframework.pc",
+        "share/doc/RobotTestingFramework/README.md",
+        "share/doc/RobotTestingFramework/examples/suites/example.xml",
     ]
     missing = [path for path in expected if not (prefix / path).exists()]
     assert not missing, f"missing from the install tree: {missing}"
@@ -113,15 +116,33 @@ def test_installed_runner_uses_installed_libraries(prefix):
     assert re.search(r"\b3\.\d+\.\d+", version.stdout + version.stderr), version.stdout
 
 
-def test_external_project_against_install_tree(prefix, tmp_path):
-    build = tmp_path / "external"
-    values = configure_and_build(build, f"-DCMAKE_PREFIX_PATH={prefix}")
+@pytest.fixture(scope="module")
+def external_install(prefix, tmp_path_factory):
+    """external_project/ configured and built against the install tree."""
+    build = tmp_path_factory.mktemp("external-install")
+    return build, configure_and_build(build, f"-DCMAKE_PREFIX_PATH={prefix}")
+
+
+def test_external_project_against_install_tree(prefix, external_install):
+    build, values = external_install
     package_dir = prefix / LIBDIR / "cmake" / "RobotTestingFramework"
     assert Path(values["dir"]).resolve() == package_dir.resolve(), values
     runner = prefix / "bin" / "robottestingframework-testrunner"
     assert Path(values["runner"]).resolve() == runner.resolve(), values
     assert values["version"].startswith("3."), values
-    run_external(build, runner, package_dir)
+    run_external(build, runner)
+
+
+def test_installed_runner_isolates_tests(prefix, external_install):
+    """The installed runner finds its installed worker: tests isolated in processes run."""
+    build, _ = external_install
+    runner = prefix / "bin" / "robottestingframework-testrunner"
+    for answer, status in (("42", 0), ("41", 1)):
+        isolated = run([runner, "--isolation", "process", "--test", plugin_file(build),
+                        "--param", f"--answer {answer}", "--no-output"], 60)
+        if "process isolation is not available in this build" in isolated.stderr:
+            pytest.skip("the runner has no process isolation yet")
+        assert isolated.returncode == status, isolated.stdout + isolated.stderr
 
 
 def test_external_project_against_build_tree(tmp_path):
@@ -130,7 +151,7 @@ def test_external_project_against_build_tree(tmp_path):
     assert Path(values["dir"]).resolve() == BUILD_DIR.resolve(), values
     runner = Path(values["runner"])
     assert runner.resolve() == (BUILD_DIR / "bin" / "robottestingframework-testrunner").resolve()
-    run_external(build, runner, BUILD_DIR)
+    run_external(build, runner)
 
 
 def test_pkg_config(prefix, tmp_path):
@@ -143,6 +164,9 @@ def test_pkg_config(prefix, tmp_path):
     version = check(["pkg-config", "--modversion", "robottestingframework"], timeout=30,
                     env=env).stdout.strip()
     assert version.startswith("3."), version
+    runner = check(["pkg-config", "--variable=testrunner", "robottestingframework"], timeout=30,
+                   env=env).stdout.strip()
+    assert Path(runner).resolve() == (prefix / "bin" / "robottestingframework-testrunner").resolve()
 
     # The flags are enough to build and link a program.
     program = tmp_path / "own_main"

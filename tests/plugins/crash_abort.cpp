@@ -8,8 +8,7 @@
 class CrashAbort : public robottestingframework::TestCase {
 public:
     CrashAbort() : TestCase("crash_abort") {}
-    void run() override
-    {
+    void run() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("about to abort");
         std::abort();
     }

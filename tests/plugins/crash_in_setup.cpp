@@ -6,8 +6,7 @@
 class CrashInSetup : public robottestingframework::TestCase {
 public:
     CrashInSetup() : TestCase("crash_in_setup") {}
-    bool setup(int /*argc*/, char** /*argv*/) override
-    {
+    bool setup(int /*argc*/, char** /*argv*/) override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("setting up");
         volatile int* nowhere = nullptr;
         *nowhere = 1;

@@ -9,8 +9,7 @@ class CrashInTeardown : public robottestingframework::TestCase {
 public:
     CrashInTeardown() : TestCase("crash_in_teardown") {}
     void run() override { ROBOTTESTINGFRAMEWORK_TEST_CHECK(true, "ran fine"); }
-    void tearDown() override
-    {
+    void tearDown() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("tearing down");
         std::abort();
     }

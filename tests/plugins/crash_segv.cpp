@@ -8,8 +8,7 @@
 class CrashSegv : public robottestingframework::TestCase {
 public:
     CrashSegv() : TestCase("crash_segv") {}
-    void run() override
-    {
+    void run() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("about to dereference a null pointer");
         std::printf("last words before the crash\n");
         volatile int* nowhere = nullptr;

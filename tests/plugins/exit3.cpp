@@ -8,8 +8,7 @@
 class Exit3 : public robottestingframework::TestCase {
 public:
     Exit3() : TestCase("exit3") {}
-    void run() override
-    {
+    void run() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("about to exit with status 3");
         std::exit(3);
     }

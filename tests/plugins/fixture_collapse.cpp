@@ -13,8 +13,7 @@
 
 class FixtureCollapse : public robottestingframework::FixtureManager {
 public:
-    bool setup(int /*argc*/, char** /*argv*/) override
-    {
+    bool setup(int /*argc*/, char** /*argv*/) override {
         ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT("world is up");
         bool die = getParam().find("--die-after-setup") != std::string::npos;
         watcher_ = std::thread([this, die] {
@@ -27,14 +26,12 @@ public:
         });
         return true;
     }
-    void tearDown() override
-    {
+    void tearDown() override {
         if (watcher_.joinable()) {
             watcher_.join();
         }
     }
-    ~FixtureCollapse() override
-    {
+    ~FixtureCollapse() override {
         if (watcher_.joinable()) {
             watcher_.detach();
         }

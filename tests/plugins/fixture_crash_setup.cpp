@@ -5,8 +5,7 @@
 
 class FixtureCrashSetup : public robottestingframework::FixtureManager {
 public:
-    bool setup(int /*argc*/, char** /*argv*/) override
-    {
+    bool setup(int /*argc*/, char** /*argv*/) override {
         ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT("starting the simulator");
         volatile int* nowhere = nullptr;
         *nowhere = 1;

@@ -11,8 +11,7 @@
 class ForkSleeper : public robottestingframework::TestCase {
 public:
     ForkSleeper() : TestCase("fork_sleeper") {}
-    void run() override
-    {
+    void run() override {
         pid_t child = ::fork();
         if (child == 0) {
             for (;;) {

@@ -8,8 +8,7 @@
 class HangBlock : public robottestingframework::TestCase {
 public:
     HangBlock() : TestCase("hang_block") {}
-    void run() override
-    {
+    void run() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("waiting for a message that never comes");
         for (;;) {
             ::pause();

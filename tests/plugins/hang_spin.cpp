@@ -6,8 +6,7 @@
 class HangSpin : public robottestingframework::TestCase {
 public:
     HangSpin() : TestCase("hang_spin") {}
-    void run() override
-    {
+    void run() override {
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("spinning");
         volatile unsigned long counter = 0;
         for (;;) {

@@ -9,8 +9,7 @@
 class IgnoreSigterm : public robottestingframework::TestCase {
 public:
     IgnoreSigterm() : TestCase("ignore_sigterm") {}
-    void run() override
-    {
+    void run() override {
         ::signal(SIGTERM, SIG_IGN);
         ROBOTTESTINGFRAMEWORK_TEST_REPORT("SIGTERM is ignored now");
         for (;;) {

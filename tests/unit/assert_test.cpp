@@ -11,7 +11,7 @@ using Lines = std::vector<std::string>;
 
 namespace {
 
-// Runs `body` as a test; returns its events and whether the code after the body's macros ran.
+// Runs `body` as a test; returns its events, its state and its own record.
 struct Outcome {
     Lines events;
     TestStatus status;

@@ -1,6 +1,9 @@
 // The exec backend driven directly: programs with and without TAP.
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <thread>
+
 #include "language_test_helpers.h"
 
 using namespace rtf_test;
@@ -112,4 +115,24 @@ TEST(ExecLoader, ProgramsOutlivingBackgroundChildrenDoNotHang) {
     // The background sleep keeps the pipes open; the test ends with the program, not with it.
     ScriptRun run = runShell("sleep 3 &\necho done\nexit 0\n");
     EXPECT_EQ(run.status, TestStatus::Passed);
+}
+
+TEST(ExecLoader, InterruptTerminatesTheProgram) {
+    std::string path = writeScript(scriptFolder(), "hang.sh", "#!/bin/sh\nexec sleep 30\n", true);
+    std::string error;
+    auto loaded = robottestingframework::languages::loadTest("exec", path, error);
+    ASSERT_NE(loaded, nullptr) << error;
+    TestResultCollector collector;
+    TestResult result;
+    result.addListener(&collector);
+    auto start = std::chrono::steady_clock::now();
+    std::thread stopper([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        loaded->get()->interrupt();
+    });
+    loaded->get()->run(result);
+    stopper.join();
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+    ASSERT_FALSE(collector.suites().empty());
+    EXPECT_EQ(collector.suites().back().tests.back().status, TestStatus::Interrupted);
 }

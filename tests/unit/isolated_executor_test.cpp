@@ -33,8 +33,7 @@ using isolation::IsolationOptions;
 
 namespace {
 
-std::string plugin(const std::string& name)
-{
+std::string plugin(const std::string& name) {
     return std::string(RTF_TEST_PLUGIN_DIR) + "/" + name + ".so";
 }
 
@@ -56,8 +55,7 @@ public:
     int starts = 0, ends = 0;
     std::string output;
 
-    bool has(Kind kind, const std::string& part) const
-    {
+    bool has(Kind kind, const std::string& part) const {
         for (const Event& e : events) {
             if (e.kind == kind && e.text.find(part) != std::string::npos) {
                 return true;
@@ -65,8 +63,7 @@ public:
         }
         return false;
     }
-    std::string dump() const
-    {
+    std::string dump() const {
         std::string text;
         for (const Event& e : events) {
             text += std::string(toString(e.kind)) + ": " + e.text + "\n";
@@ -92,16 +89,14 @@ class Collapses : public FixtureEvents {
 public:
     std::atomic<int> count{0};
     std::string last;
-    void fixtureCollapsed(TestMessage reason) override
-    {
+    void fixtureCollapsed(TestMessage reason) override {
         last = reason.toString();
         ++count;
     }
 };
 
 // Every process whose environment carries the marker: the ones this test started.
-std::vector<pid_t> markedProcesses(const std::string& marker)
-{
+std::vector<pid_t> markedProcesses(const std::string& marker) {
     std::vector<pid_t> found;
     std::string needle = "RTF_TEST_MARKER=" + marker;
     needle.push_back('\0');
@@ -126,8 +121,7 @@ std::vector<pid_t> markedProcesses(const std::string& marker)
     return found;
 }
 
-bool noneLeft(const std::string& marker, double seconds)
-{
+bool noneLeft(const std::string& marker, double seconds) {
     platform::Deadline deadline(seconds);
     while (!markedProcesses(marker).empty()) {
         if (deadline.expired()) {
@@ -138,8 +132,7 @@ bool noneLeft(const std::string& marker, double seconds)
     return true;
 }
 
-std::string freshMarker()
-{
+std::string freshMarker() {
     static int counter = 0;
     std::string marker = "iso-" + std::to_string(::getpid()) + "-" + std::to_string(++counter);
     ::setenv("RTF_TEST_MARKER", marker.c_str(), 1);
@@ -148,8 +141,7 @@ std::string freshMarker()
 
 class Isolation : public ::testing::Test {
 protected:
-    void SetUp() override
-    {
+    void SetUp() override {
         marker = freshMarker();
         options.workerPath = RTF_WORKER_PATH;
         options.killGrace = 0.3;
@@ -159,16 +151,14 @@ protected:
         ASSERT_TRUE(executor->start(error)) << error;
         result.addListener(&recorder);
     }
-    void TearDown() override
-    {
+    void TearDown() override {
         executor.reset();
         EXPECT_TRUE(noneLeft(marker, 5.0)) << "processes of this test outlived it";
         ::unsetenv("RTF_TEST_MARKER");
     }
 
     TestStatus run(const std::string& name, double timeout = 0, const std::string& param = "",
-                   unsigned int repetition = 1)
-    {
+                   unsigned int repetition = 1) {
         runner::TestSpec spec;
         spec.plugin = name;
         spec.path = plugin(name);
@@ -192,14 +182,12 @@ protected:
 
 }  // namespace
 
-TEST_F(Isolation, PassingTestPassesUnderItsOwnName)
-{
+TEST_F(Isolation, PassingTestPassesUnderItsOwnName) {
     EXPECT_EQ(run("passing_test"), TestStatus::Passed) << recorder.dump();
     EXPECT_EQ(self.getName(), "PassingTest");
 }
 
-TEST_F(Isolation, SegfaultIsACrashNamingTheSignalAndKeepsWhatCameBefore)
-{
+TEST_F(Isolation, SegfaultIsACrashNamingTheSignalAndKeepsWhatCameBefore) {
     EXPECT_EQ(run("crash_segv"), TestStatus::Crashed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Crash, "SIGSEGV")) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Report, "about to dereference a null pointer"));
@@ -207,49 +195,42 @@ TEST_F(Isolation, SegfaultIsACrashNamingTheSignalAndKeepsWhatCameBefore)
         << recorder.dump();
 }
 
-TEST_F(Isolation, AbortIsACrashWithSigabrt)
-{
+TEST_F(Isolation, AbortIsACrashWithSigabrt) {
     EXPECT_EQ(run("crash_abort"), TestStatus::Crashed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Crash, "SIGABRT")) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Report, "about to abort"));
 }
 
-TEST_F(Isolation, ExitIsAnErrorWithTheStatus)
-{
+TEST_F(Isolation, ExitIsAnErrorWithTheStatus) {
     EXPECT_EQ(run("exit3"), TestStatus::Error) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Error, "exited with status 3")) << recorder.dump();
 }
 
-TEST_F(Isolation, ThrownIntIsAnErrorOfUnknownType)
-{
+TEST_F(Isolation, ThrownIntIsAnErrorOfUnknownType) {
     EXPECT_EQ(run("throw_int"), TestStatus::Error) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Error, "unhandled exception of unknown type"))
         << recorder.dump();
 }
 
-TEST_F(Isolation, ThrownRuntimeErrorCarriesItsText)
-{
+TEST_F(Isolation, ThrownRuntimeErrorCarriesItsText) {
     EXPECT_EQ(run("throw_runtime"), TestStatus::Error) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Error, "the motor driver is on fire")) << recorder.dump();
 }
 
-TEST_F(Isolation, BlockedTestTimesOutWithTheLimitAndWhatItSaid)
-{
+TEST_F(Isolation, BlockedTestTimesOutWithTheLimitAndWhatItSaid) {
     double start = platform::monotonicSeconds();
-    EXPECT_EQ(run("hang_block", 0.5), TestStatus::TimedOut) << recorder.dump();
-    EXPECT_LT(platform::monotonicSeconds() - start, 3.0);
-    EXPECT_TRUE(recorder.has(Kind::Timeout, "timed out after 0.5 s")) << recorder.dump();
+    EXPECT_EQ(run("hang_block", 1.5), TestStatus::TimedOut) << recorder.dump();
+    EXPECT_LT(platform::monotonicSeconds() - start, 4.0);
+    EXPECT_TRUE(recorder.has(Kind::Timeout, "timed out after 1.5 s")) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Timeout, "waiting for a message that never comes"));
     EXPECT_TRUE(recorder.has(Kind::Report, "waiting for a message that never comes"));
 }
 
-TEST_F(Isolation, SpinningTestTimesOut)
-{
+TEST_F(Isolation, SpinningTestTimesOut) {
     EXPECT_EQ(run("hang_spin", 0.3), TestStatus::TimedOut) << recorder.dump();
 }
 
-TEST_F(Isolation, TestIgnoringSigtermIsKilledAfterTheGrace)
-{
+TEST_F(Isolation, TestIgnoringSigtermIsKilledAfterTheGrace) {
     double start = platform::monotonicSeconds();
     EXPECT_EQ(run("ignore_sigterm", 0.3), TestStatus::TimedOut) << recorder.dump();
     double took = platform::monotonicSeconds() - start;
@@ -258,34 +239,33 @@ TEST_F(Isolation, TestIgnoringSigtermIsKilledAfterTheGrace)
     EXPECT_TRUE(recorder.has(Kind::Timeout, "ignored SIGTERM")) << recorder.dump();
 }
 
-TEST_F(Isolation, ChildLeftBehindByAPassingTestIsGoneAtItsEnd)
-{
+TEST_F(Isolation, ChildLeftBehindByAPassingTestIsGoneAtItsEnd) {
     EXPECT_EQ(run("fork_sleeper"), TestStatus::Passed) << recorder.dump();
-    EXPECT_TRUE(noneLeft(marker, 0.0) || markedProcesses(marker).size() == 1)
-        << "only the fork server may remain";
+    // The fork server and its spare worker (forked ahead of the next test) may remain.
+    platform::Deadline deadline(2.0);
+    while (markedProcesses(marker).size() > 2 && !deadline.expired()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    EXPECT_LE(markedProcesses(marker).size(), 2u) << "the left child is gone";
 }
 
-TEST_F(Isolation, HungTestWithAChildLosesBothOnTimeout)
-{
+TEST_F(Isolation, HungTestWithAChildLosesBothOnTimeout) {
     EXPECT_EQ(run("fork_sleeper", 0.3, "--hang"), TestStatus::TimedOut) << recorder.dump();
 }
 
-TEST_F(Isolation, CrashInSetupIsACrash)
-{
+TEST_F(Isolation, CrashInSetupIsACrash) {
     EXPECT_EQ(run("crash_in_setup"), TestStatus::Crashed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Report, "setting up"));
     EXPECT_FALSE(recorder.has(Kind::Report, "never here"));
 }
 
-TEST_F(Isolation, CrashInTearDownIsACrashAfterTheChecks)
-{
+TEST_F(Isolation, CrashInTearDownIsACrashAfterTheChecks) {
     EXPECT_EQ(run("crash_in_teardown"), TestStatus::Crashed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Check, "ran fine"));
     EXPECT_TRUE(recorder.has(Kind::Crash, "SIGABRT"));
 }
 
-TEST_F(Isolation, InterruptFromAnotherThreadStopsTheTest)
-{
+TEST_F(Isolation, InterruptFromAnotherThreadStopsTheTest) {
     std::thread interrupter([this] {
         std::this_thread::sleep_for(std::chrono::milliseconds(300));
         executor->interrupt();
@@ -295,28 +275,24 @@ TEST_F(Isolation, InterruptFromAnotherThreadStopsTheTest)
     EXPECT_TRUE(recorder.has(Kind::Interrupted, "interrupted"));
 }
 
-TEST_F(Isolation, RepetitionsRunInTheWorker)
-{
+TEST_F(Isolation, RepetitionsRunInTheWorker) {
     EXPECT_EQ(run("passing_test", 0, "", 3), TestStatus::Passed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Report, "repetition 3/3")) << recorder.dump();
 }
 
-TEST_F(Isolation, CriticalErrorReachesTheStandIn)
-{
+TEST_F(Isolation, CriticalErrorReachesTheStandIn) {
     EXPECT_EQ(run("critical_error"), TestStatus::Error) << recorder.dump();
     EXPECT_TRUE(self.hasCriticalError());
     EXPECT_NE(self.getCriticalError().getMessage().find("the robot is not powered"),
               std::string::npos);
 }
 
-TEST_F(Isolation, UnloadablePluginIsAFailedTestWithTheLoadersReason)
-{
+TEST_F(Isolation, UnloadablePluginIsAFailedTestWithTheLoadersReason) {
     EXPECT_EQ(run("not_a_plugin"), TestStatus::Failed) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Failure, "cannot load")) << recorder.dump();
 }
 
-TEST_F(Isolation, ManyTestsInARowShareOneForkServer)
-{
+TEST_F(Isolation, ManyTestsInARowShareOneForkServer) {
     for (int i = 0; i < 50; ++i) {
         Recorder local;
         TestResult localResult;
@@ -326,12 +302,11 @@ TEST_F(Isolation, ManyTestsInARowShareOneForkServer)
         spec.type = "dll";
         ASSERT_EQ(executor->run(spec, self, localResult), TestStatus::Passed) << local.dump();
     }
-    EXPECT_EQ(markedProcesses(marker).size(), 1u) << "the fork server alone";
+    EXPECT_LE(markedProcesses(marker).size(), 2u) << "the fork server and its spare alone";
     recorder.starts = recorder.ends = 1;  // this test did not use the shared recorder
 }
 
-TEST_F(Isolation, FixtureCrashingInSetupFailsSetupWithTheReason)
-{
+TEST_F(Isolation, FixtureCrashingInSetupFailsSetupWithTheReason) {
     runner::FixtureSpec spec;
     spec.plugin = spec.path = plugin("fixture_crash_setup");
     spec.type = "dll";
@@ -348,8 +323,7 @@ TEST_F(Isolation, FixtureCrashingInSetupFailsSetupWithTheReason)
     recorder.starts = recorder.ends = 1;
 }
 
-TEST_F(Isolation, FixtureCollapseFromItsThreadReachesTheDispatcher)
-{
+TEST_F(Isolation, FixtureCollapseFromItsThreadReachesTheDispatcher) {
     runner::FixtureSpec spec;
     spec.plugin = spec.path = plugin("fixture_collapse");
     spec.type = "dll";
@@ -373,8 +347,7 @@ TEST_F(Isolation, FixtureCollapseFromItsThreadReachesTheDispatcher)
     recorder.starts = recorder.ends = 1;
 }
 
-TEST_F(Isolation, FixtureDyingBetweenCallsCollapsesWithItsStatus)
-{
+TEST_F(Isolation, FixtureDyingBetweenCallsCollapsesWithItsStatus) {
     runner::FixtureSpec spec;
     spec.plugin = spec.path = plugin("fixture_collapse");
     spec.type = "dll";
@@ -400,8 +373,7 @@ TEST_F(Isolation, FixtureDyingBetweenCallsCollapsesWithItsStatus)
 
 // The runner killed with SIGKILL while a test (and the child it forked) hang: the fork server
 // must still take every process of the run with it.
-TEST(IsolationRunnerDeath, NoProcessSurvivesTheRunnerBeingKilled)
-{
+TEST(IsolationRunnerDeath, NoProcessSurvivesTheRunnerBeingKilled) {
     std::string marker = freshMarker();
     pid_t runner = ::fork();
     if (runner == 0) {
@@ -418,12 +390,12 @@ TEST(IsolationRunnerDeath, NoProcessSurvivesTheRunnerBeingKilled)
         ::_exit(0);
     }
     ASSERT_GT(runner, 0);
-    // Server, worker and the worker's child.
+    // Server, spare, worker and the worker's child.
     platform::Deadline deadline(10.0);
-    while (markedProcesses(marker).size() < 3 && !deadline.expired()) {
+    while (markedProcesses(marker).size() < 4 && !deadline.expired()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    EXPECT_EQ(markedProcesses(marker).size(), 3u);
+    EXPECT_EQ(markedProcesses(marker).size(), 4u);
     ::kill(runner, SIGKILL);
     int status;
     ::waitpid(runner, &status, 0);

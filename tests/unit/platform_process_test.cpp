@@ -23,8 +23,7 @@ using namespace robottestingframework::platform;
 
 namespace {
 
-bool alive(pid_t pid)
-{
+bool alive(pid_t pid) {
     // A zombie is dead for our purpose.
     std::string stat;
     FILE* file = std::fopen(("/proc/" + std::to_string(pid) + "/stat").c_str(), "r");
@@ -38,8 +37,7 @@ bool alive(pid_t pid)
     return close != nullptr && close[2] != 'Z' && close[2] != 'X';
 }
 
-bool waitUntilGone(pid_t pid, double seconds)
-{
+bool waitUntilGone(pid_t pid, double seconds) {
     Deadline deadline(seconds);
     while (alive(pid)) {
         if (deadline.expired()) {
@@ -51,13 +49,12 @@ bool waitUntilGone(pid_t pid, double seconds)
 }
 
 // A shell that starts a grandchild and prints its pid; both ignore SIGTERM when asked.
-pid_t spawnTree(bool ignoreTerm, pid_t& grandchild)
-{
+pid_t spawnTree(bool ignoreTerm, pid_t& grandchild) {
     FileDescriptor readEnd, writeEnd;
     EXPECT_TRUE(makePipe(readEnd, writeEnd));
     std::string trap = ignoreTerm ? "trap '' TERM; " : "";
     SpawnOptions options;
-    options.argv = {"/bin/sh", "-c", trap + "sleep 300 & echo $!; exec 1>&-; wait"};
+    options.argv = {"/bin/sh", "-c", trap + "sleep 300 >/dev/null & echo $!; exec 1>&-; wait"};
     options.fds = {{1, writeEnd.get()}};
     std::string error;
     pid_t pid = spawnProcess(options, error);
@@ -72,8 +69,7 @@ pid_t spawnTree(bool ignoreTerm, pid_t& grandchild)
 
 }  // namespace
 
-TEST(SignalName, NamesTheCommonSignals)
-{
+TEST(SignalName, NamesTheCommonSignals) {
     EXPECT_EQ(signalName(SIGSEGV), "SIGSEGV");
     EXPECT_EQ(signalName(SIGABRT), "SIGABRT");
     EXPECT_EQ(signalName(SIGKILL), "SIGKILL");
@@ -82,16 +78,14 @@ TEST(SignalName, NamesTheCommonSignals)
     EXPECT_EQ(signalDescription(SIGSEGV), "Segmentation fault");
 }
 
-TEST(ExitStatus, DescribesExitAndSignal)
-{
+TEST(ExitStatus, DescribesExitAndSignal) {
     EXPECT_EQ(ExitStatus::fromWaitStatus(3 << 8).toString(), "exited with status 3");
     ExitStatus killed = ExitStatus::fromWaitStatus(SIGSEGV);
     EXPECT_TRUE(killed.signaled);
     EXPECT_EQ(killed.toString(), "killed by SIGSEGV (Segmentation fault)");
 }
 
-TEST(SpawnProcess, ReportsExecFailureInsteadOfAPid)
-{
+TEST(SpawnProcess, ReportsExecFailureInsteadOfAPid) {
     SpawnOptions options;
     options.argv = {"/no/such/program"};
     std::string error;
@@ -99,8 +93,7 @@ TEST(SpawnProcess, ReportsExecFailureInsteadOfAPid)
     EXPECT_NE(error.find("/no/such/program"), std::string::npos) << error;
 }
 
-TEST(SpawnProcess, ChildLeadsItsOwnGroupAndGetsOnlyTheMappedDescriptors)
-{
+TEST(SpawnProcess, ChildLeadsItsOwnGroupAndGetsOnlyTheMappedDescriptors) {
     FileDescriptor readEnd, writeEnd, unrelatedRead, unrelatedWrite;
     ASSERT_TRUE(makePipe(readEnd, writeEnd));
     ASSERT_TRUE(makePipe(unrelatedRead, unrelatedWrite));
@@ -122,8 +115,7 @@ TEST(SpawnProcess, ChildLeadsItsOwnGroupAndGetsOnlyTheMappedDescriptors)
     EXPECT_EQ(std::stol(text.substr(text.find('\n') + 1)), 4) << text;
 }
 
-TEST(ProcessTree, DescendantsIncludeGrandchildren)
-{
+TEST(ProcessTree, DescendantsIncludeGrandchildren) {
     pid_t grandchild;
     pid_t child = spawnTree(false, grandchild);
     std::vector<pid_t> found = descendantsOf(::getpid());
@@ -134,8 +126,7 @@ TEST(ProcessTree, DescendantsIncludeGrandchildren)
     EXPECT_TRUE(waitUntilGone(grandchild, 5));
 }
 
-TEST(ProcessTree, StopChildGroupKillsAGroupThatIgnoresSigterm)
-{
+TEST(ProcessTree, StopChildGroupKillsAGroupThatIgnoresSigterm) {
     pid_t grandchild;
     pid_t child = spawnTree(true, grandchild);
     double start = monotonicSeconds();
@@ -149,13 +140,12 @@ TEST(ProcessTree, StopChildGroupKillsAGroupThatIgnoresSigterm)
     EXPECT_TRUE(waitUntilGone(grandchild, 5)) << "the grandchild went with the group";
 }
 
-TEST(ProcessTree, KillDescendantsReachesProcessesThatLeftTheGroup)
-{
+TEST(ProcessTree, KillDescendantsReachesProcessesThatLeftTheGroup) {
     // The grandchild starts a session of its own: only the /proc walk finds it.
     FileDescriptor readEnd, writeEnd;
     ASSERT_TRUE(makePipe(readEnd, writeEnd));
     SpawnOptions options;
-    options.argv = {"/bin/sh", "-c", "setsid sleep 300 & echo $!; exec 1>&-; wait"};
+    options.argv = {"/bin/sh", "-c", "setsid sleep 300 >/dev/null & echo $!; exec 1>&-; wait"};
     options.fds = {{1, writeEnd.get()}};
     std::string error;
     pid_t child = spawnProcess(options, error);
@@ -171,8 +161,7 @@ TEST(ProcessTree, KillDescendantsReachesProcessesThatLeftTheGroup)
     EXPECT_TRUE(waitUntilGone(grandchild, 5));
 }
 
-TEST(FdPassing, DescriptorsArriveWithTheMessage)
-{
+TEST(FdPassing, DescriptorsArriveWithTheMessage) {
     FileDescriptor a, b, readEnd, writeEnd;
     ASSERT_TRUE(makeSocketPair(a, b, true));
     ASSERT_TRUE(makePipe(readEnd, writeEnd));
@@ -193,8 +182,7 @@ TEST(FdPassing, DescriptorsArriveWithTheMessage)
     EXPECT_FALSE(receiveWithFds(b.get(), data, fds)) << "end of stream when the peer is gone";
 }
 
-TEST(SignalPipe, SignalBecomesReadableByte)
-{
+TEST(SignalPipe, SignalBecomesReadableByte) {
     SignalPipe signals({SIGUSR1});
     EXPECT_EQ(signals.take(), 0);
     ::kill(::getpid(), SIGUSR1);
@@ -202,8 +190,7 @@ TEST(SignalPipe, SignalBecomesReadableByte)
     EXPECT_EQ(signals.wait(10), 0);
 }
 
-TEST(Deadline, NeverAndExpired)
-{
+TEST(Deadline, NeverAndExpired) {
     Deadline never(0);
     EXPECT_TRUE(never.never());
     EXPECT_FALSE(never.expired());

@@ -22,13 +22,11 @@ using rtf_process_test::writeFile;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& words)
-{
+bool contains(const std::string& text, const std::string& words) {
     return text.find(words) != std::string::npos;
 }
 
-std::string allEvents(const TestResultCollector& collector)
-{
+std::string allEvents(const TestResultCollector& collector) {
     std::string out;
     for (const std::string& line : rtf_test::eventLines(collector)) {
         out += line + "\n";
@@ -44,8 +42,7 @@ public:
 
 }  // namespace
 
-TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine)
-{
+TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine) {
     const auto folder = freshFolder();
     const auto world = writeFile(folder / "world.xml",
                                  "<world>\n  <process name='a' depends='b' command='true'/>\n"
@@ -61,8 +58,7 @@ TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine)
     }
 }
 
-TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder)
-{
+TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder) {
     const auto folder = freshFolder();
     const auto world = writeFile(folder / "world.xml",
                                  "<world><process name='a' command=\"/bin/sh -c 'echo "
@@ -80,13 +76,13 @@ TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder)
     EXPECT_THROW(fixture.setup(wrong.argc(), wrong.argv()), TestErrorException);
 }
 
-TEST(ProcessFixture, TellsTheDispatcherWhenTheWorldCollapses)
-{
+TEST(ProcessFixture, TellsTheDispatcherWhenTheWorldCollapses) {
     const auto folder = freshFolder();
-    const auto world = writeFile(folder / "world.xml",
-                                 "<world>\n<process name='robot' command=\"/bin/sh -c 'echo "
-                                 "ready; sleep 0.2; echo motor fault; exit 2'\">\n"
-                                 "<ready><output>ready</output></ready></process></world>");
+    const auto world =
+        writeFile(folder / "world.xml",
+                  "<world logdir='logs'>\n<process name='robot' command=\"/bin/sh -c 'echo "
+                  "ready; sleep 0.2; echo motor fault; exit 2'\">\n"
+                  "<ready><output>ready</output></ready></process></world>");
     ProcessFixture fixture(world.string());
     CollapseRecorder recorder;
     fixture.setDispatcher(&recorder);
@@ -106,19 +102,18 @@ TEST(ProcessFixture, TellsTheDispatcherWhenTheWorldCollapses)
     fixture.tearDown();
 }
 
-TEST(ProcessFixture, InASuiteACollapseSkipsTheRemainingTestsWithTheReason)
-{
+TEST(ProcessFixture, InASuiteACollapseSkipsTheRemainingTestsWithTheReason) {
     const auto folder = freshFolder();
-    const auto world = writeFile(folder / "world.xml",
-                                 "<world name='lab'>\n<process name='sim' command=\"/bin/sh -c "
-                                 "'echo ready; sleep 0.3; echo simulator crashed; exit 1'\">\n"
-                                 "<ready><output>ready</output></ready></process></world>");
+    const auto world =
+        writeFile(folder / "world.xml",
+                  "<world name='lab' logdir='logs'>\n<process name='sim' command=\"/bin/sh -c "
+                  "'echo ready; sleep 0.3; echo simulator crashed; exit 1'\">\n"
+                  "<ready><output>ready</output></ready></process></world>");
     ProcessFixture fixture(world.string());
     TestSuite suite("with a world");
     suite.addFixtureManager(&fixture);
-    rtf_test::LambdaTest first("first", [] {
-        std::this_thread::sleep_for(std::chrono::milliseconds(800));
-    });
+    rtf_test::LambdaTest first("first",
+                               [] { std::this_thread::sleep_for(std::chrono::milliseconds(800)); });
     rtf_test::LambdaTest second("second");
     suite.addTest(&first);
     suite.addTest(&second);
@@ -130,19 +125,19 @@ TEST(ProcessFixture, InASuiteACollapseSkipsTheRemainingTestsWithTheReason)
     EXPECT_FALSE(suite.succeeded());
     const std::string events = allEvents(collector);
     EXPECT_TRUE(contains(events, "'sim' is ready after")) << events;  // a fixture report
-    EXPECT_TRUE(second.log.empty()) << events;                      // never run
+    EXPECT_TRUE(second.log.empty()) << events;                        // never run
     EXPECT_TRUE(contains(events, "process 'sim' exited with status 1")) << events;
     EXPECT_TRUE(contains(events, "simulator crashed")) << events;
     EXPECT_TRUE(contains(events, "stopping 'sim'")) << events;
 }
 
-TEST(ProcessFixture, InASuiteASetupFailureSkipsEveryTestWithTheWholeStory)
-{
+TEST(ProcessFixture, InASuiteASetupFailureSkipsEveryTestWithTheWholeStory) {
     const auto folder = freshFolder();
-    const auto world = writeFile(folder / "world.xml",
-                                 "<world>\n<process name='server' command=\"/bin/sh -c 'echo "
-                                 "binding; exec sleep 30'\">\n<ready timeout='200ms'>"
-                                 "<port>1</port></ready></process></world>");
+    const auto world =
+        writeFile(folder / "world.xml",
+                  "<world logdir='logs'>\n<process name='server' command=\"/bin/sh -c 'echo "
+                  "binding; exec sleep 30'\">\n<ready timeout='200ms'>"
+                  "<port>1</port></ready></process></world>");
     ProcessFixture fixture(world.string());
     TestSuite suite("no world");
     suite.addFixtureManager(&fixture);
@@ -155,8 +150,9 @@ TEST(ProcessFixture, InASuiteASetupFailureSkipsEveryTestWithTheWholeStory)
     EXPECT_FALSE(suite.succeeded());
     EXPECT_TRUE(only.log.empty());
     const std::string events = allEvents(collector);
-    EXPECT_TRUE(contains(events, "process 'server' did not become ready: TCP port 127.0.0.1:1 "
-                                 "accepting connections did not happen within 200 ms"))
+    EXPECT_TRUE(contains(events,
+                         "process 'server' did not become ready: TCP port 127.0.0.1:1 "
+                         "accepting connections did not happen within 200 ms"))
         << events;
     EXPECT_TRUE(contains(events, "| binding")) << events;
     EXPECT_TRUE(contains(events, "last seen: Connection refused")) << events;

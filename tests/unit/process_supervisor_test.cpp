@@ -26,13 +26,12 @@ using rtf_process_test::writeFile;
 
 namespace {
 
-World worldOf(const std::string& processes, std::filesystem::path folder = {})
-{
+World worldOf(const std::string& processes, std::filesystem::path folder = {}) {
     if (folder.empty()) {
         folder = freshFolder();
     }
-    const auto file = writeFile(folder / "world.xml", "<world name='test'>\n" + processes +
-                                                          "\n</world>\n");
+    const auto file =
+        writeFile(folder / "world.xml", "<world name='test'>\n" + processes + "\n</world>\n");
     WorldOptions options;
     options.logFolder = (folder / "logs").string();
     World world;
@@ -41,27 +40,23 @@ World worldOf(const std::string& processes, std::filesystem::path folder = {})
     return world;
 }
 
-std::string readText(const std::string& path)
-{
+std::string readText(const std::string& path) {
     std::ifstream in(path);
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
 }
 
-bool contains(const std::string& text, const std::string& words)
-{
+bool contains(const std::string& text, const std::string& words) {
     return text.find(words) != std::string::npos;
 }
 
 struct Reports {
     std::vector<std::string> lines;
-    ProcessSupervisor::Reporter reporter()
-    {
+    ProcessSupervisor::Reporter reporter() {
         return [this](const std::string& text) { lines.push_back(text); };
     }
-    bool any(const std::string& words) const
-    {
+    bool any(const std::string& words) const {
         for (const auto& line : lines) {
             if (contains(line, words)) {
                 return true;
@@ -69,8 +64,7 @@ struct Reports {
         }
         return false;
     }
-    std::string all() const
-    {
+    std::string all() const {
         std::string out;
         for (const auto& line : lines) {
             out += line + "\n";
@@ -86,8 +80,7 @@ const char* kServer =
 
 }  // namespace
 
-TEST(ProcessSupervisor, StartsAwaitsAndStopsLeavingNothingBehind)
-{
+TEST(ProcessSupervisor, StartsAwaitsAndStopsLeavingNothingBehind) {
     World world = worldOf(
         "<process name='a' command=\"/bin/sh -c 'sleep 0.2; echo hello; echo ready; exec sleep "
         "30'\">\n<ready><output>^ready$</output></ready></process>");
@@ -119,8 +112,7 @@ TEST(ProcessSupervisor, StartsAwaitsAndStopsLeavingNothingBehind)
     EXPECT_FALSE(supervisor.collapsed());
 }
 
-TEST(ProcessSupervisor, FailsWhenAProcessIsNotReadyInTimeAndSaysWhy)
-{
+TEST(ProcessSupervisor, FailsWhenAProcessIsNotReadyInTimeAndSaysWhy) {
     World world = worldOf(
         "<process name='slow' command=\"/bin/sh -c 'echo warming up; exec sleep 30'\">\n"
         "<ready timeout='300ms'>\n<output>calibrated</output></ready></process>");
@@ -132,8 +124,9 @@ TEST(ProcessSupervisor, FailsWhenAProcessIsNotReadyInTimeAndSaysWhy)
     const auto took = std::chrono::steady_clock::now() - began;
     EXPECT_GE(took, std::chrono::milliseconds(300));
     EXPECT_LT(took, std::chrono::seconds(5));  // stopped at once (SIGTERM), no 5 s grace
-    EXPECT_TRUE(contains(failure, "process 'slow' did not become ready: a line of output "
-                                  "matching 'calibrated' did not happen within 300 ms (line 4)"))
+    EXPECT_TRUE(contains(failure,
+                         "process 'slow' did not become ready: a line of output "
+                         "matching 'calibrated' did not happen within 300 ms (line 4)"))
         << failure;
     EXPECT_TRUE(contains(failure, "warming up")) << failure;
     EXPECT_TRUE(contains(failure, world.processes[0].logFile)) << failure;
@@ -143,8 +136,7 @@ TEST(ProcessSupervisor, FailsWhenAProcessIsNotReadyInTimeAndSaysWhy)
     EXPECT_TRUE(processesWith(supervisor.marker()).empty());
 }
 
-TEST(ProcessSupervisor, FailsWhenAProcessExitsBeforeItIsReady)
-{
+TEST(ProcessSupervisor, FailsWhenAProcessExitsBeforeItIsReady) {
     World world = worldOf(
         "<process name='crash' command=\"/bin/sh -c 'echo cannot open device >&2; exit 3'\">"
         "<ready><port>1</port></ready></process>");
@@ -158,20 +150,19 @@ TEST(ProcessSupervisor, FailsWhenAProcessExitsBeforeItIsReady)
     EXPECT_TRUE(contains(failure, "| cannot open device")) << failure;
 }
 
-TEST(ProcessSupervisor, FailsWhenTheProgramDoesNotExist)
-{
+TEST(ProcessSupervisor, FailsWhenTheProgramDoesNotExist) {
     World world = worldOf("<process name='ghost' command='no-such-program-here --flag'/>");
     ProcessSupervisor supervisor(world);
     Reports reports;
     std::string failure;
     ASSERT_FALSE(supervisor.start(reports.reporter(), failure));
-    EXPECT_TRUE(contains(failure, "process 'ghost' (line 2) could not be started: program "
-                                  "'no-such-program-here' was not found in PATH"))
+    EXPECT_TRUE(contains(failure,
+                         "process 'ghost' (line 2) could not be started: program "
+                         "'no-such-program-here' was not found in PATH"))
         << failure;
 }
 
-TEST(ProcessSupervisor, StartsAProcessOnlyOnceItsDependenciesAreReady)
-{
+TEST(ProcessSupervisor, StartsAProcessOnlyOnceItsDependenciesAreReady) {
     const auto folder = freshFolder();
     // Each of b and c fails at once unless the one it depends on left its flag first.
     World world = worldOf(
@@ -208,8 +199,7 @@ TEST(ProcessSupervisor, StartsAProcessOnlyOnceItsDependenciesAreReady)
     EXPECT_TRUE(processesWith(supervisor.marker()).empty());
 }
 
-TEST(ProcessSupervisor, IndependentProcessesStartTogether)
-{
+TEST(ProcessSupervisor, IndependentProcessesStartTogether) {
     World world = worldOf(
         "<process name='a' command=\"/bin/sh -c 'sleep 0.4; echo up; exec sleep 30'\">"
         "<ready><output>up</output></ready></process>\n"
@@ -223,8 +213,7 @@ TEST(ProcessSupervisor, IndependentProcessesStartTogether)
     EXPECT_LT(std::chrono::steady_clock::now() - began, std::chrono::milliseconds(750));
 }
 
-TEST(ProcessSupervisor, ReportsACollapseWithStatusAndLastLines)
-{
+TEST(ProcessSupervisor, ReportsACollapseWithStatusAndLastLines) {
     World world = worldOf(
         "<process name='fragile' command=\"/bin/sh -c 'echo ready; sleep 0.3; echo lost the "
         "robot; exit 7'\"><ready><output>ready</output></ready></process>");
@@ -251,8 +240,9 @@ TEST(ProcessSupervisor, ReportsACollapseWithStatusAndLastLines)
     }
     EXPECT_TRUE(supervisor.collapsed());
     EXPECT_EQ(who, "fragile");
-    EXPECT_TRUE(contains(reason, "world 'test' collapsed: process 'fragile' exited with status "
-                                 "7 after "))
+    EXPECT_TRUE(contains(reason,
+                         "world 'test' collapsed: process 'fragile' exited with status "
+                         "7 after "))
         << reason;
     EXPECT_TRUE(contains(reason, "| lost the robot")) << reason;
     EXPECT_EQ(supervisor.collapseReason(), reason);
@@ -260,8 +250,7 @@ TEST(ProcessSupervisor, ReportsACollapseWithStatusAndLastLines)
     EXPECT_EQ(calls, 1);
 }
 
-TEST(ProcessSupervisor, NamesTheSignalThatKilledAProcess)
-{
+TEST(ProcessSupervisor, NamesTheSignalThatKilledAProcess) {
     World world = worldOf(
         "<process name='a' command=\"/bin/sh -c 'echo ready; sleep 0.2; kill -SEGV $$'\">"
         "<ready><output>ready</output></ready></process>");
@@ -280,8 +269,7 @@ TEST(ProcessSupervisor, NamesTheSignalThatKilledAProcess)
         << supervisor.collapseReason();
 }
 
-TEST(ProcessSupervisor, SendsTheStopSignalAskedFor)
-{
+TEST(ProcessSupervisor, SendsTheStopSignalAskedFor) {
     World world = worldOf(
         "<process name='a' command=\"/bin/sh -c 'trap &quot;echo got INT; exit 0&quot; INT; "
         "echo ready; while :; do sleep 0.02; done'\"><ready><output>ready</output></ready>"
@@ -297,8 +285,7 @@ TEST(ProcessSupervisor, SendsTheStopSignalAskedFor)
     EXPECT_TRUE(reports.any("'a' stopped after")) << reports.all();
 }
 
-TEST(ProcessSupervisor, KillsAProcessThatIgnoresItsStopSignalAfterTheGrace)
-{
+TEST(ProcessSupervisor, KillsAProcessThatIgnoresItsStopSignalAfterTheGrace) {
     World world = worldOf(
         "<process name='stubborn' command=\"/bin/sh -c 'trap &quot;&quot; TERM; echo ready; "
         "while :; do sleep 0.02; done'\"><ready><output>ready</output></ready>"
@@ -314,13 +301,13 @@ TEST(ProcessSupervisor, KillsAProcessThatIgnoresItsStopSignalAfterTheGrace)
     EXPECT_GE(took, std::chrono::milliseconds(300));
     EXPECT_LT(took, std::chrono::seconds(3));
     EXPECT_FALSE(alive(pid));
-    EXPECT_TRUE(reports.any("'stubborn' did not stop within 300 ms of SIGTERM: killed with "
-                            "SIGKILL; it was killed by signal SIGKILL"))
+    EXPECT_TRUE(
+        reports.any("'stubborn' did not stop within 300 ms of SIGTERM: killed with "
+                    "SIGKILL; it was killed by signal SIGKILL"))
         << reports.all();
 }
 
-TEST(ProcessSupervisor, KillsDescendantsThatLeftTheProcessGroup)
-{
+TEST(ProcessSupervisor, KillsDescendantsThatLeftTheProcessGroup) {
     World world = worldOf(
         "<process name='daemon' command=\"/bin/sh -c 'sleep 60 &amp; setsid sleep 61 &amp; "
         "sleep 0.1; echo ready; wait'\"><ready><output>ready</output></ready></process>");
@@ -334,8 +321,7 @@ TEST(ProcessSupervisor, KillsDescendantsThatLeftTheProcessGroup)
     EXPECT_TRUE(reports.any("killed 1 leftover process(es) of world 'test'")) << reports.all();
 }
 
-TEST(ProcessSupervisor, StopDuringStartInterruptsIt)
-{
+TEST(ProcessSupervisor, StopDuringStartInterruptsIt) {
     World world = worldOf(
         "<process name='never' command=\"/bin/sh -c 'exec sleep 30'\">"
         "<ready><output>ready</output></ready></process>\n" +
@@ -356,10 +342,10 @@ TEST(ProcessSupervisor, StopDuringStartInterruptsIt)
     EXPECT_TRUE(processesWith(supervisor.marker()).empty());
 }
 
-TEST(ProcessSupervisor, AcceptsA200CharacterProcessName)
-{
+TEST(ProcessSupervisor, AcceptsA200CharacterProcessName) {
     const std::string name(200, 'x');
-    World world = worldOf("<process name='" + name + "' command=\"/bin/sh -c 'echo ready; sleep "
+    World world = worldOf("<process name='" + name +
+                          "' command=\"/bin/sh -c 'echo ready; sleep "
                           "0.3; exit 4'\"><ready><output>ready</output></ready></process>");
     ProcessSupervisor supervisor(world);
     std::atomic<bool> done{false};
@@ -372,12 +358,11 @@ TEST(ProcessSupervisor, AcceptsA200CharacterProcessName)
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     ASSERT_TRUE(done);
-    EXPECT_TRUE(contains(supervisor.collapseReason(),
-                         "process '" + name + "' exited with status 4"));
+    EXPECT_TRUE(
+        contains(supervisor.collapseReason(), "process '" + name + "' exited with status 4"));
 }
 
-TEST(ProcessSupervisor, SeesAPortWithinMillisecondsOfItOpening)
-{
+TEST(ProcessSupervisor, SeesAPortWithinMillisecondsOfItOpening) {
     int port = 0;
     {
         // A free port: bound, read, released.
@@ -419,8 +404,7 @@ TEST(ProcessSupervisor, SeesAPortWithinMillisecondsOfItOpening)
     EXPECT_LT(ready - opened, 0.05) << "ready " << (ready - opened) * 1000 << " ms after listen";
 }
 
-TEST(ProcessSupervisor, ProcessesDieWithTheProcessThatSupervisesThem)
-{
+TEST(ProcessSupervisor, ProcessesDieWithTheProcessThatSupervisesThem) {
     World world = worldOf(kServer);
     int pipeFds[2];
     ASSERT_EQ(::pipe(pipeFds), 0);

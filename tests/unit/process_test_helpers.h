@@ -17,8 +17,7 @@
 namespace rtf_process_test {
 
 // An empty folder named after the running test, under the build tree.
-inline std::filesystem::path freshFolder()
-{
+inline std::filesystem::path freshFolder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
 #ifdef RTF_UNIT_TEST_TMPDIR
     std::filesystem::path base = RTF_UNIT_TEST_TMPDIR;
@@ -32,15 +31,13 @@ inline std::filesystem::path freshFolder()
     return folder;
 }
 
-inline std::filesystem::path writeFile(const std::filesystem::path& path, const std::string& text)
-{
+inline std::filesystem::path writeFile(const std::filesystem::path& path, const std::string& text) {
     std::ofstream(path) << text;
     return path;
 }
 
 // Pids of the live (not zombie) processes whose environment holds `entry` (NAME=VALUE).
-inline std::vector<int> processesWith(const std::string& entry)
-{
+inline std::vector<int> processesWith(const std::string& entry) {
     std::vector<int> found;
     DIR* proc = ::opendir("/proc");
     if (proc == nullptr) {
@@ -64,8 +61,7 @@ inline std::vector<int> processesWith(const std::string& entry)
         std::string content((std::istreambuf_iterator<char>(env)),
                             std::istreambuf_iterator<char>());
         std::string padded = std::string(1, '\0') + content + std::string(1, '\0');
-        if (padded.find(std::string(1, '\0') + entry + std::string(1, '\0')) !=
-            std::string::npos) {
+        if (padded.find(std::string(1, '\0') + entry + std::string(1, '\0')) != std::string::npos) {
             found.push_back(pid);
         }
     }
@@ -73,8 +69,7 @@ inline std::vector<int> processesWith(const std::string& entry)
     return found;
 }
 
-inline bool alive(int pid)
-{
+inline bool alive(int pid) {
     std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
     std::string line;
     if (!std::getline(stat, line)) {

@@ -16,8 +16,7 @@ namespace {
 // A TCP socket bound to a free port of 127.0.0.1, listening only when asked.
 class BoundSocket {
 public:
-    BoundSocket()
-    {
+    BoundSocket() {
         fd_ = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
         sockaddr_in address{};
         address.sin_family = AF_INET;
@@ -36,16 +35,14 @@ private:
     int port_ = 0;
 };
 
-ReadyCheck checkOf(ReadyCheck::Kind kind, double timeout = 5)
-{
+ReadyCheck checkOf(ReadyCheck::Kind kind, double timeout = 5) {
     ReadyCheck check;
     check.kind = kind;
     check.timeout = timeout;
     return check;
 }
 
-std::unique_ptr<Readiness> make(const ReadyCheck& check, double started)
-{
+std::unique_ptr<Readiness> make(const ReadyCheck& check, double started) {
     ChildOptions context;
     context.folder = "/";
     std::string error;
@@ -55,8 +52,7 @@ std::unique_ptr<Readiness> make(const ReadyCheck& check, double started)
 }
 
 // Polls `check` when due until it passes or `limit` seconds go by; returns when it passed.
-double pollUntilPassed(Readiness& check, double limit)
-{
+double pollUntilPassed(Readiness& check, double limit) {
     const double end = monotonicSeconds() + limit;
     while (monotonicSeconds() < end) {
         double now = monotonicSeconds();
@@ -70,8 +66,7 @@ double pollUntilPassed(Readiness& check, double limit)
 
 }  // namespace
 
-TEST(Readiness, PortPassesOnlyOnceSomethingListens)
-{
+TEST(Readiness, PortPassesOnlyOnceSomethingListens) {
     BoundSocket socket;
     std::string error;
     EXPECT_FALSE(tcpAccepts("127.0.0.1", socket.port(), error));
@@ -87,8 +82,7 @@ TEST(Readiness, PortPassesOnlyOnceSomethingListens)
     EXPECT_TRUE(check->passed());
 }
 
-TEST(Readiness, PortIsPolledEveryMillisecondAtFirst)
-{
+TEST(Readiness, PortIsPolledEveryMillisecondAtFirst) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Port);
     spec.port = 1;
     const double now = monotonicSeconds();
@@ -100,20 +94,17 @@ TEST(Readiness, PortIsPolledEveryMillisecondAtFirst)
     EXPECT_DOUBLE_EQ(check->nextPoll(now + 10), now + 10.005);
 }
 
-TEST(Readiness, AHostThatDoesNotResolveIsAnError)
-{
+TEST(Readiness, AHostThatDoesNotResolveIsAnError) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Port);
     spec.host = "no-such-host.invalid";
     spec.port = 80;
     ChildOptions context;
     std::string error;
     EXPECT_FALSE(makeReadiness(spec, 0, context, error));
-    EXPECT_NE(error.find("cannot resolve host 'no-such-host.invalid'"), std::string::npos)
-        << error;
+    EXPECT_NE(error.find("cannot resolve host 'no-such-host.invalid'"), std::string::npos) << error;
 }
 
-TEST(Readiness, FilePassesWhenTheFileAppears)
-{
+TEST(Readiness, FilePassesWhenTheFileAppears) {
     const auto folder = rtf_process_test::freshFolder();
     ReadyCheck spec = checkOf(ReadyCheck::Kind::File);
     spec.path = (folder / "ready.flag").string();
@@ -123,8 +114,7 @@ TEST(Readiness, FilePassesWhenTheFileAppears)
     EXPECT_TRUE(check->poll(monotonicSeconds()));
 }
 
-TEST(Readiness, DelayPassesWhenItIsOver)
-{
+TEST(Readiness, DelayPassesWhenItIsOver) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Delay);
     spec.delay = 0.5;
     auto check = make(spec, 100);
@@ -134,8 +124,7 @@ TEST(Readiness, DelayPassesWhenItIsOver)
     EXPECT_DOUBLE_EQ(check->passedAt(), 100.5);
 }
 
-TEST(Readiness, OutputPassesOnAMatchingLine)
-{
+TEST(Readiness, OutputPassesOnAMatchingLine) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Output);
     spec.pattern = "listening on port \\d+";
     auto check = make(spec, 0);
@@ -146,8 +135,7 @@ TEST(Readiness, OutputPassesOnAMatchingLine)
     EXPECT_DOUBLE_EQ(check->passedAt(), 2);
 }
 
-TEST(Readiness, DeadlineIsCountedFromTheProcessStart)
-{
+TEST(Readiness, DeadlineIsCountedFromTheProcessStart) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Output, 3);
     spec.pattern = "never";
     auto check = make(spec, 10);
@@ -155,8 +143,7 @@ TEST(Readiness, DeadlineIsCountedFromTheProcessStart)
     EXPECT_TRUE(check->expired(13));
 }
 
-TEST(Readiness, ProbePassesWhenTheCommandExitsWithZero)
-{
+TEST(Readiness, ProbePassesWhenTheCommandExitsWithZero) {
     const auto folder = rtf_process_test::freshFolder();
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Probe);
     spec.argv = {"/bin/sh", "-c", "test -e " + (folder / "up").string()};
@@ -169,8 +156,7 @@ TEST(Readiness, ProbePassesWhenTheCommandExitsWithZero)
     EXPECT_GT(pollUntilPassed(*check, 2), 0);
 }
 
-TEST(Readiness, ProbeOutputExplainsItsFailure)
-{
+TEST(Readiness, ProbeOutputExplainsItsFailure) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Probe);
     spec.argv = {"/bin/sh", "-c", "echo 'service is down'; exit 3"};
     auto check = make(spec, monotonicSeconds());
@@ -180,8 +166,7 @@ TEST(Readiness, ProbeOutputExplainsItsFailure)
         << check->lastObservation();
 }
 
-TEST(Readiness, ProbeThatCannotStartSaysWhy)
-{
+TEST(Readiness, ProbeThatCannotStartSaysWhy) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Probe);
     spec.argv = {"no-such-probe-program"};
     auto check = make(spec, monotonicSeconds());

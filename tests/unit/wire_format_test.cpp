@@ -12,20 +12,19 @@ using namespace robottestingframework::isolation;
 
 namespace {
 
-WireRecord sample()
-{
+WireRecord sample() {
     WireRecord record;
     record.kind = WireKind::Event;
     record.event = ResultEvent::Kind::Check;
     record.name = "arm test";
-    record.message = TestMessage("joint 3 \xc3\xa9 in range", std::string("a\0b", 3), "arm.cpp", 42);
+    record.message =
+        TestMessage("joint 3 \xc3\xa9 in range", std::string("a\0b", 3), "arm.cpp", 42);
     record.flag = false;
     record.number = -1234567890123LL;
     return record;
 }
 
-void expectSame(const WireRecord& a, const WireRecord& b)
-{
+void expectSame(const WireRecord& a, const WireRecord& b) {
     EXPECT_EQ(a.kind, b.kind);
     EXPECT_EQ(a.event, b.event);
     EXPECT_EQ(a.name, b.name);
@@ -39,8 +38,7 @@ void expectSame(const WireRecord& a, const WireRecord& b)
 
 }  // namespace
 
-TEST(WireFormat, RecordRoundTripsEveryField)
-{
+TEST(WireFormat, RecordRoundTripsEveryField) {
     WireDecoder decoder;
     decoder.feed(encode(sample()));
     WireRecord out;
@@ -50,8 +48,7 @@ TEST(WireFormat, RecordRoundTripsEveryField)
     EXPECT_EQ(decoder.pending(), 0u);
 }
 
-TEST(WireFormat, RecordsSplitAtEveryByteAreReassembled)
-{
+TEST(WireFormat, RecordsSplitAtEveryByteAreReassembled) {
     std::string stream = encode(sample());
     WireRecord second;
     second.kind = WireKind::Finished;
@@ -73,8 +70,7 @@ TEST(WireFormat, RecordsSplitAtEveryByteAreReassembled)
     EXPECT_EQ(records, 2);
 }
 
-TEST(WireFormat, TruncatedRecordIsNeverReturned)
-{
+TEST(WireFormat, TruncatedRecordIsNeverReturned) {
     std::string bytes = encode(sample());
     for (std::size_t cut = 0; cut < bytes.size(); ++cut) {
         WireDecoder decoder;
@@ -84,8 +80,7 @@ TEST(WireFormat, TruncatedRecordIsNeverReturned)
     }
 }
 
-TEST(WireFormat, OversizedLengthIsCorrupt)
-{
+TEST(WireFormat, OversizedLengthIsCorrupt) {
     WireDecoder decoder;
     decoder.feed(std::string("\xff\xff\xff\xff garbage", 12));
     WireRecord out;
@@ -94,8 +89,7 @@ TEST(WireFormat, OversizedLengthIsCorrupt)
     EXPECT_EQ(decoder.next(out), WireDecoder::Status::Corrupt) << "corrupt stays corrupt";
 }
 
-TEST(WireFormat, BodyWithBadKindOrStringLengthIsCorrupt)
-{
+TEST(WireFormat, BodyWithBadKindOrStringLengthIsCorrupt) {
     std::string bytes = encode(sample());
     std::string badKind = bytes;
     badKind[4] = 99;  // the kind byte, just after the length
@@ -111,8 +105,7 @@ TEST(WireFormat, BodyWithBadKindOrStringLengthIsCorrupt)
     EXPECT_EQ(second.next(out), WireDecoder::Status::Corrupt);
 }
 
-TEST(WireFormat, RandomGarbageNeverCrashesTheDecoder)
-{
+TEST(WireFormat, RandomGarbageNeverCrashesTheDecoder) {
     unsigned int seed = 12345;
     for (int round = 0; round < 2000; ++round) {
         std::string junk;
@@ -133,8 +126,7 @@ TEST(WireFormat, RandomGarbageNeverCrashesTheDecoder)
     }
 }
 
-TEST(WireFormat, RequestRoundTripsAndRejectsTrailingBytes)
-{
+TEST(WireFormat, RequestRoundTripsAndRejectsTrailingBytes) {
     WorkRequest request;
     request.role = WorkRequest::Role::Fixture;
     request.type = "dll";

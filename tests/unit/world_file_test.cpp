@@ -17,16 +17,14 @@ struct Parsed {
     std::string error;
 };
 
-Parsed parse(const std::string& text, WorldOptions options = {})
-{
+Parsed parse(const std::string& text, WorldOptions options = {}) {
     Parsed out;
     out.ok = parseWorld(text, "/tmp/rtf-world/world.xml", options, out.world, out.error);
     return out;
 }
 
 // The error must start with the file and line, and contain `words`.
-void expectError(const std::string& text, unsigned line, const std::string& words)
-{
+void expectError(const std::string& text, unsigned line, const std::string& words) {
     Parsed parsed = parse(text);
     ASSERT_FALSE(parsed.ok) << text;
     const std::string where = "/tmp/rtf-world/world.xml:" + std::to_string(line) + ": ";
@@ -36,8 +34,7 @@ void expectError(const std::string& text, unsigned line, const std::string& word
 
 }  // namespace
 
-TEST(WorldFile, ReadsEveryPartOfAProcess)
-{
+TEST(WorldFile, ReadsEveryPartOfAProcess) {
     Parsed parsed = parse(R"(<world name="lab" logdir="logs" ready-timeout="12s">
   <env name="COMMON">1</env>
   <process name="broker" command="mosquitto -c 'my conf.conf'">
@@ -107,8 +104,7 @@ TEST(WorldFile, ReadsEveryPartOfAProcess)
     EXPECT_EQ(shell.depends, std::vector<std::string>{"robot"});
 }
 
-TEST(WorldFile, NameDefaultsToTheFileAndLogsGoUnderTheCurrentFolder)
-{
+TEST(WorldFile, NameDefaultsToTheFileAndLogsGoUnderTheCurrentFolder) {
     Parsed parsed = parse("<world><process name='a' command='true'/></world>");
     ASSERT_TRUE(parsed.ok) << parsed.error;
     EXPECT_EQ(parsed.world.name, "world");
@@ -116,8 +112,7 @@ TEST(WorldFile, NameDefaultsToTheFileAndLogsGoUnderTheCurrentFolder)
               (std::filesystem::current_path() / "rtf-logs" / "world").string());
 }
 
-TEST(WorldFile, LogFolderFromTheFixtureParamWins)
-{
+TEST(WorldFile, LogFolderFromTheFixtureParamWins) {
     WorldOptions options;
     options.logFolder = "/tmp/elsewhere";
     Parsed parsed = parse("<world logdir='x'><process name='a' command='true'/></world>", options);
@@ -125,29 +120,26 @@ TEST(WorldFile, LogFolderFromTheFixtureParamWins)
     EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere");
 }
 
-TEST(WorldFile, ReportsMalformedXmlWithItsLine)
-{
+TEST(WorldFile, ReportsMalformedXmlWithItsLine) {
     expectError("<world>\n  <process name='a' command='true'>\n</world>\n", 3, "malformed XML");
 }
 
-TEST(WorldFile, ReportsAWrongRootElement)
-{
+TEST(WorldFile, ReportsAWrongRootElement) {
     expectError("\n<suite/>", 2, "expected <world> as the root element, found <suite>");
 }
 
-TEST(WorldFile, ReportsUnknownElementsAndAttributesWithTheirLine)
-{
+TEST(WorldFile, ReportsUnknownElementsAndAttributesWithTheirLine) {
     expectError("<world>\n<process name='a' command='true'>\n<wait/>\n</process></world>", 3,
                 "unknown element <wait> in <process>");
     expectError("<world>\n<process name='a' command='true' colour='red'/></world>", 2,
                 "unknown attribute 'colour' of <process>");
-    expectError("<world>\n<process name='a' command='true'>\n<ready>\n<socket>1</socket>"
-                "</ready></process></world>",
-                4, "unknown readiness check <socket>");
+    expectError(
+        "<world>\n<process name='a' command='true'>\n<ready>\n<socket>1</socket>"
+        "</ready></process></world>",
+        4, "unknown readiness check <socket>");
 }
 
-TEST(WorldFile, ReportsAProcessWithoutNameOrCommand)
-{
+TEST(WorldFile, ReportsAProcessWithoutNameOrCommand) {
     expectError("<world>\n<process command='true'/></world>", 2, "needs a 'name' attribute");
     expectError("<world>\n<process name='a'/></world>", 2, "has no command");
     expectError("<world>\n<process name='a' command='  '/></world>", 2, "empty command");
@@ -155,54 +147,58 @@ TEST(WorldFile, ReportsAProcessWithoutNameOrCommand)
                 "unterminated double quote");
 }
 
-TEST(WorldFile, ReportsTwoProcessesWithTheSameName)
-{
-    expectError("<world>\n<process name='a' command='true'/>\n<process name='a' command='true'/>"
-                "</world>",
-                3, "a second process named 'a' (the first is at line 2)");
+TEST(WorldFile, ReportsTwoProcessesWithTheSameName) {
+    expectError(
+        "<world>\n<process name='a' command='true'/>\n<process name='a' command='true'/>"
+        "</world>",
+        3, "a second process named 'a' (the first is at line 2)");
 }
 
-TEST(WorldFile, ReportsAnUnknownDependency)
-{
-    expectError("<world>\n<process name='broker' command='true'/>\n"
-                "<process name='robot' depends='brocker' command='true'/></world>",
-                3, "'robot' depends on 'brocker', which is not a process of this world");
+TEST(WorldFile, ReportsAnUnknownDependency) {
+    expectError(
+        "<world>\n<process name='broker' command='true'/>\n"
+        "<process name='robot' depends='brocker' command='true'/></world>",
+        3, "'robot' depends on 'brocker', which is not a process of this world");
 }
 
-TEST(WorldFile, ReportsADependencyCycle)
-{
-    expectError("<world>\n<process name='a' depends='c' command='true'/>\n"
-                "<process name='b' depends='a' command='true'/>\n"
-                "<process name='c' depends='b' command='true'/></world>",
-                2, "dependency cycle: 'a' -> 'c' -> 'b' -> 'a'");
+TEST(WorldFile, ReportsADependencyCycle) {
+    expectError(
+        "<world>\n<process name='a' depends='c' command='true'/>\n"
+        "<process name='b' depends='a' command='true'/>\n"
+        "<process name='c' depends='b' command='true'/></world>",
+        2, "dependency cycle: 'a' -> 'c' -> 'b' -> 'a'");
     expectError("<world>\n<process name='self' depends='self' command='true'/></world>", 2,
                 "dependency cycle: 'self' -> 'self'");
 }
 
-TEST(WorldFile, ReportsBadValuesOfChecks)
-{
-    expectError("<world>\n<process name='a' command='true'><ready>\n<port>http</port>"
-                "</ready></process></world>",
-                3, "'http' is not a TCP port");
-    expectError("<world>\n<process name='a' command='true'><ready>\n<port>70000</port>"
-                "</ready></process></world>",
-                3, "'70000' is not a TCP port");
-    expectError("<world>\n<process name='a' command='true'><ready>\n<delay>soon</delay>"
-                "</ready></process></world>",
-                3, "'soon' is not a duration");
-    expectError("<world>\n<process name='a' command='true'><ready>\n<output>([a-</output>"
-                "</ready></process></world>",
-                3, "is not a valid regular expression");
-    expectError("<world>\n<process name='a' command='true'><ready>\n"
-                "<file timeout='forever'>x</file></ready></process></world>",
-                3, "'forever' is not a duration");
-    expectError("<world>\n<process name='a' command='true'>\n<stop signal='SIGNOPE'/>"
-                "</process></world>",
-                3, "'SIGNOPE' is not a signal");
+TEST(WorldFile, ReportsBadValuesOfChecks) {
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<port>http</port>"
+        "</ready></process></world>",
+        3, "'http' is not a TCP port");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<port>70000</port>"
+        "</ready></process></world>",
+        3, "'70000' is not a TCP port");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<delay>soon</delay>"
+        "</ready></process></world>",
+        3, "'soon' is not a duration");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<output>([a-</output>"
+        "</ready></process></world>",
+        3, "is not a valid regular expression");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n"
+        "<file timeout='forever'>x</file></ready></process></world>",
+        3, "'forever' is not a duration");
+    expectError(
+        "<world>\n<process name='a' command='true'>\n<stop signal='SIGNOPE'/>"
+        "</process></world>",
+        3, "'SIGNOPE' is not a signal");
 }
 
-TEST(WorldFile, ExpandsVariablesFromTheParamTheFileAndTheEnvironment)
-{
+TEST(WorldFile, ExpandsVariablesFromTheParamTheFileAndTheEnvironment) {
     ::setenv("RTF_WORLD_TEST_HOME", "/home/robot", 1);
     WorldOptions options;
     options.variables["port"] = "4242";
@@ -217,27 +213,24 @@ TEST(WorldFile, ExpandsVariablesFromTheParamTheFileAndTheEnvironment)
                           options);
     ASSERT_TRUE(parsed.ok) << parsed.error;
     const ProcessSpec& a = parsed.world.processes[0];
-    EXPECT_EQ(a.argv,
-              (std::vector<std::string>{"echo", "hello", "/home/robot", "${literal}"}));
+    EXPECT_EQ(a.argv, (std::vector<std::string>{"echo", "hello", "/home/robot", "${literal}"}));
     EXPECT_EQ(a.environment[0].second, "/tmp/rtf-world");
     EXPECT_EQ(a.ready[0].port, 4242);  // the param wins over the file
 }
 
-TEST(WorldFile, ReportsAnUndefinedVariableWithItsLine)
-{
-    expectError("<world>\n<process name='a'>\n<command>run ${nope}</command></process></world>",
-                3, "undefined variable ${nope}");
+TEST(WorldFile, ReportsAnUndefinedVariableWithItsLine) {
+    expectError("<world>\n<process name='a'>\n<command>run ${nope}</command></process></world>", 3,
+                "undefined variable ${nope}");
     ::unsetenv("RTF_WORLD_TEST_UNSET");
-    expectError("<world>\n<process name='a' command='run ${env:RTF_WORLD_TEST_UNSET}'/></world>",
-                2, "environment variable 'RTF_WORLD_TEST_UNSET' is not set");
+    expectError("<world>\n<process name='a' command='run ${env:RTF_WORLD_TEST_UNSET}'/></world>", 2,
+                "environment variable 'RTF_WORLD_TEST_UNSET' is not set");
 }
 
-TEST(WorldFile, AcceptsA200CharacterNameAndGivesItAShortLogFile)
-{
+TEST(WorldFile, AcceptsA200CharacterNameAndGivesItAShortLogFile) {
     const std::string name(200, 'n');
-    Parsed parsed = parse("<world><process name='" + name + "' command='true'/>" +
-                          "<process name='" + name + "x' depends='" + name +
-                          "' command='true'/></world>");
+    Parsed parsed =
+        parse("<world><process name='" + name + "' command='true'/>" + "<process name='" + name +
+              "x' depends='" + name + "' command='true'/></world>");
     ASSERT_TRUE(parsed.ok) << parsed.error;
     EXPECT_EQ(parsed.world.processes[0].name, name);
     const std::string file0 =
@@ -248,14 +241,13 @@ TEST(WorldFile, AcceptsA200CharacterNameAndGivesItAShortLogFile)
     EXPECT_NE(file0, file1);
 }
 
-TEST(WorldFile, ReadsTheFileFromDiskAndResolvesFoldersAgainstIt)
-{
+TEST(WorldFile, ReadsTheFileFromDiskAndResolvesFoldersAgainstIt) {
     const auto folder = rtf_process_test::freshFolder();
     std::filesystem::create_directories(folder / "bin");
-    const auto file = rtf_process_test::writeFile(
-        folder / "w.xml",
-        "<world><process name='a' folder='bin' command='./run'>"
-        "<ready><file>out/ready</file></ready></process></world>");
+    const auto file =
+        rtf_process_test::writeFile(folder / "w.xml",
+                                    "<world><process name='a' folder='bin' command='./run'>"
+                                    "<ready><file>out/ready</file></ready></process></world>");
     World world;
     std::string error;
     ASSERT_TRUE(readWorldFile(file.string(), {}, world, error)) << error;
@@ -272,8 +264,7 @@ TEST(WorldFile, ReadsTheFileFromDiskAndResolvesFoldersAgainstIt)
     EXPECT_NE(error.find("cannot read the world file"), std::string::npos) << error;
 }
 
-TEST(CommandLine, SplitsLikeAShell)
-{
+TEST(CommandLine, SplitsLikeAShell) {
     std::vector<std::string> words;
     std::string error;
     ASSERT_TRUE(splitCommandLine(R"(a  'b c' "d \"e\"" f\ g "" h'i'j)", words, error));
@@ -282,8 +273,7 @@ TEST(CommandLine, SplitsLikeAShell)
     EXPECT_EQ(error, "unterminated single quote");
 }
 
-TEST(Duration, ReadsUnits)
-{
+TEST(Duration, ReadsUnits) {
     double seconds = 0;
     ASSERT_TRUE(parseDuration("300ms", seconds));
     EXPECT_DOUBLE_EQ(seconds, 0.3);
@@ -298,8 +288,7 @@ TEST(Duration, ReadsUnits)
     EXPECT_FALSE(parseDuration("", seconds));
 }
 
-TEST(Signals, ReadsNamesAndNumbers)
-{
+TEST(Signals, ReadsNamesAndNumbers) {
     int signal = 0;
     ASSERT_TRUE(parseSignal("SIGINT", signal));
     EXPECT_EQ(signal, SIGINT);

@@ -108,6 +108,9 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
         spawnError = ::posix_spawn(&pid, argp[0], &actions, &attributes, argp.data(), envp.data());
         if (spawnError == 0) {
             pid_ = pid;
+            if (terminate_) {  // terminate() came while it was being started
+                ::kill(pid, SIGTERM);
+            }
         }
     }
     posix_spawn_file_actions_destroy(&actions);
@@ -172,8 +175,14 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     return outcome;
 }
 
+void ExecProcess::reset() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    terminate_ = false;
+}
+
 void ExecProcess::terminate() {
     std::lock_guard<std::mutex> lock(mutex_);
+    terminate_ = true;
     if (pid_ > 0) {
         ::kill(pid_, SIGTERM);
     }

@@ -25,12 +25,15 @@ public:
     // (name, value pairs), stdin from /dev/null. Returns once it has ended.
     ExecOutcome run(const std::vector<std::string>& argv,
                     const std::vector<std::pair<std::string, std::string>>& environment);
-    // Sends SIGTERM to the running program, if any. Thread-safe.
+    // Sends SIGTERM to the running program, or to the next one as soon as it starts (until
+    // reset()). Thread-safe.
     void terminate();
+    void reset();
 
 private:
     std::mutex mutex_;
     pid_t pid_ = -1;
+    bool terminate_ = false;
 };
 
 // "SIGSEGV", "SIGKILL", ... or "signal N".
