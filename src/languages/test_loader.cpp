@@ -12,14 +12,12 @@ namespace languages {
 
 namespace {
 
-bool endsWith(const std::string& text, const std::string& suffix)
-{
+bool endsWith(const std::string& text, const std::string& suffix) {
     return text.size() >= suffix.size() &&
            std::equal(suffix.rbegin(), suffix.rend(), text.rbegin());
 }
 
-std::string extensionType(const std::string& path)
-{
+std::string extensionType(const std::string& path) {
     // A versioned library (libfoo.so.1) is still a library.
     if (endsWith(path, ".so") || path.find(".so.") != std::string::npos ||
         endsWith(path, ".dylib") || endsWith(path, ".dll")) {
@@ -39,8 +37,7 @@ std::string extensionType(const std::string& path)
 
 }  // namespace
 
-std::string typeFromFile(const std::string& path)
-{
+std::string typeFromFile(const std::string& path) {
     std::string type = extensionType(path);
     if (!type.empty()) {
         return type;
@@ -53,8 +50,7 @@ std::string typeFromFile(const std::string& path)
     return {};
 }
 
-bool isSupportedType(const std::string& type)
-{
+bool isSupportedType(const std::string& type) {
     if (type == "dll" || type == "exec" || type == "process") {
         return true;  // "process": fixtures only (a world file)
     }
@@ -77,8 +73,7 @@ bool isSupportedType(const std::string& type)
 }
 
 std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string& path,
-                                     std::string& error)
-{
+                                     std::string& error) {
     if (type == "dll") {
         return loadDllTest(path, error);
     }
@@ -105,8 +100,7 @@ std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string&
 }
 
 std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
-                                           std::string& error)
-{
+                                           std::string& error) {
     if (type == "dll") {
         return loadDllFixture(path, error);
     }

@@ -302,6 +302,11 @@ TEST_F(Isolation, ManyTestsInARowShareOneForkServer) {
         spec.type = "dll";
         ASSERT_EQ(executor->run(spec, self, localResult), TestStatus::Passed) << local.dump();
     }
+    // The last worker may still be exiting after it said it finished.
+    platform::Deadline deadline(2.0);
+    while (markedProcesses(marker).size() > 2 && !deadline.expired()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
     EXPECT_LE(markedProcesses(marker).size(), 2u) << "the fork server and its spare alone";
     recorder.starts = recorder.ends = 1;  // this test did not use the shared recorder
 }

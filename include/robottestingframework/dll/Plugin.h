@@ -16,32 +16,26 @@
 // Bumped when the factory's contract changes; the loader refuses other versions.
 #define ROBOTTESTINGFRAMEWORK_PLUGIN_ABI 1
 
-#define ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN(classname)                                      \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT int robottestingframework_plugin_abi()     \
-    {                                                                                        \
-        return ROBOTTESTINGFRAMEWORK_PLUGIN_ABI;                                             \
-    }                                                                                        \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void* robottestingframework_create_test() \
-    {                                                                                        \
-        return static_cast<::robottestingframework::TestCase*>(new classname());             \
-    }                                                                                        \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void robottestingframework_destroy_test(  \
-        void* object)                                                                        \
-    {                                                                                        \
-        delete static_cast<::robottestingframework::TestCase*>(object);                      \
+#define ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN(classname)                                        \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT int robottestingframework_plugin_abi() {    \
+        return ROBOTTESTINGFRAMEWORK_PLUGIN_ABI;                                               \
+    }                                                                                          \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void* robottestingframework_create_test() { \
+        return static_cast<::robottestingframework::TestCase*>(new classname());               \
+    }                                                                                          \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void robottestingframework_destroy_test(    \
+        void* object) {                                                                        \
+        delete static_cast<::robottestingframework::TestCase*>(object);                        \
     }
 
-#define ROBOTTESTINGFRAMEWORK_PREPARE_FIXTURE_PLUGIN(classname)                                 \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT int robottestingframework_plugin_abi()        \
-    {                                                                                           \
-        return ROBOTTESTINGFRAMEWORK_PLUGIN_ABI;                                                \
-    }                                                                                           \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void* robottestingframework_create_fixture() \
-    {                                                                                           \
-        return static_cast<::robottestingframework::FixtureManager*>(new classname());          \
-    }                                                                                           \
-    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void robottestingframework_destroy_fixture(  \
-        void* object)                                                                           \
-    {                                                                                           \
-        delete static_cast<::robottestingframework::FixtureManager*>(object);                   \
+#define ROBOTTESTINGFRAMEWORK_PREPARE_FIXTURE_PLUGIN(classname)                                   \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT int robottestingframework_plugin_abi() {       \
+        return ROBOTTESTINGFRAMEWORK_PLUGIN_ABI;                                                  \
+    }                                                                                             \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void* robottestingframework_create_fixture() { \
+        return static_cast<::robottestingframework::FixtureManager*>(new classname());            \
+    }                                                                                             \
+    extern "C" ROBOTTESTINGFRAMEWORK_PLUGIN_EXPORT void robottestingframework_destroy_fixture(    \
+        void* object) {                                                                           \
+        delete static_cast<::robottestingframework::FixtureManager*>(object);                     \
     }
