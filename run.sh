@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Quick start. Installs the build dependencies (Debian 12), configures and builds in build/,
 # then:
-#   ./run.sh example    runs the example suite; reports in build/example-reports/
+#   ./run.sh example    runs the example suites; reports in build/example-reports/
 #   ./run.sh test       runs every test (ctest); last line "N passed, N failed"
 #   ./run.sh sanitize   builds build-asan/ with -DRTF_SANITIZE=ON and runs the unit tests
 # The build folder can be moved with RTF_BUILD_DIR (default build).
@@ -74,14 +74,21 @@ example)
     scripts/install-deps.sh
     configure "$dir"
     build "$dir"
-    reports=$(cd "$dir" && pwd)/example-reports
+    build_dir=$(cd "$dir" && pwd)
+    examples=$build_dir/examples
+    reports=$build_dir/example-reports
     mkdir -p "$reports"
+    # Three suites in one run, one report of each type for all: C++ (test and fixture
+    # plug-ins), scripts (Python, Lua, Ruby, TAP; a Python fixture) and a robot's world started
+    # by the process fixture. From the reports folder, so the world's logs land there too.
     status=0
-    "$dir/bin/robottestingframework-testrunner" --suite "$dir/examples/example.xml" \
-        --output "text:$reports/example.txt" --output "junit:$reports/example.xml" ||
-        status=$?
+    (cd "$reports" && "$build_dir/bin/robottestingframework-testrunner" \
+        --suite "$examples/example.xml" --suite "$examples/scripts.xml" \
+        --suite "$examples/robot/robot.xml" \
+        --output text:example.txt --output junit:example.xml) || status=$?
     echo
     echo "Reports: $reports/example.txt (text) and $reports/example.xml (JUnit)"
+    echo "Logs of the robot's processes: $reports/rtf-logs/robot/"
     exit $status
     ;;
 test)

@@ -11,6 +11,7 @@ class TestCase:
         return True  # False stops here: run() and tearDown() are not called
 
     def run(self):
+        robottestingframework.testReport("param again: " + robottestingframework.getParam())
         robottestingframework.testReport("environment: " + robottestingframework.getEnvironment())
         robottestingframework.testCheck(self.joints == 6, "the arm has six joints")
         robottestingframework.testFailIf(self.joints < 0, "a negative joint count")

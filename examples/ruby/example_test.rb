@@ -1,5 +1,5 @@
 # A Ruby test case: the runner loads this file and runs class TestCase.
-#   robottestingframework-testrunner --test example_test.rb -v
+#   robottestingframework-testrunner --test example_test.rb -p "--camera none" -v
 class TestCase
   def setup(param)
     RobotTestingFramework::setName("ruby example")

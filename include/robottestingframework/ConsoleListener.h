@@ -17,7 +17,10 @@ public:
     // Reports are hidden; failures and errors are still shown.
     void hideUncriticalMessages() { hideUncritical_ = true; }
     // Beyond RTF 2.x: show every check (the runner's --detail).
-    void showChecks(bool show) { showChecks_ = show; }
+    void showChecks(bool show) {
+        showChecks_ = show;
+        record_.setKeepChecks(show);  // checks are printed at the end of a test only then
+    }
     // Beyond RTF 2.x: where to print (stdout by default), and whether to use colours.
     void setStream(std::FILE* stream);
     void setColors(bool colors) { colors_ = colors; }

@@ -63,6 +63,11 @@ public:
     std::chrono::system_clock::time_point startedAt() const { return wallOrigin_; }
     // Drops events and records (counts stay). For runs with very many tests.
     void setKeepEvents(bool keep) { keepEvents_ = keep; }
+    // Keeps the records (what the outputs need) but not the arrival-order list of
+    // getResults(), which then stays empty. Saves memory on large runs.
+    void setKeepEventLog(bool keep) { keepLog_ = keep; }
+    // Keeps check events in the records only when true (the outputs show them only verbose).
+    void setKeepChecks(bool keep) { keepChecks_ = keep; }
 
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;
@@ -98,6 +103,8 @@ private:
     double start_ = 0;
     double end_ = -1;
     bool keepEvents_ = true;
+    bool keepLog_ = true;
+    bool keepChecks_ = true;
     std::vector<ResultEvent> events_;
     std::vector<SuiteRecord> suites_;
     // A suite between its startTestSuite and endTestSuite; `failed` survives dropped records.

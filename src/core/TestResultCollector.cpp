@@ -130,7 +130,6 @@ SuiteRecord& TestResultCollector::currentSuite() {
 }
 
 void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
-    ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
     // A test's own event goes to its record; anything else open (a fixture's report from a
     // watcher thread, a collapse) belongs to the suite.
     TestRecord* owner = nullptr;
@@ -140,12 +139,18 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
             break;
         }
     }
+    const bool logged = keepEvents_ && keepLog_;
+    // Most events of a passing test are checks: without the log they need not be copied.
+    if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
+        return;
+    }
+    ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
     if (owner != nullptr) {
         if (kind == Kind::Output) {
             owner->output += event.message.getMessage();
-        } else {
+        } else if (kind != Kind::Check || keepChecks_) {
             owner->status = std::max(owner->status, statusOf(kind));
-            owner->events.push_back(event);
+            owner->events.push_back(logged ? event : std::move(event));
         }
     } else if (!openSuites_.empty()) {
         SuiteRecord& suite = suites_[openSuites_.back().index];
@@ -155,10 +160,10 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
             if (isFailure(statusOf(kind))) {
                 suite.fixtureFailed = true;
             }
-            suite.events.push_back(event);
+            suite.events.push_back(logged ? event : std::move(event));
         }
     }
-    if (keepEvents_) {
+    if (logged) {
         events_.push_back(std::move(event));
     }
 }
@@ -201,7 +206,7 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
 
 void TestResultCollector::startTest(const Test* test) {
     const double time = now();
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::StartTest, test, TestMessage(), true, time));
     }
     SuiteRecord& suite = currentSuite();
@@ -221,7 +226,7 @@ void TestResultCollector::startTest(const Test* test) {
 
 void TestResultCollector::endTest(const Test* test) {
     const double time = now();
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::EndTest, test, TestMessage(), true, time));
     }
     for (std::size_t i = openTests_.size(); i > 0; --i) {
@@ -230,6 +235,9 @@ void TestResultCollector::endTest(const Test* test) {
             continue;
         }
         TestRecord& record = suites_[open.suite].tests[open.index];
+        if (test != nullptr) {
+            record.name = test->getName();  // a test may rename itself while it runs (scripts)
+        }
         record.duration = time - record.start;
         ++counts_[static_cast<std::size_t>(record.status)];
         if (isFailure(record.status)) {
@@ -249,7 +257,7 @@ void TestResultCollector::endTest(const Test* test) {
 
 void TestResultCollector::startTestSuite(const TestSuite* suite) {
     const double time = now();
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::StartSuite, suite, TestMessage(), true, time));
     }
     if (!keepEvents_ && openSuites_.empty() && openTests_.empty()) {
@@ -261,6 +269,10 @@ void TestResultCollector::startTestSuite(const TestSuite* suite) {
     if (suite != nullptr) {
         record.name = suite->getName();
         record.description = suite->getDescription();
+        if (keepEvents_) {
+            // Exactly once: a growing vector of records holds two copies while it moves.
+            record.tests.reserve(suite->size());
+        }
     }
     record.start = time;
     openSuites_.push_back({suites_.size() - 1, false});
@@ -268,7 +280,7 @@ void TestResultCollector::startTestSuite(const TestSuite* suite) {
 
 void TestResultCollector::endTestSuite(const TestSuite* suite) {
     const double time = now();
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::EndSuite, suite, TestMessage(), true, time));
     }
     if (openSuites_.empty()) {
@@ -286,14 +298,14 @@ void TestResultCollector::endTestSuite(const TestSuite* suite) {
 void TestResultCollector::startTestRunner() {
     start_ = now();
     end_ = -1;
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::StartRunner, nullptr, TestMessage(), true, start_));
     }
 }
 
 void TestResultCollector::endTestRunner() {
     end_ = now();
-    if (keepEvents_) {
+    if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::EndRunner, nullptr, TestMessage(), true, end_));
     }
 }

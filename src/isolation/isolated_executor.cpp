@@ -131,7 +131,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     }
     WorkerProcess worker;
     if (start(error)) {
-        worker.start(*server_, request, error);
+        worker.start(*server_, request, error, false);  // the pid comes with the events
     }
     if (!error.empty()) {
         relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker", error));
@@ -186,6 +186,9 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     } else if (why == Stop::Garbage || worker.corrupt()) {
         relay.add(Kind::Error, TestMessage("the worker sent unreadable events; it was stopped",
                                            ending.toString()));
+    } else if (!relay.finished() && worker.pid() <= 0) {
+        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker",
+                                           "the fork server could not start a worker"));
     } else if (!relay.finished()) {
         // The worker died before it finished (in the test, or destroying it after endTest).
         if (ending.signaled) {

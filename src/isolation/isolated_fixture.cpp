@@ -168,6 +168,8 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
                        platform::ExitStatus::fromWaitStatus(status_).toString() + ")";
         } else {
             inCall_ = true;
+            callName_ = name;
+            interrupted_ = false;
             replied_ = false;
         }
     }
@@ -186,9 +188,10 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
             std::unique_lock<std::mutex> lock(mutex_);
             changed_.wait_for(lock, std::chrono::milliseconds(deadline.remainingMs(100)),
                               [this] { return replied_ || dead_ || !events_.empty(); });
-            done = replied_ || dead_ || deadline.expired();
+            done = replied_ || dead_ || deadline.expired() || interrupted_;
         }
         bool timedOut = false;
+        bool interrupted = false;
         {
             std::lock_guard<std::mutex> lock(mutex_);
             if (replied_) {
@@ -201,9 +204,15 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
             } else if (dead_) {
                 failure_ = "fixture " + getName() + " died in " + name + ": " +
                            platform::ExitStatus::fromWaitStatus(status_).toString();
+            } else if (interrupted_) {
+                interrupted = true;
+                failure_ = "fixture " + getName() + " " + name + " interrupted";
             } else {
                 timedOut = true;
             }
+        }
+        if (interrupted) {
+            kill();
         }
         if (timedOut) {
             std::ostringstream text;
@@ -234,6 +243,17 @@ bool IsolatedFixture::setup(int argc, char** argv) {
         payload = getName();
     }
     return call("setup", payload);
+}
+
+void IsolatedFixture::interruptCall() {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        if (!inCall_ || callName_ == "tearDown") {
+            return;
+        }
+        interrupted_ = true;
+    }
+    changed_.notify_all();
 }
 
 bool IsolatedFixture::check() {

@@ -17,13 +17,14 @@
 #include "file_descriptor.h"
 #include "fork_server.h"
 #include "isolated_executor.h"
+#include "test_executor.h"
 #include "wire_format.h"
 #include "worker_process.h"
 
 namespace robottestingframework {
 namespace isolation {
 
-class IsolatedFixture : public FixtureManager {
+class IsolatedFixture : public FixtureManager, public runner::InterruptibleFixture {
 public:
     IsolatedFixture(std::shared_ptr<ForkServer> server, WorkRequest request,
                     IsolationOptions options);
@@ -32,6 +33,8 @@ public:
     bool setup(int argc, char** argv) override;
     bool check() override;
     void tearDown() override;
+    // A setup or check in progress fails as interrupted (the worker is stopped).
+    void interruptCall() override;
 
     // Why the last call failed (also sent to the result as an error about the suite).
     std::string failure() const { return failure_; }
@@ -61,6 +64,8 @@ private:
     bool dead_ = false;
     int status_ = 0;
     bool inCall_ = false;
+    std::string callName_;      // the call in progress
+    bool interrupted_ = false;  // interruptCall() during it
     bool quitting_ = false;
     std::string failure_;
 };

@@ -42,7 +42,8 @@ WorkerProcess::~WorkerProcess() {
     }
 }
 
-bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error) {
+bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error,
+                          bool waitForPid) {
     platform::FileDescriptor theirChannel, outputWrite, statusWrite;
     if (!platform::makeSocketPair(channel_, theirChannel, false) ||
         !platform::makePipe(output_fd_, outputWrite) ||
@@ -62,7 +63,16 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
     platform::setNonBlocking(output_fd_.get());
     platform::setNonBlocking(status_fd_.get());
 
-    platform::Deadline deadline(10.0);
+    if (!waitForPid || learnPid(10.0)) {
+        return true;
+    }
+    error = exited_ ? "the fork server could not start a worker" : "the fork server did not answer";
+    exited_ = true;
+    return false;
+}
+
+bool WorkerProcess::learnPid(double seconds) {
+    platform::Deadline deadline(seconds);
     // The worker may write (even end) before the server tells us its pid: keep what comes.
     std::vector<WireRecord> early;
     while (pid_ <= 0 && !exited_ && !deadline.expired()) {
@@ -70,13 +80,7 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
         collect(deadline.remainingMs(), early, -1, nullptr);
         backlog_.insert(backlog_.end(), early.begin(), early.end());
     }
-    if (pid_ <= 0) {
-        error =
-            exited_ ? "the fork server could not start a worker" : "the fork server did not answer";
-        exited_ = true;
-        return false;
-    }
-    return true;
+    return pid_ > 0;
 }
 
 void WorkerProcess::readChannel(std::vector<WireRecord>& records) {
@@ -212,6 +216,9 @@ bool WorkerProcess::send(const WireRecord& record) {
 }
 
 void WorkerProcess::signal(int signal) {
+    if (pid_ <= 0 && !exited_) {
+        learnPid(10.0);
+    }
     if (pid_ > 0 && !exited_) {
         platform::signalProcessGroup(pid_, signal);
     }

@@ -36,8 +36,12 @@ public:
     WorkerProcess(const WorkerProcess&) = delete;
     WorkerProcess& operator=(const WorkerProcess&) = delete;
 
-    // Asks `server` for a worker and waits (bounded) until it reports the worker's pid.
-    bool start(ForkServer& server, const WorkRequest& request, std::string& error);
+    // Asks `server` for a worker. With `waitForPid`, waits (bounded) until the server reports
+    // the worker's pid; without, the pid arrives with the worker's first events (a test need
+    // not wait a round trip for it) and is waited for only when the worker must be signalled.
+    bool start(ForkServer& server, const WorkRequest& request, std::string& error,
+               bool waitForPid = true);
+    // -1 until the server reported it.
     pid_t pid() const { return pid_; }
 
     // Waits up to `timeoutMs` (-1: forever) for the worker to send or print something, or to
@@ -67,6 +71,8 @@ public:
     int channel() const { return channel_.get(); }
 
 private:
+    // Reads until the server reported the pid (or the worker ended); false after `seconds`.
+    bool learnPid(double seconds);
     // pump() without the backlog.
     bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
     void readChannel(std::vector<WireRecord>& records);
@@ -75,7 +81,7 @@ private:
 
     platform::FileDescriptor channel_, output_fd_, status_fd_;
     WireDecoder events_, statuses_;
-    std::vector<WireRecord> backlog_;  // received while start() waited for the pid
+    std::vector<WireRecord> backlog_;  // received while waiting for the pid
     OutputTail output_;
     pid_t pid_ = -1;
     bool exited_ = false;

@@ -97,6 +97,12 @@ int SignalPipe::wait(int timeoutMs) {
     return n > 0 ? take() : 0;
 }
 
+void SignalPipe::wake() {
+    unsigned char none = 0;  // take() reads it as "no signal"
+    ssize_t ignored = ::write(writeFd, &none, 1);
+    (void)ignored;
+}
+
 void SignalPipe::resetInChild() {
     struct sigaction action {};
     action.sa_handler = SIG_DFL;

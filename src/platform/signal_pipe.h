@@ -21,8 +21,10 @@ public:
     int fd() const;
     // The next signal received, or 0 when none is pending.
     int take();
-    // Waits up to `timeoutMs` (-1: forever) for a signal; 0 on timeout.
+    // Waits up to `timeoutMs` (-1: forever) for a signal; 0 on timeout or wake().
     int wait(int timeoutMs = -1);
+    // Ends a wait() of another thread now (it returns 0), e.g. to stop a watcher thread.
+    void wake();
 
     // In a freshly forked child: back to default dispositions, pipe closed. Async-signal-safe.
     static void resetInChild();

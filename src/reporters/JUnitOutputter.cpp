@@ -187,46 +187,104 @@ struct Counts {
     std::size_t skipped = 0;
 };
 
+// The numbers of a suite's <testsuite> element; a failed fixture counts as one error more.
+Counts countsOf(const SuiteRecord& suite) {
+    Counts counts;
+    counts.tests = suite.tests.size();
+    for (const TestRecord& test : suite.tests) {
+        if (test.status == TestStatus::Skipped) {
+            ++counts.skipped;
+        } else if (isErrorState(test.status)) {
+            ++counts.errors;
+        } else if (test.status == TestStatus::Failed) {
+            ++counts.failures;
+        }
+    }
+    if (suite.fixtureFailed) {
+        ++counts.tests;
+        ++counts.errors;
+    }
+    return counts;
+}
+
+void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
+                    bool verbose) {
+    out += "    <testcase";
+    out += attr("name", test.name);
+    out += attr("classname", suiteName);
+    out += attr("time", number(test.duration));
+    out += attr("status", toString(test.status));
+    std::string inner;
+    const ResultEvent* reason = test.reason();
+    const std::string message = reason ? reason->message.toString() : "";
+    if (test.status == TestStatus::Skipped) {
+        inner += "      <skipped>" + escape(message, false) + "</skipped>\n";
+    } else if (isErrorState(test.status)) {
+        inner += "      <error" + attr("message", message) + attr("type", errorType(test.status)) +
+                 ">" + escape(problems(test.events), false) + "</error>\n";
+    } else if (test.status == TestStatus::Failed) {
+        inner += "      <failure" + attr("message", message) + attr("type", "failure") + ">" +
+                 escape(problems(test.events), false) + "</failure>\n";
+    }
+    const std::string output = systemOut(test.events, test.output, verbose);
+    if (!output.empty()) {
+        inner += "      <system-out>" + escape(output, false) + "</system-out>\n";
+    }
+    if (inner.empty()) {
+        out += "/>\n";
+    } else {
+        out += ">\n";
+        out += inner;
+        out += "    </testcase>\n";
+    }
+}
+
 }  // namespace
 
 JUnitOutputter::JUnitOutputter(TestResultCollector& collector, bool verbose)
     : collector_(collector), verbose_(verbose) {}
 
+// Written into one string, front to back (the counts are known before the elements they head):
+// a run of 10 000 tests must not hold several copies of its report at once.
 std::string JUnitOutputter::xml() const {
     const std::string host = hostname();
-    std::string body;
     Counts total;
     double totalTime = 0;
+    std::size_t testCount = 0;
+    for (const SuiteRecord& suite : collector_.suites()) {
+        const Counts counts = countsOf(suite);
+        total.tests += counts.tests;
+        total.failures += counts.failures;
+        total.errors += counts.errors;
+        totalTime += suite.duration;
+        testCount += suite.tests.size();
+    }
+    std::string out;
+    out.reserve(512 + testCount * 160);  // a passing test's element is about that long
+    out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites";
+    out += attr("name", "RobotTestingFramework");
+    out += attr("tests", std::to_string(total.tests));
+    out += attr("failures", std::to_string(total.failures));
+    out += attr("errors", std::to_string(total.errors));
+    out += attr("time", number(collector_.duration() > 0 ? collector_.duration() : totalTime));
+    out += ">\n";
     std::size_t id = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
         const std::string suiteName = suite.name.empty() ? "default" : suite.name;
-        Counts counts;
-        std::string cases;
+        const Counts counts = countsOf(suite);
+        out += "  <testsuite";
+        out += attr("name", suiteName);
+        out += attr("tests", std::to_string(counts.tests));
+        out += attr("failures", std::to_string(counts.failures));
+        out += attr("errors", std::to_string(counts.errors));
+        out += attr("skipped", std::to_string(counts.skipped));
+        out += attr("time", number(suite.duration));
+        out += attr("timestamp", timestamp(collector_.startedAt(), suite.start));
+        out += attr("hostname", host);
+        out += attr("id", std::to_string(id++));
+        out += ">\n";
         for (const TestRecord& test : suite.tests) {
-            ++counts.tests;
-            cases += "    <testcase" + attr("name", test.name) + attr("classname", suiteName) +
-                     attr("time", number(test.duration)) + attr("status", toString(test.status));
-            std::string inner;
-            const ResultEvent* reason = test.reason();
-            const std::string message = reason ? reason->message.toString() : "";
-            if (test.status == TestStatus::Skipped) {
-                ++counts.skipped;
-                inner += "      <skipped>" + escape(message, false) + "</skipped>\n";
-            } else if (isErrorState(test.status)) {
-                ++counts.errors;
-                inner += "      <error" + attr("message", message) +
-                         attr("type", errorType(test.status)) + ">" +
-                         escape(problems(test.events), false) + "</error>\n";
-            } else if (test.status == TestStatus::Failed) {
-                ++counts.failures;
-                inner += "      <failure" + attr("message", message) + attr("type", "failure") +
-                         ">" + escape(problems(test.events), false) + "</failure>\n";
-            }
-            const std::string out = systemOut(test.events, test.output, verbose_);
-            if (!out.empty()) {
-                inner += "      <system-out>" + escape(out, false) + "</system-out>\n";
-            }
-            cases += inner.empty() ? "/>\n" : ">\n" + inner + "    </testcase>\n";
+            appendTestCase(out, test, suiteName, verbose_);
         }
         // A fixture that failed or collapsed is an error of its own, so CI shows the suite red
         // even when every test was only skipped.
@@ -239,39 +297,22 @@ std::string JUnitOutputter::xml() const {
                     break;
                 }
             }
-            ++counts.tests;
-            ++counts.errors;
-            cases += "    <testcase" + attr("name", "fixtures") + attr("classname", suiteName) +
-                     attr("time", "0.000") + attr("status", "error") + ">\n      <error" +
-                     attr("message", first) + attr("type", "fixture") + ">" +
-                     escape(suiteProblems, false) + "</error>\n    </testcase>\n";
+            out += "    <testcase" + attr("name", "fixtures") + attr("classname", suiteName) +
+                   attr("time", "0.000") + attr("status", "error") + ">\n      <error" +
+                   attr("message", first) + attr("type", "fixture") + ">" +
+                   escape(suiteProblems, false) + "</error>\n    </testcase>\n";
         }
-        body +=
-            "  <testsuite" + attr("name", suiteName) + attr("tests", std::to_string(counts.tests)) +
-            attr("failures", std::to_string(counts.failures)) +
-            attr("errors", std::to_string(counts.errors)) +
-            attr("skipped", std::to_string(counts.skipped)) + attr("time", number(suite.duration)) +
-            attr("timestamp", timestamp(collector_.startedAt(), suite.start)) +
-            attr("hostname", host) + attr("id", std::to_string(id++)) + ">\n" + cases;
-        const std::string out = systemOut(suite.events, suite.output, verbose_);
-        if (!out.empty()) {
-            body += "    <system-out>" + escape(out, false) + "</system-out>\n";
+        const std::string output = systemOut(suite.events, suite.output, verbose_);
+        if (!output.empty()) {
+            out += "    <system-out>" + escape(output, false) + "</system-out>\n";
         }
         if (!suiteProblems.empty()) {
-            body += "    <system-err>" + escape(suiteProblems, false) + "</system-err>\n";
+            out += "    <system-err>" + escape(suiteProblems, false) + "</system-err>\n";
         }
-        body += "  </testsuite>\n";
-        total.tests += counts.tests;
-        total.failures += counts.failures;
-        total.errors += counts.errors;
-        totalTime += suite.duration;
+        out += "  </testsuite>\n";
     }
-    return "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites" +
-           attr("name", "RobotTestingFramework") + attr("tests", std::to_string(total.tests)) +
-           attr("failures", std::to_string(total.failures)) +
-           attr("errors", std::to_string(total.errors)) +
-           attr("time", number(collector_.duration() > 0 ? collector_.duration() : totalTime)) +
-           ">\n" + body + "</testsuites>\n";
+    out += "</testsuites>\n";
+    return out;
 }
 
 bool JUnitOutputter::write(std::string filename, TestMessage* error) {

@@ -4,7 +4,11 @@
 #include <robottestingframework/dll/DllPluginLoader.h>
 
 #include <algorithm>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
+#include <sstream>
+#include <thread>
 
 #include "plugin_test.h"
 
@@ -52,59 +56,129 @@ private:
     std::unique_ptr<languages::LoadedFixture> loaded_;
 };
 
+// Calls `expire` on a thread of its own once `seconds` have passed, unless destroyed before.
+class Watchdog {
+public:
+    template <typename Expire>
+    Watchdog(double seconds, Expire expire) {
+        if (seconds <= 0) {
+            return;
+        }
+        thread_ = std::thread([this, seconds, expire] {
+            std::unique_lock<std::mutex> lock(mutex_);
+            if (!changed_.wait_for(lock, std::chrono::duration<double>(seconds),
+                                   [this] { return done_; })) {
+                lock.unlock();
+                expire();
+            }
+        });
+    }
+    ~Watchdog() {
+        if (thread_.joinable()) {
+            {
+                std::lock_guard<std::mutex> lock(mutex_);
+                done_ = true;
+            }
+            changed_.notify_all();
+            thread_.join();
+        }
+    }
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+
+private:
+    std::thread thread_;
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    bool done_ = false;
+};
+
 }  // namespace
 
 // Passes the test case's events on to the run's result as events of the stand-in, and keeps
-// the worst state they carried.
+// the worst state they carried. The stand-in takes the test case's name at each event: a script
+// may name itself in setup, after startTest.
 class InProcessExecutor::Relay : public TestListener {
 public:
-    void begin(TestResult& target, const Test& self) {
+    void begin(TestResult& target, Test& self, double timeout) {
         target_ = &target;
         self_ = &self;
         status_ = TestStatus::Passed;
+        timeout_ = timeout;
+        timedOut_ = false;
     }
     TestStatus status() const { return status_; }
+    // The watchdog stopped the test: its interruption is reported as the timeout it is.
+    void timedOut() { timedOut_ = true; }
 
-    void addReport(const Test*, TestMessage msg) override { target_->addReport(self_, msg); }
-    void addError(const Test*, TestMessage msg) override {
+    void addReport(const Test* test, TestMessage msg) override {
+        target_->addReport(sync(test), msg);
+    }
+    void addError(const Test* test, TestMessage msg) override {
         worsen(TestStatus::Error);
-        target_->addError(self_, msg);
+        target_->addError(sync(test), msg);
     }
-    void addFailure(const Test*, TestMessage msg) override {
+    void addFailure(const Test* test, TestMessage msg) override {
         worsen(TestStatus::Failed);
-        target_->addFailure(self_, msg);
+        target_->addFailure(sync(test), msg);
     }
-    void startTest(const Test*) override { target_->startTest(self_); }
-    void endTest(const Test*) override { target_->endTest(self_); }
-    void addCheck(const Test*, TestMessage msg, bool passed) override {
-        target_->addCheck(self_, msg, passed);
+    void startTest(const Test* test) override { target_->startTest(sync(test)); }
+    void endTest(const Test* test) override { target_->endTest(sync(test)); }
+    void addCheck(const Test* test, TestMessage msg, bool passed) override {
+        target_->addCheck(sync(test), msg, passed);
     }
-    void addSkipped(const Test*, TestMessage reason) override {
+    void addSkipped(const Test* test, TestMessage reason) override {
         worsen(TestStatus::Skipped);
-        target_->addSkipped(self_, reason);
+        target_->addSkipped(sync(test), reason);
     }
-    void addCrash(const Test*, TestMessage msg) override {
+    void addCrash(const Test* test, TestMessage msg) override {
         worsen(TestStatus::Crashed);
-        target_->addCrash(self_, msg);
+        target_->addCrash(sync(test), msg);
     }
-    void addTimeout(const Test*, TestMessage msg) override {
+    void addTimeout(const Test* test, TestMessage msg) override {
         worsen(TestStatus::TimedOut);
-        target_->addTimeout(self_, msg);
+        target_->addTimeout(sync(test), msg);
     }
-    void addInterrupted(const Test*, TestMessage msg) override {
+    void addInterrupted(const Test* test, TestMessage msg) override {
+        if (timedOut_) {
+            worsen(TestStatus::TimedOut);
+            target_->addTimeout(
+                sync(test), TestMessage("timed out after " + seconds(timeout_), msg.getMessage()));
+            return;
+        }
         worsen(TestStatus::Interrupted);
-        target_->addInterrupted(self_, msg);
+        target_->addInterrupted(sync(test), msg);
     }
-    void addOutput(const Test*, const std::string& text) override {
-        target_->addOutput(self_, text);
+    void addOutput(const Test* test, const std::string& text) override {
+        target_->addOutput(sync(test), text);
     }
 
 private:
-    void worsen(TestStatus status) { status_ = std::max(status_, status); }
+    void worsen(TestStatus status) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        status_ = std::max(status_, status);
+    }
+    const Test* sync(const Test* test) {
+        if (test != nullptr && test != self_) {
+            std::string name = test->getName();
+            if (!name.empty() && name != self_->getName()) {
+                self_->setName(name);
+            }
+        }
+        return self_;
+    }
+    static std::string seconds(double value) {
+        std::ostringstream text;
+        text << value << " s";
+        return text.str();
+    }
 
     TestResult* target_ = nullptr;
-    const Test* self_ = nullptr;
+    Test* self_ = nullptr;
+    std::mutex mutex_;
     TestStatus status_ = TestStatus::Passed;
+    double timeout_ = 0;
+    std::atomic<bool> timedOut_{false};
 };
 
 InProcessExecutor::InProcessExecutor() : relay_(std::make_unique<Relay>()) {
@@ -176,12 +250,23 @@ TestStatus InProcessExecutor::run(const TestSpec& spec, Test& self, TestResult& 
     self.setDescription(test->getDescription());
 
     // The test case sends its events about itself; the relay makes them the stand-in's.
-    relay_->begin(result, self);
+    relay_->begin(result, self, spec.timeout);
     {
         std::lock_guard<std::mutex> lock(mutex_);
         running_ = test;
     }
-    test->run(relayed_);
+    {
+        // A timeout can only ask the test to stop (TestCase::interrupt): a C++ test that
+        // never looks can't be stopped in this process; --isolation process can.
+        Watchdog watchdog(spec.timeout, [this] {
+            std::lock_guard<std::mutex> lock(mutex_);
+            if (running_ != nullptr) {
+                relay_->timedOut();
+                running_->interrupt();
+            }
+        });
+        test->run(relayed_);
+    }
     {
         std::lock_guard<std::mutex> lock(mutex_);
         running_ = nullptr;

@@ -1,9 +1,13 @@
 // robottestingframework-testrunner: options → suites → run → outputs, and the exit status.
+#include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <robottestingframework/ConsoleListener.h>
@@ -13,9 +17,13 @@
 #include <robottestingframework/TextOutputter.h>
 
 #include "in_process_executor.h"
+#include "isolated_executor.h"
 #include "options.h"
 #include "output_capture.h"
+#include "process_tree.h"
+#include "run_gate.h"
 #include "run_plan.h"
+#include "signal_pipe.h"
 #include "test_sources.h"
 
 using namespace robottestingframework;
@@ -29,6 +37,55 @@ const char* const program = "robottestingframework-testrunner";
 const int allPassed = 0;
 const int somethingFailed = 1;
 const int configurationError = 2;
+// Interrupted: 128 + the signal, as shells report it (130 for Ctrl-C, 143 for SIGTERM).
+int interruptedBy(int signal) {
+    return 128 + signal;
+}
+
+// Turns Ctrl-C and SIGTERM into an orderly stop: the first one interrupts the run (the running
+// test is stopped, tear-downs run, outputs are written); a second one ends the runner at once.
+class InterruptWatcher {
+public:
+    explicit InterruptWatcher(RunPlan& plan)
+        : signals_({SIGINT, SIGTERM}), thread_([this, &plan] { watch(plan); }) {}
+    ~InterruptWatcher() {
+        done_ = true;
+        signals_.wake();  // or the run would end up to one poll period (200 ms) late
+        thread_.join();
+    }
+    // The first signal received, 0 when none.
+    int received() const { return received_; }
+
+private:
+    void watch(RunPlan& plan) {
+        while (!done_) {
+            int signal = signals_.wait(200);
+            if (signal != 0 && received_ == 0) {
+                received_ = signal;
+                std::fprintf(stderr,
+                             "\n%s: interrupted; stopping the running test and tearing down "
+                             "(again to quit at once)\n",
+                             program);
+            } else if (signal != 0) {
+                // Whatever the run started goes with us: the fork server kills its workers when
+                // we are gone; what the runner itself started (in-process tests) is killed here.
+                platform::killDescendants(::getpid());
+                ::_exit(interruptedBy(received_));
+            }
+            if (received_ != 0) {
+                // Again and again: an interruption that arrives while a test is being started
+                // could be missed by it; the runner starts no new test once interrupted.
+                plan.runner().interrupt();
+                plan.interruptFixtures();
+            }
+        }
+    }
+
+    platform::SignalPipe signals_;
+    std::atomic<bool> done_{false};
+    std::atomic<int> received_{0};
+    std::thread thread_;
+};
 
 bool wantColours() {
     const char* term = std::getenv("TERM");
@@ -99,10 +156,31 @@ int main(int argc, char** argv) {
     for (const auto& warning : warnings) {
         std::fprintf(stderr, "%s\n", warning.c_str());
     }
+    const std::string unknown = findUnknownDependency(suites);
+    if (!unknown.empty()) {
+        std::fprintf(stderr, "%s: %s\n", program, unknown.c_str());
+        return configurationError;
+    }
 
-    InProcessExecutor executor;
-    RunPlan plan(executor);
-    const Overrides overrides{options.param, options.environment, options.repetition};
+    // The fork server is started here, on the main thread, which lives for the whole run: the
+    // server's parent-death signal is tied to the thread that started it.
+    std::unique_ptr<TestExecutor> executor;
+    if (options.isolation == "none") {
+        executor = std::make_unique<InProcessExecutor>();
+    } else {
+        auto isolated = std::make_unique<isolation::IsolatedExecutor>();
+        std::string error;
+        if (!isolated->start(error)) {
+            std::fprintf(stderr, "%s: cannot start process isolation: %s\n", program,
+                         error.c_str());
+            return configurationError;
+        }
+        executor = std::move(isolated);
+    }
+    RunPlan plan(*executor);
+    plan.gate().setFailFast(options.failFast);
+    const Overrides overrides{options.param, options.environment, options.repetition,
+                              options.timeout};
     for (auto& suite : suites) {
         applyOverrides(suite, overrides);
         plan.addSuite(std::move(suite));
@@ -130,13 +208,25 @@ int main(int argc, char** argv) {
         console.hideUncriticalMessages();
     }
     TestResultCollector collector;
+    // The outputs read the per-test records only, and show checks only when verbose.
+    collector.setKeepEventLog(false);
+    collector.setKeepChecks(options.verbose);
     result.addListener(&console);
     result.addListener(&collector);
+    result.addListener(&plan.gate());
 
-    plan.runner().run(result);
+    int interrupted = 0;
+    {
+        InterruptWatcher watcher(plan);
+        plan.runner().run(result);
+        interrupted = watcher.received();
+    }
     capture.stop();
 
     int status = anythingFailed(collector) ? somethingFailed : allPassed;
+    if (interrupted != 0) {
+        status = interruptedBy(interrupted);
+    }
     if (!writeOutputs(options, collector)) {
         status = configurationError;
     }

@@ -60,9 +60,10 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     CLI::App app{"Runs Robot Testing Framework test cases and suites.", program};
     app.footer(
         "Exit status: 0 when every test passed (skipped ones allowed), 1 when a test failed, "
-        "errored or could not be loaded, or a fixture failed, 2 on a usage or configuration "
-        "error (bad option, unreadable or malformed suite file, an output that could not be "
-        "written).");
+        "errored, crashed, timed out or could not be loaded, or a fixture failed, 2 on a usage "
+        "or configuration error (bad option, unreadable or malformed suite file, unknown "
+        "dependency, an output that could not be written), 130 when interrupted by Ctrl-C "
+        "(SIGINT), 143 when stopped by SIGTERM.");
     app.option_defaults()->always_capture_default(false);
 
     std::vector<std::string> outputs;
@@ -114,9 +115,17 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_flag("-v,--verbose", options.verbose,
                  "Show the tests' reports and what they print on the console");
     app.add_option("--isolation", options.isolation,
-                   "Where tests run: none (in the runner) or process (default none)")
+                   "Where tests run: process (each in a worker process; the default) or none "
+                   "(in the runner's process)")
         ->type_name("MODE")
         ->check(CLI::IsMember({"none", "process"}));
+    app.add_option("--timeout", options.timeout,
+                   "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
+                   "and a test's timeout=\"...\" win (default: none)")
+        ->type_name("SECONDS")
+        ->check(CLI::NonNegativeNumber);
+    app.add_flag("--fail-fast", options.failFast,
+                 "Stop the run at the first failure; the remaining tests are skipped");
     takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
                 ->type_name("NAME=VALUE"));
     app.add_flag("--version", version, "Print the version and exit");
@@ -189,10 +198,6 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         options.variables.emplace_back(variable.substr(0, equal), variable.substr(equal + 1));
     }
 
-    if (options.isolation == "process") {
-        return usageError(
-            "process isolation is not available in this build (use --isolation none)");
-    }
     if (options.nothingToRun()) {
         return usageError("nothing to run: give --test, --tests, --suite or --suites");
     }

@@ -27,11 +27,13 @@ struct Options {
     std::vector<OutputRequest> outputs;
     bool noOutput = false;
     bool noSummary = false;
-    bool webReporter = false;        // --web-reporter/-w
-    int webPort = 8080;              // --web-port N
-    bool detail = false;             // --detail/-d: every check on the console
-    bool verbose = false;            // --verbose/-v: reports and output on the console
-    std::string isolation = "none";  // --isolation none|process
+    bool webReporter = false;           // --web-reporter/-w
+    int webPort = 8080;                 // --web-port N
+    bool detail = false;                // --detail/-d: every check on the console
+    bool verbose = false;               // --verbose/-v: reports and output on the console
+    std::string isolation = "process";  // --isolation process|none
+    double timeout = 0;                 // --timeout SECONDS for every test; 0: none
+    bool failFast = false;              // --fail-fast: the first failure stops the run
     std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
 
     bool nothingToRun() const {

@@ -13,6 +13,7 @@ std::string PluginTest::displayName(const TestSpec& spec) {
 void PluginTest::run(TestResult& result) {
     clearCriticalError();
     status_ = executor_.run(spec_, *this, result);
+    ran_ = true;
 }
 
 void PluginTest::interrupt() {

@@ -22,7 +22,9 @@ public:
     bool succeeded() const override { return !isFailure(status_); }
 
     const TestSpec& spec() const { return spec_; }
+    // The final state; meaningful once ran() (a test skipped before it ran never ran).
     TestStatus status() const { return status_; }
+    bool ran() const { return ran_; }
 
     // The name shown before the test case reports its own: name="..." or the plug-in's file.
     static std::string displayName(const TestSpec& spec);
@@ -31,6 +33,7 @@ private:
     const TestSpec& spec_;
     TestExecutor& executor_;
     TestStatus status_ = TestStatus::Passed;
+    bool ran_ = false;
 };
 
 }  // namespace runner

@@ -39,12 +39,25 @@ void applyOverrides(SuiteSpec& suite, const Overrides& overrides) {
         if (test.repetition == 0) {
             test.repetition = overrides.repetition == 0 ? 1 : overrides.repetition;
         }
+        if (test.timeout <= 0) {
+            test.timeout = suite.timeout > 0 ? suite.timeout : overrides.timeout;
+        }
     }
 }
 
-RunPlan::RunPlan(TestExecutor& executor) : executor_(executor) {}
+RunPlan::RunPlan(TestExecutor& executor) : executor_(executor) {
+    runner_.setGate(&gate_);
+}
 
 RunPlan::~RunPlan() = default;
+
+void RunPlan::interruptFixtures() {
+    for (const auto& fixture : fixtures_) {
+        if (auto* interruptible = dynamic_cast<InterruptibleFixture*>(fixture.get())) {
+            interruptible->interruptCall();
+        }
+    }
+}
 
 void RunPlan::addSuite(SuiteSpec spec) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));

@@ -12,6 +12,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "plugin_test.h"
+#include "run_gate.h"
 #include "suite_model.h"
 #include "test_executor.h"
 
@@ -23,9 +24,11 @@ struct Overrides {
     std::string param;            // for tests without a param of their own
     std::string environment;      // appended to the suite's and the test's
     unsigned int repetition = 0;  // for tests without a repetition of their own; 0: once
+    double timeout = 0;           // --timeout: for tests whose suite and own give none
 };
 
-// The effective spec of each test of `suite` once the command line is applied.
+// The effective spec of each test of `suite` once the command line is applied. The timeout
+// is the most specific given: the test's, the suite's <timeout>, then --timeout (0: none).
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides);
 
 class RunPlan {
@@ -40,6 +43,12 @@ public:
     void addSuite(SuiteSpec spec);
 
     TestRunner& runner() { return runner_; }
+    // Decides which tests are skipped before they run (depends, --fail-fast); it must also
+    // listen to the run's result.
+    RunGate& gate() { return gate_; }
+    // Cuts short a fixture set-up or check in progress (the run was interrupted); tear-downs
+    // still run. Thread-safe.
+    void interruptFixtures();
     std::size_t testCount() const { return tests_.size(); }
 
 private:
@@ -49,6 +58,7 @@ private:
     std::deque<TestSuite> suites_;
     std::deque<PluginTest> tests_;
     std::vector<std::unique_ptr<FixtureManager>> fixtures_;
+    RunGate gate_{tests_};
 };
 
 }  // namespace runner

@@ -15,6 +15,14 @@
 namespace robottestingframework {
 namespace runner {
 
+// A fixture handle whose set-up or check in progress can be cut short when the run is
+// interrupted (Ctrl-C). A tear-down is never cut short: it must run. Thread-safe.
+class InterruptibleFixture {
+public:
+    virtual ~InterruptibleFixture() = default;
+    virtual void interruptCall() = 0;
+};
+
 class TestExecutor {
 public:
     virtual ~TestExecutor() = default;

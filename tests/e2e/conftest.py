@@ -2,6 +2,8 @@
 import os
 import signal
 import subprocess
+import time
+import uuid
 from pathlib import Path
 
 import pytest
@@ -54,6 +56,70 @@ def validate_junit(path):
     result = subprocess.run(["xmllint", "--noout", "--schema", str(SCHEMA), str(path)],
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
+
+
+# Every process a run starts inherits the runner's environment: a unique value of this variable
+# finds them all afterwards (see leftover_processes).
+MARKER_VARIABLE = "RTF_E2E_MARKER"
+
+
+def _marked_processes(marker):
+    needle = f"{MARKER_VARIABLE}={marker}".encode()
+    found = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                environ = f.read()
+            with open(f"/proc/{entry}/stat") as f:
+                state = f.read().rsplit(")", 1)[1].split()[0]
+        except (OSError, IndexError):
+            continue  # gone, or not ours to read
+        if state != "Z" and needle in environ.split(b"\0"):
+            found.append(int(entry))
+    return found
+
+
+def leftover_processes(marker, grace=3.0):
+    """Pids of the living processes started with MARKER_VARIABLE=marker in their environment,
+    once they had up to `grace` seconds to end. Empty when the run left nothing behind."""
+    deadline = time.monotonic() + grace
+    while True:
+        found = _marked_processes(marker)
+        if not found or time.monotonic() >= deadline:
+            return found
+        time.sleep(0.05)
+
+
+@pytest.fixture
+def marker():
+    """A unique marker for one test's runs (pass env=marked(marker)); whatever is still
+    marked when the test ends is killed, so a failing test leaves nothing behind either."""
+    value = uuid.uuid4().hex
+    yield value
+    for pid in _marked_processes(value):
+        try:
+            os.kill(pid, signal.SIGKILL)
+        except OSError:
+            pass
+
+
+def marked(marker, **more):
+    """The environment that marks a run's processes with `marker`."""
+    return {MARKER_VARIABLE: marker, **more}
+
+
+def start_runner(*args, cwd=None, env=None):
+    """Starts the runner without waiting (for tests that signal it): a Popen in a session of
+    its own, text stdout/stderr pipes."""
+    assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
+    full_env = dict(os.environ)
+    if env:
+        full_env.update(env)
+    return subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            stdin=subprocess.DEVNULL, start_new_session=True, text=True)
 
 
 @pytest.fixture

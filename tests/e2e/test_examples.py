@@ -1,26 +1,116 @@
-"""The examples (examples/) run as the README says: the example suite through the runner, the
-C++ test plug-in alone with params, and the program using the library from its own main()."""
+"""The examples (examples/) run as the README says: each example suite through the real runner
+(C++, scripts, the robot's world), all three at once as `./run.sh example` runs them, the C++
+test plug-in alone with params, and the program using the library from its own main().
+Every run is marked with an environment variable its processes inherit, so a process left
+behind (the MQTT broker, the simulated robot) is found by its mark."""
+import os
 import re
 import subprocess
+import time
+import uuid
+
+import pytest
 
 from conftest import BUILD_DIR, run_runner, validate_junit
 
 EXAMPLES = BUILD_DIR / "examples"
-SUITE = EXAMPLES / "example.xml"
 MY_TEST = EXAMPLES / "libMyTest.so"
 
+# Suite file -> the tests it must pass, by the name the runner reports.
+SUITES = {
+    "example.xml": ["MyTest", "MyTest"],
+    "scripts.xml": ["python example", "lua example", "ruby example", "tap example"],
+    "robot/robot.xml": ["JointStatesTest", "JointLimits"],
+}
 
-def test_example_suite_passes_and_writes_junit(tmp_path):
-    junit = tmp_path / "example.xml"
-    run = run_runner("--suite", SUITE, "--verbose", "--output", junit, "--output-type", "junit")
+
+def marked_processes(mark):
+    """(pid, command line) of the live processes whose environment holds RTF_E2E_MARK=mark."""
+    found = []
+    needle = f"RTF_E2E_MARK={mark}".encode()
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                if f.read().rsplit(")", 1)[1].split()[0] == "Z":
+                    continue  # a zombie holds nothing; its parent reaps it
+            with open(f"/proc/{entry}/environ", "rb") as f:
+                if needle not in f.read().split(b"\0"):
+                    continue
+            with open(f"/proc/{entry}/cmdline", "rb") as f:
+                found.append((int(entry), f.read().replace(b"\0", b" ").decode(errors="replace")))
+        except (OSError, IndexError):
+            continue  # gone meanwhile, or not ours to read
+    return found
+
+
+@pytest.fixture
+def mark():
+    """A fresh mark; after the test, no process carrying it may be alive."""
+    value = uuid.uuid4().hex
+    yield value
+    deadline = time.monotonic() + 5  # the runner has exited; give the kernel a moment
+    left = marked_processes(value)
+    while left and time.monotonic() < deadline:
+        time.sleep(0.05)
+        left = marked_processes(value)
+    for pid, _ in left:
+        try:
+            os.kill(pid, 9)
+        except OSError:
+            pass
+    assert not left, f"processes left behind: {left}"
+
+
+def check_passed(run, junit, names):
+    """Each name passed (console and JUnit), as many times as listed; nothing else ran."""
     assert run.returncode == 0, run
-    assert re.search(r"\b2 passed, 0 failed\b", run.stdout), run
-    # The fixture plug-in was found by its bare name and set up the world.
-    assert "starting example-bot" in run.output, run
+    for name in set(names):
+        lines = re.findall(rf"^\s*passed\s+{re.escape(name)}\s+\(", run.stdout, re.MULTILINE)
+        assert len(lines) == names.count(name), f"{name}: {lines}\n{run}"
+    assert re.search(rf"^{len(names)} passed, 0 failed$", run.stdout, re.MULTILINE), run
     validate_junit(junit)
     xml = junit.read_text()
-    assert xml.count("<testcase") == 2, xml
-    assert "MyTest" in xml
+    assert xml.count("<testcase") == len(names), xml
+    for name in set(names):
+        assert xml.count(f'name="{name}"') >= names.count(name), xml
+    assert "<failure" not in xml and "<error" not in xml and "<skipped" not in xml, xml
+
+
+@pytest.mark.parametrize("isolation", ["none", "process"])
+@pytest.mark.parametrize("suite", list(SUITES))
+def test_example_suite_passes(tmp_path, mark, suite, isolation):
+    junit = tmp_path / "junit.xml"
+    run = run_runner("--suite", EXAMPLES / suite, "--isolation", isolation, "--verbose",
+                     "--output", f"junit:{junit}", cwd=tmp_path, timeout=60,
+                     env={"RTF_E2E_MARK": mark})
+    check_passed(run, junit, SUITES[suite])
+
+
+def test_the_quick_start_example_run(tmp_path, mark):
+    """The three suites in one run with a text and a JUnit report, as `./run.sh example`."""
+    started = time.monotonic()
+    run = run_runner(*[arg for suite in SUITES for arg in ("--suite", EXAMPLES / suite)],
+                     "--verbose", "--output", "text:example.txt", "--output",
+                     "junit:example.xml", cwd=tmp_path, timeout=60, env={"RTF_E2E_MARK": mark})
+    elapsed = time.monotonic() - started
+    check_passed(run, tmp_path / "example.xml", [n for names in SUITES.values() for n in names])
+    assert elapsed < 30, f"the example run took {elapsed:.1f} s"
+    text = (tmp_path / "example.txt").read_text()
+    for name in ("example", "scripts", "robot", "JointLimits", "tap example"):
+        assert name in text, text
+    # What the fixtures did: the C++ and Python fixtures report, the process fixture waited
+    # for the broker and the calibration, and kept each process's output in its log.
+    assert "starting example-bot" in run.output, run
+    assert "starting the world: --world empty" in run.output, run
+    assert re.search(r"'simulated robot' is ready after", run.output), run
+    logs = tmp_path / "rtf-logs" / "robot"
+    assert "mosquitto" in (logs / "mqtt_broker.log").read_text()
+    assert "calibrated" in (logs / "simulated_robot.log").read_text()
+    # The scripts received their param and the suite's environment.
+    assert "param: --joints 6" in run.output, run
+    assert "arguments '--speed 3', environment '--robot example-bot'" in run.output, run
 
 
 def test_example_plugin_reads_its_param():

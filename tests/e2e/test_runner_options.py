@@ -75,7 +75,8 @@ def test_help_lists_every_option(tmp_path):
     for option in ("-t,--test", "--tests", "-s,--suite", "--suites", "-r,--recursive",
                    "-p,--param", "-e,--environment", "--repetition", "-o,--output",
                    "--output-type", "--no-output", "--no-summary", "-w,--web-reporter",
-                   "--web-port", "-d,--detail", "-v,--verbose", "--version", "--isolation"):
+                   "--web-port", "-d,--detail", "-v,--verbose", "--version", "--isolation",
+                   "--timeout", "--fail-fast"):
         assert option in run.stdout, (option, run)
 
 
@@ -85,7 +86,8 @@ def test_help_lists_every_option(tmp_path):
     (["-t"], "--test"),
     (["-t", "x.so", "--repetition", "zero"], "repetition"),
     (["-t", "x.so", "--output-type", "pdf"], "unknown output type 'pdf'"),
-    (["-t", "x.so", "--isolation", "process"], "process isolation is not available"),
+    (["-t", "x.so", "--isolation", "thread"], "isolation"),
+    (["-t", "x.so", "--timeout", "-2"], "timeout"),
 ])
 def test_usage_errors_exit_two(tmp_path, args, says):
     run = run_runner(*args, cwd=tmp_path)

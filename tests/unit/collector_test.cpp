@@ -214,3 +214,52 @@ TEST(TestResultCollector, WithoutKeepingEventsAnEarlierFailureStillFailsTheSuite
     c.endTestSuite(&s);
     EXPECT_EQ(c.failedSuiteCount(), 1u);
 }
+
+TEST(TestResultCollector, WithoutTheEventLogRecordsStayAndGetResultsIsEmpty) {
+    TestResultCollector c;
+    c.setKeepEventLog(false);
+    Named a("a");
+    c.startTest(&a);
+    c.addCheck(&a, TestMessage("holds"), true);
+    c.addFailure(&a, TestMessage("broken"));
+    c.endTest(&a);
+    EXPECT_TRUE(c.getResults().empty());
+    ASSERT_EQ(c.suites().at(0).tests.size(), 1u);
+    const TestRecord& record = c.suites()[0].tests[0];
+    EXPECT_EQ(record.status, TestStatus::Failed);
+    ASSERT_EQ(record.events.size(), 2u);
+    EXPECT_EQ(record.events[0].kind, Kind::Check);
+    ASSERT_NE(record.reason(), nullptr);
+    EXPECT_EQ(record.reason()->message.getMessage(), "broken");
+}
+
+TEST(TestResultCollector, WithoutChecksRecordsKeepEverythingElse) {
+    TestResultCollector c;
+    c.setKeepChecks(false);
+    Named a("a");
+    c.startTest(&a);
+    c.addCheck(&a, TestMessage("holds"), true);
+    c.addCheck(&a, TestMessage("does not hold"), false);
+    c.addReport(&a, TestMessage("said"));
+    c.endTest(&a);
+    const TestRecord& record = c.suites().at(0).tests.at(0);
+    ASSERT_EQ(record.events.size(), 1u);
+    EXPECT_EQ(record.events[0].kind, Kind::Report);
+    EXPECT_EQ(c.getResults().size(), 5u);  // the log, when kept, still has every event
+}
+
+TEST(TestResultCollector, ASuiteReservesItsRecordsOnce) {
+    TestResultCollector c;
+    TestSuite s("s");
+    Named a("a"), b("b"), t("t");
+    s.addTest(&a);
+    s.addTest(&b);
+    c.startTestSuite(&s);
+    oneTest(c, a, {});
+    const TestRecord* first = &c.suites().at(0).tests.at(0);
+    oneTest(c, b, {});
+    EXPECT_EQ(first, &c.suites()[0].tests[0]);  // not moved by the second record
+    oneTest(c, t, {});                          // more than the suite said: still recorded
+    c.endTestSuite(&s);
+    EXPECT_EQ(c.suites()[0].tests.size(), 3u);
+}

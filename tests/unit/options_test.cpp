@@ -137,8 +137,8 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "-o", "tap:out.tap"}, "not available in this build"},
         {{"-t", "a.so", "-o", "junit:"}, "no file name"},
         {{"-t", "a.so", "--isolation", "thread"}, "isolation"},
-        {{"-t", "a.so", "--isolation", "process"},
-         "process isolation is not available in this build"},
+        {{"-t", "a.so", "--timeout", "-1"}, "timeout"},
+        {{"-t", "a.so", "--timeout", "soon"}, "timeout"},
         {{"-t", "a.so", "--var", "novalue"}, "NAME=VALUE"},
         {{"-t", "a.so", "stray"}, "stray"},
     };
@@ -155,6 +155,21 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         EXPECT_EQ(result.status, 2) << line;
         EXPECT_NE(result.text.find(c.says), std::string::npos) << line << "→ " << result.text;
     }
+}
+
+TEST(Options, ProcessIsolationIsTheDefault) {
+    Options options;
+    ASSERT_TRUE(runs(parse({"-t", "a.so"}, options)));
+    EXPECT_EQ(options.isolation, "process");
+    EXPECT_EQ(options.timeout, 0);
+    EXPECT_FALSE(options.failFast);
+
+    Options chosen;
+    ASSERT_TRUE(runs(
+        parse({"-t", "a.so", "--isolation", "none", "--timeout", "2.5", "--fail-fast"}, chosen)));
+    EXPECT_EQ(chosen.isolation, "none");
+    EXPECT_EQ(chosen.timeout, 2.5);
+    EXPECT_TRUE(chosen.failFast);
 }
 
 TEST(Options, HelpAndVersionExitWithZero) {

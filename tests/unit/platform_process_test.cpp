@@ -190,6 +190,32 @@ TEST(SignalPipe, SignalBecomesReadableByte) {
     EXPECT_EQ(signals.wait(10), 0);
 }
 
+TEST(SignalPipe, WakeEndsAWaitOfAnotherThreadAtOnce) {
+    SignalPipe signals({SIGUSR1});
+    int got = -1;
+    Deadline bound(5.0);
+    std::thread waiter([&] { got = signals.wait(10000); });
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    signals.wake();
+    waiter.join();
+    EXPECT_EQ(got, 0) << "a wake is not a signal";
+    EXPECT_FALSE(bound.expired()) << "the wait did not end at the wake";
+}
+
+TEST(FdPassing, PacketsOfEverySizeArriveWhole) {
+    FileDescriptor a, b;
+    ASSERT_TRUE(makeSocketPair(a, b, true));
+    std::string data;
+    std::vector<FileDescriptor> fds;
+    for (std::size_t size : {std::size_t(1), std::size_t(300), kMaxPacket / 2, kMaxPacket}) {
+        const std::string sent(size, 'x');
+        ASSERT_TRUE(sendWithFds(a.get(), sent, {a.get()})) << size;
+        ASSERT_TRUE(receiveWithFds(b.get(), data, fds)) << size;
+        EXPECT_EQ(data, sent);
+        EXPECT_EQ(fds.size(), 1u) << "the descriptor comes with its packet, once";
+    }
+}
+
 TEST(Deadline, NeverAndExpired) {
     Deadline never(0);
     EXPECT_TRUE(never.never());

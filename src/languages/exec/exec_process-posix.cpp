@@ -8,8 +8,10 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <map>
+#include <thread>
 
 extern char** environ;
 
@@ -35,6 +37,26 @@ bool drain(int fd, std::string& into) {
         }
         return false;
     }
+}
+
+// Seconds between SIGTERM and SIGKILL when the program (and what it started) is stopped.
+const double kStopGrace = 1.0;
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The program led its own process group; what it started in the background may still be in
+// it after it ended. SIGTERM, a short grace, then SIGKILL, so a test never leaves them behind.
+void stopGroup(pid_t group) {
+    if (::kill(-group, SIGTERM) != 0) {
+        return;  // nothing left
+    }
+    const auto start = std::chrono::steady_clock::now();
+    while (::kill(-group, 0) == 0 && secondsSince(start) < kStopGrace) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    ::kill(-group, SIGKILL);
 }
 
 }  // namespace
@@ -99,7 +121,10 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     sigemptyset(&none);
     posix_spawnattr_setsigdefault(&attributes, &all);
     posix_spawnattr_setsigmask(&attributes, &none);
-    posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK);
+    // Its own process group: stopping it stops whatever it started too.
+    posix_spawnattr_setpgroup(&attributes, 0);
+    posix_spawnattr_setflags(
+        &attributes, POSIX_SPAWN_SETSIGDEF | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETPGROUP);
 
     pid_t pid = -1;
     int spawnError;
@@ -109,7 +134,8 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
         if (spawnError == 0) {
             pid_ = pid;
             if (terminate_) {  // terminate() came while it was being started
-                ::kill(pid, SIGTERM);
+                ::kill(-pid, SIGTERM);
+                terminatedAt_ = std::chrono::steady_clock::now();
             }
         }
     }
@@ -131,14 +157,12 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     bool errOpen = true;
     int status = 0;
     bool exited = false;
+    bool killed = false;
     while (!exited) {
         if (!outOpen && !errOpen) {
-            // Both pipes are closed: wait for the end without reaping, so terminate() never
-            // signals a recycled pid, then reap under the lock.
-            siginfo_t info{};
-            while (::waitid(P_PID, static_cast<id_t>(pid), &info, WEXITED | WNOWAIT) != 0 &&
-                   errno == EINTR) {
-            }
+            // Both pipes are closed: poll for the end (reaped under the lock below, so
+            // terminate() never signals a recycled pid), still escalating a stop.
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
         } else {
             pollfd fds[2] = {{outOpen ? outPipe[0] : -1, POLLIN, 0},
                              {errOpen ? errPipe[0] : -1, POLLIN, 0}};
@@ -157,8 +181,12 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
         if (::waitpid(pid, &status, WNOHANG) == pid) {
             exited = true;
             pid_ = -1;
+        } else if (terminate_ && !killed && secondsSince(terminatedAt_) >= kStopGrace) {
+            ::kill(-pid, SIGKILL);  // it ignored SIGTERM
+            killed = true;
         }
     }
+    stopGroup(pid);
     if (outOpen) {
         drain(outPipe[0], outcome.out);
     }
@@ -182,9 +210,12 @@ void ExecProcess::reset() {
 
 void ExecProcess::terminate() {
     std::lock_guard<std::mutex> lock(mutex_);
+    if (!terminate_) {
+        terminatedAt_ = std::chrono::steady_clock::now();
+    }
     terminate_ = true;
     if (pid_ > 0) {
-        ::kill(pid_, SIGTERM);
+        ::kill(-pid_, SIGTERM);  // its whole group
     }
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <sys/types.h>
+#include <chrono>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -25,8 +26,9 @@ public:
     // (name, value pairs), stdin from /dev/null. Returns once it has ended.
     ExecOutcome run(const std::vector<std::string>& argv,
                     const std::vector<std::pair<std::string, std::string>>& environment);
-    // Sends SIGTERM to the running program, or to the next one as soon as it starts (until
-    // reset()). Thread-safe.
+    // Stops the running program and everything in its process group (SIGTERM, then SIGKILL
+    // after a grace), or the next one as soon as it starts (until reset()). Thread-safe.
+    // Whatever the program left in its group is stopped when it ends, in any case.
     void terminate();
     void reset();
 
@@ -34,6 +36,7 @@ private:
     std::mutex mutex_;
     pid_t pid_ = -1;
     bool terminate_ = false;
+    std::chrono::steady_clock::time_point terminatedAt_;
 };
 
 // "SIGSEGV", "SIGKILL", ... or "signal N".

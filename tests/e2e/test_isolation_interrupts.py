@@ -1,0 +1,144 @@
+"""Ctrl-C and SIGTERM: the running test is stopped, tear-downs run, the outputs are written with
+what finished and the rest interrupted, the exit status says so (130 SIGINT, 143 SIGTERM); a
+second Ctrl-C ends at once; nothing the run started survives it, even a SIGKILL of the runner."""
+import os
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from conftest import (_marked_processes, leftover_processes, marked, plugin, start_runner,
+                      validate_junit)
+
+
+def wait_for(condition, timeout=20.0, what="the condition"):
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if condition():
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"timed out waiting for {what}")
+
+
+def finish(proc, timeout=30):
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
+    return proc.returncode, out, err
+
+
+def statuses(junit):
+    return {case.get("name"): case.get("status")
+            for case in ET.parse(junit).getroot().iter("testcase")}
+
+
+def lines(path):
+    return path.read_text().splitlines() if path.exists() else []
+
+
+# A test that blocks until stopped: hang_block ignores everything but a signal, so in-process
+# mode uses waiting_test, which listens to TestCase::interrupt.
+BLOCKER = {"process": ("hang_block", ""), "none": ("waiting_test", "--seconds 60")}
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("signum, status", [(signal.SIGINT, 130), (signal.SIGTERM, 143)])
+def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker, isolation,
+                                                                 signum, status):
+    log = tmp_path / "fixture.log"
+    blocker, param = BLOCKER[isolation]
+    suite = tmp_path / "suite.xml"
+    suite.write_text(f'''<suite name="interrupted">
+  <fixture param="--log {log} --name world">{plugin("order_fixture")}</fixture>
+  <test name="done">{plugin("passing_test")}</test>
+  <test name="hung" param="{param}">{plugin(blocker)}</test>
+  <test name="after">{plugin("passing_test")}</test>
+</suite>''')
+    later = tmp_path / "later.xml"
+    later.write_text(f'<suite name="later"><test name="never">{plugin("passing_test")}</test></suite>')
+    junit = tmp_path / "out.xml"
+    text = tmp_path / "out.txt"
+    proc = start_runner("--isolation", isolation, "--suite", suite, "--suite", later,
+                        "--output", f"junit:{junit}", "--output", f"text:{text}",
+                        env=marked(marker))
+    # The fixture is checked before each test: the second check comes before "hung".
+    wait_for(lambda: lines(log).count("check world") >= 2, what="the blocking test")
+    time.sleep(0.5)
+    proc.send_signal(signum)
+    code, out, err = finish(proc)
+    assert code == status, (code, out, err)
+    assert lines(log)[-1] == "teardown world", lines(log)
+    validate_junit(junit)
+    assert statuses(junit) == {"done": "passed", "hung": "interrupted",
+                               "after": "interrupted", "never": "interrupted"}, out
+    assert "INTERRUPTED" in text.read_text()
+    assert "interrupted" in out.splitlines()[-1] or "failed" in out.splitlines()[-1], out
+    assert leftover_processes(marker) == []
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_second_ctrl_c_ends_at_once_and_leaves_nothing(tmp_path, marker, isolation):
+    # fork_sleeper --hang leaves a child and blocks; in-process nothing can stop it politely,
+    # so only the second Ctrl-C ends the run.
+    suite = tmp_path / "suite.xml"
+    suite.write_text(f'''<suite name="stubborn">
+  <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
+</suite>''')
+    junit = tmp_path / "out.xml"
+    proc = start_runner("--isolation", isolation, "--suite", suite, "--output",
+                        f"junit:{junit}", env=marked(marker))
+    # The runner (and server), the test's process and its child: wait for the child.
+    expected = 4 if isolation == "process" else 2
+    wait_for(lambda: len(_marked_processes(marker)) >= expected, what="the sleeping child")
+    proc.send_signal(signal.SIGINT)
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    begin = time.monotonic()
+    code, out, err = finish(proc, timeout=10)
+    assert time.monotonic() - begin < 5
+    assert code == 130, (code, out, err)
+    assert leftover_processes(marker) == []
+
+
+def test_sigkill_of_the_runner_leaves_no_process(tmp_path, marker):
+    suite = tmp_path / "suite.xml"
+    suite.write_text(f'''<suite name="killed">
+  <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
+</suite>''')
+    proc = start_runner("--suite", suite, "--no-output", env=marked(marker))
+    # Runner, fork server, worker, the worker's child.
+    wait_for(lambda: len(_marked_processes(marker)) >= 4, what="the sleeping child")
+    proc.kill()
+    finish(proc)
+    assert leftover_processes(marker, grace=5) == []
+
+
+def test_an_interrupted_exec_test_leaves_no_child_in_process(tmp_path, marker):
+    started = tmp_path / "started"
+    script = tmp_path / "sleepy.sh"
+    script.write_text(f"#!/bin/sh\nsleep 60 &\ntouch {started}\nsleep 60\n")
+    script.chmod(0o755)
+    proc = start_runner("--isolation", "none", "--test", script, "--no-output",
+                        env=marked(marker))
+    wait_for(started.exists, what="the script")
+    proc.send_signal(signal.SIGINT)
+    code, out, err = finish(proc)
+    assert code == 130, (code, out, err)
+    assert "INTERRUPTED" in out, out
+    assert leftover_processes(marker) == []
+
+
+def test_an_exec_test_that_leaves_a_child_behind_leaves_nothing_in_process(tmp_path, marker):
+    script = tmp_path / "leaver.sh"
+    script.write_text("#!/bin/sh\nsleep 60 >/dev/null 2>&1 &\nexit 0\n")
+    script.chmod(0o755)
+    proc = start_runner("--isolation", "none", "--test", script, "--no-output",
+                        env=marked(marker))
+    code, out, err = finish(proc)
+    assert code == 0, (code, out, err)
+    assert leftover_processes(marker) == []
