@@ -82,6 +82,10 @@ void EventRelay::note(Kind kind, const TestMessage& message) {
         kind == Kind::Error) {
         lastSaid_ = message.toString();
     }
+    // TestCase::run reports each repetition's start so: a crash names the one it ended.
+    if (kind == Kind::Report && message.getMessage().compare(0, 11, "repetition ") == 0) {
+        repetition_ = message.getMessage();
+    }
 }
 
 void EventRelay::relay(const WireRecord& record) {

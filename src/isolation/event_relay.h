@@ -34,6 +34,8 @@ public:
     // The last thing the test reported (a report, check, failure or error), for the message
     // of a crash or timeout.
     const std::string& lastSaid() const { return lastSaid_; }
+    // "repetition k/N" while a test with several repetitions runs, else empty.
+    const std::string& repetition() const { return repetition_; }
 
 private:
     void start();
@@ -46,6 +48,7 @@ private:
     bool finished_ = false;
     TestStatus status_ = TestStatus::Passed;
     std::string lastSaid_;
+    std::string repetition_;
 };
 
 }  // namespace isolation

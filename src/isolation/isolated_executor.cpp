@@ -192,13 +192,15 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     } else if (!relay.finished()) {
         // The worker died before it finished (in the test, or destroying it after endTest).
         if (ending.signaled) {
+            const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
             relay.add(Kind::Crash,
-                      TestMessage("crashed: " + platform::signalName(ending.signal) + " (" +
-                                      platform::signalDescription(ending.signal) + ")",
+                      TestMessage("crashed" + in + ": " + platform::signalName(ending.signal) +
+                                      " (" + platform::signalDescription(ending.signal) + ")",
                                   said(relay)));
         } else {
+            const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
             relay.add(Kind::Error, TestMessage("exited with status " + std::to_string(ending.code) +
-                                                   " before the test ended",
+                                                   " before the test ended" + in,
                                                said(relay)));
         }
     }

@@ -46,8 +46,9 @@ int interruptedBy(int signal) {
 // test is stopped, tear-downs run, outputs are written); a second one ends the runner at once.
 class InterruptWatcher {
 public:
-    explicit InterruptWatcher(RunPlan& plan)
-        : signals_({SIGINT, SIGTERM}), thread_([this, &plan] { watch(plan); }) {}
+    // `console`: where to say so (stderr is captured while tests run).
+    InterruptWatcher(RunPlan& plan, std::FILE* console)
+        : signals_({SIGINT, SIGTERM}), thread_([this, &plan, console] { watch(plan, console); }) {}
     ~InterruptWatcher() {
         done_ = true;
         signals_.wake();  // or the run would end up to one poll period (200 ms) late
@@ -57,15 +58,16 @@ public:
     int received() const { return received_; }
 
 private:
-    void watch(RunPlan& plan) {
+    void watch(RunPlan& plan, std::FILE* console) {
         while (!done_) {
             int signal = signals_.wait(200);
             if (signal != 0 && received_ == 0) {
                 received_ = signal;
-                std::fprintf(stderr,
+                std::fprintf(console,
                              "\n%s: interrupted; stopping the running test and tearing down "
                              "(again to quit at once)\n",
                              program);
+                std::fflush(console);
             } else if (signal != 0) {
                 // Whatever the run started goes with us: the fork server kills its workers when
                 // we are gone; what the runner itself started (in-process tests) is killed here.
@@ -217,7 +219,7 @@ int main(int argc, char** argv) {
 
     int interrupted = 0;
     {
-        InterruptWatcher watcher(plan);
+        InterruptWatcher watcher(plan, capture.console());
         plan.runner().run(result);
         interrupted = watcher.received();
     }

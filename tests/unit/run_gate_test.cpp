@@ -1,0 +1,123 @@
+// Which tests the runner skips before they run (depends, --fail-fast), and the timeout each
+// test gets from the command line, its suite and itself.
+#include <gtest/gtest.h>
+
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/TestResult.h>
+
+#include "plugin_test.h"
+#include "run_gate.h"
+#include "run_plan.h"
+#include "test_executor.h"
+
+using namespace robottestingframework;
+using namespace robottestingframework::runner;
+
+namespace {
+
+// Reports each test with the state its param names ("passed", "failed", ...).
+class ScriptedExecutor : public TestExecutor {
+public:
+    TestStatus run(const TestSpec& spec, Test& self, TestResult& result) override {
+        result.startTest(&self);
+        if (spec.param == "failed") {
+            result.addFailure(&self, TestMessage("no"));
+        }
+        result.endTest(&self);
+        return spec.param == "failed" ? TestStatus::Failed : TestStatus::Passed;
+    }
+    void interrupt() override {}
+    std::unique_ptr<FixtureManager> makeFixture(const FixtureSpec&, std::string&) override {
+        return nullptr;
+    }
+};
+
+TestSpec spec(const std::string& name, const std::string& plugin, const std::string& param = "",
+              std::vector<std::string> depends = {}) {
+    TestSpec test;
+    test.name = name;
+    test.plugin = plugin;
+    test.param = param;
+    test.depends = std::move(depends);
+    test.where = SourceLocation{"suite.xml", 7};
+    return test;
+}
+
+}  // namespace
+
+TEST(RunGate, UnknownDependencyNamesFileAndLine) {
+    SuiteSpec suite;
+    suite.tests = {spec("a", "lib/libarm.so"), spec("b", "x.so", "", {"nobody"})};
+    EXPECT_EQ(findUnknownDependency({suite}).rfind("suite.xml:7: unknown dependency 'nobody'", 0),
+              0u);
+    for (const char* known : {"a", "lib/libarm.so", "libarm.so", "arm"}) {
+        suite.tests[1].depends = {known};
+        EXPECT_EQ(findUnknownDependency({suite}), "") << known;
+    }
+    suite.tests[1].depends = {"b"};  // itself
+    EXPECT_NE(findUnknownDependency({suite}), "");
+}
+
+TEST(RunGate, DependencyMustHaveRunAndPassed) {
+    std::deque<TestSpec> specs{spec("good", "g.so"), spec("bad", "b.so", "failed"),
+                               spec("late", "l.so")};
+    ScriptedExecutor executor;
+    std::deque<PluginTest> tests;
+    for (const auto& s : specs) {
+        tests.emplace_back(s, executor);
+    }
+    RunGate gate(tests);
+    TestResult result;
+    tests[0].run(result);
+    tests[1].run(result);
+
+    TestSpec onGood = spec("x", "x.so", "", {"good"});
+    TestSpec onBad = spec("y", "y.so", "", {"bad"});
+    TestSpec onLate = spec("z", "z.so", "", {"late"});
+    PluginTest x(onGood, executor), y(onBad, executor), z(onLate, executor);
+    TestMessage reason;
+    EXPECT_FALSE(gate.skip(&x, reason));
+    ASSERT_TRUE(gate.skip(&y, reason));
+    EXPECT_NE(reason.getMessage().find("depends on bad, which did not pass (failed)"),
+              std::string::npos)
+        << reason.getMessage();
+    ASSERT_TRUE(gate.skip(&z, reason));
+    EXPECT_NE(reason.getMessage().find("did not run"), std::string::npos);
+}
+
+TEST(RunGate, FailFastSkipsEverythingAfterTheFirstFailure) {
+    std::deque<PluginTest> none;
+    RunGate gate(none);
+    gate.setFailFast(true);
+    ScriptedExecutor executor;
+    TestSpec s = spec("t", "t.so");
+    PluginTest test(s, executor);
+    TestMessage reason;
+    EXPECT_FALSE(gate.skip(&test, reason));
+    gate.addFailure(&test, TestMessage("boom"));
+    ASSERT_TRUE(gate.skip(&test, reason));
+    EXPECT_NE(reason.getMessage().find("--fail-fast"), std::string::npos);
+
+    RunGate patient(none);  // without --fail-fast a failure skips nothing
+    patient.addFailure(&test, TestMessage("boom"));
+    EXPECT_FALSE(patient.skip(&test, reason));
+}
+
+TEST(RunPlan, MostSpecificTimeoutWins) {
+    SuiteSpec suite;
+    suite.tests = {spec("own", "a.so"), spec("inherits", "b.so")};
+    suite.tests[0].timeout = 0.5;
+    Overrides overrides;
+    overrides.timeout = 9;
+    SuiteSpec withSuite = suite;
+    withSuite.timeout = 2;
+    applyOverrides(withSuite, overrides);
+    EXPECT_EQ(withSuite.tests[0].timeout, 0.5);
+    EXPECT_EQ(withSuite.tests[1].timeout, 2);
+    applyOverrides(suite, overrides);
+    EXPECT_EQ(suite.tests[1].timeout, 9);
+}
