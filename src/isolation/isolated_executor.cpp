@@ -8,11 +8,11 @@
 #include "clock.h"
 #include "event_relay.h"
 #include "isolated_fixture.h"
+#include "plugin_locator.h"
 #include "process.h"
 #include "signal_name.h"
 #include "test_loader.h"
 
-#include <robottestingframework/dll/DllPluginLoader.h>
 #include "worker_process.h"
 
 namespace robottestingframework {
@@ -31,41 +31,6 @@ std::string seconds(double value) {
 std::string said(const EventRelay& relay) {
     return relay.lastSaid().empty() ? "it reported nothing before"
                                     : "last reported: " + relay.lastSaid();
-}
-
-std::string folderOf(const std::string& file) {
-    std::size_t slash = file.rfind('/');
-    if (file.empty() || slash == std::string::npos) {
-        return ".";
-    }
-    return slash == 0 ? "/" : file.substr(0, slash);
-}
-
-// The file and type of a plug-in, as the in-process executor finds them. False with `error`.
-bool locate(const std::string& plugin, const std::string& given, const std::string& givenType,
-            const runner::SourceLocation& where, std::string& path, std::string& type,
-            std::string& error) {
-    path = given;
-    if (path.empty()) {
-        std::string searched;
-        path = plugin::findPlugin(plugin, folderOf(where.file), &searched);
-        if (path.empty()) {
-            error = "'" + plugin + "' " + searched;
-            return false;
-        }
-    }
-    type = givenType.empty() ? languages::typeFromFile(path) : givenType;
-    if (type.empty()) {
-        error = "cannot tell what kind of plug-in '" + path +
-                "' is (not a .so, .py, .lua or .rb file, nor an executable); give its type, "
-                "e.g. type=\"dll\"";
-        return false;
-    }
-    if (!languages::isSupportedType(type)) {
-        error = "'" + path + "' is a " + type + " plug-in; this build does not support " + type;
-        return false;
-    }
-    return true;
 }
 
 void drain(int fd) {
@@ -124,7 +89,8 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     request.repetition = spec.repetition == 0 ? 1 : spec.repetition;
 
     std::string error;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type, error)) {
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
+                                 request.type, error)) {
         relay.add(Kind::Failure, TestMessage("cannot load " + spec.plugin, error));
         relay.end("");
         return relay.status();
@@ -214,7 +180,8 @@ std::unique_ptr<FixtureManager> IsolatedExecutor::makeFixture(const runner::Fixt
     request.role = WorkRequest::Role::Fixture;
     request.param = spec.param;
     request.name = spec.plugin;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, request.path, request.type, error)) {
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
+                                 request.type, error)) {
         return nullptr;
     }
     if (!start(error)) {

@@ -1,7 +1,6 @@
 #include "in_process_executor.h"
 
 #include <robottestingframework/TestResult.h>
-#include <robottestingframework/dll/DllPluginLoader.h>
 
 #include <algorithm>
 #include <chrono>
@@ -10,20 +9,13 @@
 #include <sstream>
 #include <thread>
 
+#include "plugin_locator.h"
 #include "plugin_test.h"
 
 namespace robottestingframework {
 namespace runner {
 
 namespace {
-
-std::string folderOf(const std::string& file) {
-    std::size_t slash = file.rfind('/');
-    if (file.empty() || slash == std::string::npos) {
-        return ".";
-    }
-    return slash == 0 ? "/" : file.substr(0, slash);
-}
 
 // The fixture manager the suite holds: forwards to the one the plug-in made, and keeps the
 // plug-in loaded as long as it lives.
@@ -187,32 +179,6 @@ InProcessExecutor::InProcessExecutor() : relay_(std::make_unique<Relay>()) {
 
 InProcessExecutor::~InProcessExecutor() = default;
 
-bool InProcessExecutor::locate(const std::string& plugin, const std::string& given,
-                               const std::string& givenType, const SourceLocation& where,
-                               std::string& path, std::string& type, std::string& error) {
-    path = given;
-    if (path.empty()) {
-        std::string searched;
-        path = plugin::findPlugin(plugin, folderOf(where.file), &searched);
-        if (path.empty()) {
-            error = "'" + plugin + "' " + searched;
-            return false;
-        }
-    }
-    type = givenType.empty() ? languages::typeFromFile(path) : givenType;
-    if (type.empty()) {
-        error = "cannot tell what kind of plug-in '" + path +
-                "' is (not a .so, .py, .lua or .rb file, nor an executable); give its type, "
-                "e.g. type=\"dll\"";
-        return false;
-    }
-    if (!languages::isSupportedType(type)) {
-        error = "'" + path + "' is a " + type + " plug-in; this build does not support " + type;
-        return false;
-    }
-    return true;
-}
-
 TestStatus InProcessExecutor::notLoaded(const TestSpec& spec, Test& self, TestResult& result,
                                         const std::string& reason) {
     self.setName(PluginTest::displayName(spec));
@@ -226,7 +192,8 @@ TestStatus InProcessExecutor::run(const TestSpec& spec, Test& self, TestResult& 
     std::string path;
     std::string type;
     std::string error;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, path, type, error)) {
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, path, type,
+                                 error)) {
         return notLoaded(spec, self, result, error);
     }
     std::unique_ptr<languages::LoadedTest> loaded;
@@ -295,7 +262,8 @@ std::unique_ptr<FixtureManager> InProcessExecutor::makeFixture(const FixtureSpec
                                                                std::string& error) {
     std::string path;
     std::string type;
-    if (!locate(spec.plugin, spec.path, spec.type, spec.where, path, type, error)) {
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, path, type,
+                                 error)) {
         return nullptr;
     }
     std::unique_ptr<languages::LoadedFixture> loaded;

@@ -30,10 +30,6 @@ public:
 private:
     class Relay;
 
-    // Finds the file and its type; false and `error` set when it cannot.
-    static bool locate(const std::string& plugin, const std::string& given,
-                       const std::string& givenType, const SourceLocation& where, std::string& path,
-                       std::string& type, std::string& error);
     TestStatus notLoaded(const TestSpec& spec, Test& self, TestResult& result,
                          const std::string& reason);
 
