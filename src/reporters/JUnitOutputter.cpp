@@ -316,16 +316,7 @@ std::string JUnitOutputter::xml() const {
 }
 
 bool JUnitOutputter::write(std::string filename, TestMessage* error) {
-    std::string why;
-    if (reporters::writeFileAtomically(filename, xml(), why)) {
-        return true;
-    }
-    if (error != nullptr) {
-        error->setMessage(why);
-    } else {
-        std::fprintf(stderr, "robottestingframework: %s\n", why.c_str());
-    }
-    return false;
+    return reporters::writeReport(filename, xml(), error);
 }
 
 }  // namespace robottestingframework

@@ -83,16 +83,7 @@ std::string TextOutputter::text(bool summary) const {
 }
 
 bool TextOutputter::write(std::string filename, bool summary, TestMessage* error) {
-    std::string why;
-    if (reporters::writeFileAtomically(filename, text(summary), why)) {
-        return true;
-    }
-    if (error != nullptr) {
-        error->setMessage(why);
-    } else {
-        std::fprintf(stderr, "robottestingframework: %s\n", why.c_str());
-    }
-    return false;
+    return reporters::writeReport(filename, text(summary), error);
 }
 
 }  // namespace robottestingframework

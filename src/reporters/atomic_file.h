@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include <robottestingframework/TestMessage.h>
+
 namespace robottestingframework {
 namespace reporters {
 
@@ -10,6 +12,10 @@ namespace reporters {
 // reason in `error`.
 bool writeFileAtomically(const std::string& filename, const std::string& content,
                          std::string& error);
+
+// What the outputters' write() does: the same, with the reason in `error` when given, on
+// stderr otherwise.
+bool writeReport(const std::string& filename, const std::string& content, TestMessage* error);
 
 }  // namespace reporters
 }  // namespace robottestingframework
