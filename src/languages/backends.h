@@ -19,16 +19,12 @@ std::unique_ptr<LoadedFixture> loadProcessFixture(const std::string& path, std::
 // exec/: any executable; TAP on its stdout becomes checks.
 std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error);
 
-#ifdef RTF_HAVE_PYTHON
+// python/, lua/, ruby/: each built into a module of its own (language_module.h), which
+// test_loader.cpp loads on first use; not part of rtf_languages.
 std::unique_ptr<LoadedTest> loadPythonTest(const std::string& path, std::string& error);
 std::unique_ptr<LoadedFixture> loadPythonFixture(const std::string& path, std::string& error);
-#endif
-#ifdef RTF_HAVE_LUA
 std::unique_ptr<LoadedTest> loadLuaTest(const std::string& path, std::string& error);
-#endif
-#ifdef RTF_HAVE_RUBY
 std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& error);
-#endif
 
 }  // namespace languages
 }  // namespace robottestingframework

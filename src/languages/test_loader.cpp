@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include "backends.h"
+#include "language_modules.h"
 
 namespace robottestingframework {
 namespace languages {
@@ -35,6 +36,44 @@ std::string extensionType(const std::string& path) {
     return {};
 }
 
+// "Python" for "python": how errors name a language.
+std::string languageName(const std::string& type) {
+    std::string name = type;
+    if (!name.empty()) {
+        name[0] = static_cast<char>(name[0] - 'a' + 'A');
+    }
+    return name;
+}
+
+// The script languages of this build: each in a module of its own, loaded on first use.
+bool isScriptLanguage(const std::string& type) {
+#ifdef RTF_HAVE_PYTHON
+    if (type == "python") {
+        return true;
+    }
+#endif
+#ifdef RTF_HAVE_LUA
+    if (type == "lua") {
+        return true;
+    }
+#endif
+#ifdef RTF_HAVE_RUBY
+    if (type == "ruby") {
+        return true;
+    }
+#endif
+    return false;
+}
+
+const LanguageModule* scriptModule(const std::string& type, std::string& error) {
+    std::string reason;
+    const LanguageModule* module = languageModule(type, reason);
+    if (module == nullptr) {
+        error = languageName(type) + " test cases are not available: " + reason;
+    }
+    return module;
+}
+
 }  // namespace
 
 std::string typeFromFile(const std::string& path) {
@@ -54,22 +93,7 @@ bool isSupportedType(const std::string& type) {
     if (type == "dll" || type == "exec" || type == "process") {
         return true;  // "process": fixtures only (a world file)
     }
-#ifdef RTF_HAVE_PYTHON
-    if (type == "python") {
-        return true;
-    }
-#endif
-#ifdef RTF_HAVE_LUA
-    if (type == "lua") {
-        return true;
-    }
-#endif
-#ifdef RTF_HAVE_RUBY
-    if (type == "ruby") {
-        return true;
-    }
-#endif
-    return false;
+    return isScriptLanguage(type);
 }
 
 std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string& path,
@@ -80,21 +104,10 @@ std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string&
     if (type == "exec") {
         return loadExecTest(path, error);
     }
-#ifdef RTF_HAVE_PYTHON
-    if (type == "python") {
-        return loadPythonTest(path, error);
+    if (isScriptLanguage(type)) {
+        const LanguageModule* module = scriptModule(type, error);
+        return module != nullptr ? module->loadTest(path, error) : nullptr;
     }
-#endif
-#ifdef RTF_HAVE_LUA
-    if (type == "lua") {
-        return loadLuaTest(path, error);
-    }
-#endif
-#ifdef RTF_HAVE_RUBY
-    if (type == "ruby") {
-        return loadRubyTest(path, error);
-    }
-#endif
     error = "test type '" + type + "' is not supported by this build";
     return nullptr;
 }
@@ -107,11 +120,15 @@ std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::s
     if (type == "process") {
         return loadProcessFixture(path, error);
     }
-#ifdef RTF_HAVE_PYTHON
-    if (type == "python") {
-        return loadPythonFixture(path, error);
+    if (isScriptLanguage(type)) {
+        const LanguageModule* module = scriptModule(type, error);
+        if (module == nullptr) {
+            return nullptr;
+        }
+        if (module->loadFixture != nullptr) {
+            return module->loadFixture(path, error);
+        }
     }
-#endif
     error = "fixture type '" + type + "' is not supported by this build";
     return nullptr;
 }

@@ -105,6 +105,58 @@ def test_install_layout(prefix):
                 header.relative_to(headers)).is_file(), header
 
 
+# The script language modules this build made (lib/robottestingframework/ of the build tree).
+BUILT_MODULES = sorted(p.name for p in (BUILD_DIR / LIBDIR / "robottestingframework")
+                       .glob("robottestingframework-*.so"))
+
+
+def test_language_modules_installed_with_their_rpath(prefix):
+    installed = prefix / LIBDIR / "robottestingframework"
+    missing = [name for name in BUILT_MODULES if not (installed / name).is_file()]
+    assert not missing, f"language modules missing from the install tree: {missing}"
+    for name in BUILT_MODULES:
+        module = installed / name
+        dynamic = check(["readelf", "-d", module], timeout=30).stdout
+        assert "[$ORIGIN/..]" in dynamic, dynamic
+        ldd = check(["ldd", module], timeout=30).stdout
+        assert "not found" not in ldd, ldd
+        line = next(l for l in ldd.splitlines() if "libRobotTestingFramework.so" in l)
+        found = Path(line.split("=>")[1].split("(")[0].strip())
+        assert found.resolve().parent == (prefix / LIBDIR).resolve(), line
+
+
+PYTHON_TEST = {
+    "passing": """import robottestingframework
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("installed python works")
+""",
+    "failing": """import robottestingframework
+class TestCase:
+    def run(self):
+        robottestingframework.testCheck(False, "installed python fails")
+""",
+}
+
+
+@pytest.mark.skipif("robottestingframework-python.so" not in BUILT_MODULES,
+                    reason="Python test cases are not built")
+@pytest.mark.parametrize("isolation", ["none", "process"])
+def test_installed_runner_runs_python_tests(prefix, tmp_path, isolation):
+    """The installed runner (and its installed worker) load the installed Python module."""
+    runner = prefix / "bin" / "robottestingframework-testrunner"
+    env = {key: value for key, value in os.environ.items() if key != "RTF_LANGUAGE_DIR"}
+    for name, status in (("passing", 0), ("failing", 1)):
+        script = tmp_path / f"{name}.py"
+        script.write_text(PYTHON_TEST[name])
+        result = subprocess.run([str(runner), "--isolation", isolation, "--test", str(script),
+                                 "--no-output", "-v"], capture_output=True, text=True,
+                                timeout=60, env=env)
+        output = result.stdout + result.stderr
+        assert result.returncode == status, output
+        assert f"installed python {'works' if status == 0 else 'fails'}" in output, output
+
+
 def test_installed_runner_uses_installed_libraries(prefix):
     runner = prefix / "bin" / "robottestingframework-testrunner"
     ldd = check(["ldd", runner], timeout=30).stdout

@@ -10,6 +10,7 @@
 #include <robottestingframework/Exception.h>
 
 #include "backends.h"
+#include "language_module.h"
 
 namespace robottestingframework {
 namespace languages {
@@ -278,3 +279,11 @@ std::unique_ptr<LoadedTest> loadLuaTest(const std::string& path, std::string& er
 
 }  // namespace languages
 }  // namespace robottestingframework
+
+// The module's entry point: what test_loader.cpp finds with dlsym.
+const robottestingframework::languages::LanguageModule* rtf_language_module() {
+    static const robottestingframework::languages::LanguageModule module{
+        robottestingframework::languages::kLanguageModuleVersion,
+        robottestingframework::languages::loadLuaTest, nullptr};
+    return &module;
+}

@@ -7,6 +7,7 @@
 #include <robottestingframework/Exception.h>
 
 #include "backends.h"
+#include "language_module.h"
 #include "python_runtime.h"
 
 namespace robottestingframework {
@@ -235,3 +236,12 @@ std::unique_ptr<LoadedFixture> loadPythonFixture(const std::string& path, std::s
 
 }  // namespace languages
 }  // namespace robottestingframework
+
+// The module's entry point: what test_loader.cpp finds with dlsym.
+const robottestingframework::languages::LanguageModule* rtf_language_module() {
+    static const robottestingframework::languages::LanguageModule module{
+        robottestingframework::languages::kLanguageModuleVersion,
+        robottestingframework::languages::loadPythonTest,
+        robottestingframework::languages::loadPythonFixture};
+    return &module;
+}

@@ -9,6 +9,7 @@
 #include <robottestingframework/Exception.h>
 
 #include "backends.h"
+#include "language_module.h"
 #include "ruby_vm.h"
 
 namespace robottestingframework {
@@ -319,3 +320,11 @@ std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& e
 
 }  // namespace languages
 }  // namespace robottestingframework
+
+// The module's entry point: what test_loader.cpp finds with dlsym.
+const robottestingframework::languages::LanguageModule* rtf_language_module() {
+    static const robottestingframework::languages::LanguageModule module{
+        robottestingframework::languages::kLanguageModuleVersion,
+        robottestingframework::languages::loadRubyTest, nullptr};
+    return &module;
+}
