@@ -4,8 +4,8 @@
     python3 bench/languages_bench.py --runner build/bin/robottestingframework-testrunner
 
 Writes COUNT trivial tests per language into a temporary folder, runs them as one suite, and
-prints the time per test: (time for COUNT tests - time for 1 test) / (COUNT - 1), so the
-runner's start-up is left out. The best of --rounds rounds is kept."""
+prints the time per test: (best time for COUNT tests - best time for 1 test) / (COUNT - 1),
+so the runner's start-up is left out; each best is over --rounds rounds."""
 import argparse
 import os
 import subprocess
@@ -77,14 +77,18 @@ def main():
             one = write_suite(folder, language, 1)
             many = write_suite(folder, language, args.count)
             for isolation in args.isolation.split(","):
-                best = None
+                # The best run of each size: noise only ever adds time.
+                t1 = tn = None
                 for _ in range(args.rounds):
-                    t1, why = run(args.runner, one, isolation)
-                    tn, why = (None, why) if t1 is None else run(args.runner, many, isolation)
-                    if tn is None:
+                    one_time, why = run(args.runner, one, isolation)
+                    if one_time is None:
                         break
-                    per = (tn - t1) / (args.count - 1)
-                    best = per if best is None else min(best, per)
+                    many_time, why = run(args.runner, many, isolation)
+                    if many_time is None:
+                        break
+                    t1 = one_time if t1 is None else min(t1, one_time)
+                    tn = many_time if tn is None else min(tn, many_time)
+                best = None if t1 is None or tn is None else (tn - t1) / (args.count - 1)
                 if best is None:
                     print(f"{language:<8} {isolation:<10} {'n/a':>10}   {' '.join(why)}")
                 else:
