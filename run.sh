@@ -110,9 +110,14 @@ sanitize)
     export LSAN_OPTIONS=suppressions=$root/scripts/lsan.supp:print_suppressions=0
     export UBSAN_OPTIONS=print_stacktrace=1
     status=0
-    run_ctest build-asan -E '^(e2e\.|ctest\.|format$|bench\.)' || status=1
+    run_ctest build-asan -E '^(e2e\.|ctest\.|format$|bench\.|RubyLoader\.)' || status=1
+    mv build-asan/ctest-summary.log build-asan/ctest-summary-all.log
+    # LeakSanitizer's exit-time scan crashes on the embedded Ruby VM's thread (it cannot stop
+    # it); the Ruby tests keep the address and undefined-behaviour checks, without leak checks.
+    ASAN_OPTIONS=${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0} run_ctest build-asan -R '^RubyLoader\.' ||
+        status=1
     # Undefined behaviour does not stop a test; any outside the crashing test plug-ins fails.
-    if grep -E 'runtime error:' build-asan/ctest-summary.log | grep -v '/tests/plugins/'; then
+    if cat build-asan/ctest-summary-all.log build-asan/ctest-summary.log | grep -E 'runtime error:' | grep -v '/tests/plugins/'; then
         echo "run.sh: undefined behaviour reported (above)" >&2
         status=1
     fi
