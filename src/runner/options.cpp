@@ -1,5 +1,7 @@
 #include "options.h"
 
+#include <cstdlib>
+
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
@@ -10,6 +12,21 @@ namespace runner {
 namespace {
 
 const char* const program = "robottestingframework-testrunner";
+
+// A number check whose message says what is expected (CLI11's own prints the type's range).
+CLI::Validator atLeast(double minimum, bool inclusive, const std::string& what) {
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double value = std::strtod(text.c_str(), &end);
+            const bool number = !text.empty() && end != nullptr && *end == '\0';
+            if (number && (inclusive ? value >= minimum : value > minimum)) {
+                return {};
+            }
+            return "'" + text + "' is not " + what;
+        },
+        what);
+}
 
 // Output types other issues will add; named here so "tap:out.tap" is not taken for a file name.
 bool isPlannedOutputType(const std::string& type) {
@@ -95,7 +112,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_option("--repetition", options.repetition,
                    "Run each test N times (a test's own repetition wins)")
         ->type_name("N")
-        ->check(CLI::PositiveNumber);
+        ->check(atLeast(0, false, "a positive number"));
     takeAll(app.add_option("-o,--output", outputs,
                            "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); "
                            "repeatable. Default: result.txt")
@@ -123,7 +140,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
                    "and a test's timeout=\"...\" win (default: none)")
         ->type_name("SECONDS")
-        ->check(CLI::NonNegativeNumber);
+        ->check(atLeast(0, true, "a number of seconds >= 0 (0: no limit)"));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
     takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
