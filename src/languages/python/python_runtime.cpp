@@ -1,5 +1,6 @@
 #include "python_runtime.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -224,6 +225,15 @@ void ensureInterpreter() {
         if (Py_IsInitialized()) {
             return;  // the host program embeds Python already
         }
+        // UTF-8 mode, as python3 itself has under a C or unset locale: print("héllo") and
+        // open() use UTF-8 whatever the runner's locale. PYTHONUTF8=0 turns it off.
+        PyPreConfig preconfig;
+        PyPreConfig_InitIsolatedConfig(&preconfig);  // the locale stays the runner's
+        preconfig.isolated = 0;
+        preconfig.use_environment = 1;  // as the interpreter's own config below
+        const char* utf8 = std::getenv("PYTHONUTF8");
+        preconfig.utf8_mode = utf8 != nullptr && std::string(utf8) == "0" ? 0 : 1;
+        Py_PreInitialize(&preconfig);
         // No signal handlers: Ctrl-C belongs to the runner.
         py::initialize_interpreter(false, 0, nullptr, false);
         {
@@ -318,11 +328,24 @@ std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::s
     }
     std::stringstream source;
     source << file.rdbuf();
+    const std::string text = source.str();
+    // compile() would only say "source code string cannot contain null bytes", without where.
+    const std::size_t nul = text.find('\0');
+    if (nul != std::string::npos) {
+        const std::size_t lineStart = text.rfind('\n', nul);
+        const std::size_t column = lineStart == std::string::npos ? nul + 1 : nul - lineStart;
+        error = path + ":" +
+                std::to_string(1 + std::count(text.begin(), text.begin() + nul, '\n')) + ":" +
+                std::to_string(column) +
+                ": the file holds a NUL byte, which Python source cannot (a binary file, or text "
+                "saved as UTF-16?)";
+        return nullptr;
+    }
 
     py::module_ builtins = py::module_::import("builtins");
     py::object code;
     try {
-        code = builtins.attr("compile")(py::bytes(source.str()), path, "exec", 0, true);
+        code = builtins.attr("compile")(py::bytes(text), path, "exec", 0, true);
     } catch (py::error_already_set& e) {
         if (e.matches(PyExc_SyntaxError)) {
             py::object value = e.value();

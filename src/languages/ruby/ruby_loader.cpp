@@ -2,6 +2,7 @@
 // RobotTestingFramework holds what the script can call. Each file is loaded under a fresh
 // anonymous module, so two tests' classes and top-level methods never meet.
 #include <ruby.h>
+#include <ruby/encoding.h>
 
 #include <string>
 
@@ -55,6 +56,19 @@ VALUE protect(Body body) {
     return NIL_P(error) ? rb_exc_new_cstr(rb_eRuntimeError, "unknown Ruby error") : error;
 }
 
+// Ruby buffers $stdout when it is not a terminal and the VM never exits: what a script printed
+// is pushed out at the end of each call, so it reaches the report of the phase that printed it.
+void flushOutput() {
+    protect([] {
+        for (const char* name : {"$stdout", "$stderr"}) {
+            VALUE stream = rb_gv_get(name);
+            if (rb_respond_to(stream, rb_intern("flush"))) {
+                rb_funcall(stream, rb_intern("flush"), 0);
+            }
+        }
+    });
+}
+
 // How Ruby itself prints the exception: message, class and backtrace.
 std::string describe(VALUE error) {
     std::string text;
@@ -104,6 +118,7 @@ public:
                 rb_funcall(rb_mKernel, rb_intern("load"), 2, rb_str_new_cstr(path_.c_str()),
                            module_);
             });
+            flushOutput();
             if (!NIL_P(raised)) {
                 error = describe(raised);
                 return;
@@ -137,7 +152,7 @@ public:
     bool setup(int /*argc*/, char** /*argv*/) override {
         bool ok = true;
         call("setup", [&](ID method) {
-            VALUE param = rb_str_new_cstr(getParam().c_str());
+            VALUE param = rb_utf8_str_new_cstr(getParam().c_str());
             VALUE answer = rb_funcall(instance_, method, 1, param);
             ok = NIL_P(answer) || RTEST(answer);  // nothing returned: success
         });
@@ -175,6 +190,7 @@ private:
             Active active(this);
             stop_ = Stop::None;
             VALUE raised = protect([&] { body(method); });
+            flushOutput();
             // An assertion counts even when the script rescued it.
             if (stop_ != Stop::None &&
                 (NIL_P(raised) || RTEST(rb_obj_is_kind_of(raised, g_failure)) ||
@@ -265,12 +281,12 @@ VALUE assertCritical(VALUE, VALUE text) {
 
 VALUE getEnvironment(VALUE) {
     TestCase* test = activeTest();
-    return rb_str_new_cstr(test ? test->getEnvironment().c_str() : "");
+    return rb_utf8_str_new_cstr(test ? test->getEnvironment().c_str() : "");
 }
 
 VALUE getParam(VALUE) {
     TestCase* test = activeTest();
-    return rb_str_new_cstr(test ? test->getParam().c_str() : "");
+    return rb_utf8_str_new_cstr(test ? test->getParam().c_str() : "");
 }
 
 class LoadedRubyTest : public LoadedTest {

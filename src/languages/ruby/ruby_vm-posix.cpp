@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include <ruby.h>
+#include <ruby/encoding.h>
 
 namespace robottestingframework {
 namespace languages {
@@ -86,6 +87,9 @@ private:
         ruby_setup();
         ruby_init_loadpath();
         ruby_script("robottestingframework");
+        // Files and strings read by scripts are UTF-8, as with ruby itself on a UTF-8 system,
+        // whatever the runner's locale (it never calls setlocale: Ruby would see ASCII-8BIT).
+        rb_enc_set_default_external(rb_enc_from_encoding(rb_utf8_encoding()));
         // Ruby installs handlers for Ctrl-C, SIGTERM, SIGSEGV...: the host keeps its own.
         for (std::size_t i = 0; i < sizeof kHostSignals / sizeof kHostSignals[0]; ++i) {
             sigaction(kHostSignals[i], &saved[i], nullptr);
