@@ -1,26 +1,50 @@
 #include "fd_passing.h"
 
 #include <errno.h>
+#include <sys/mman.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/uio.h>
+#include <unistd.h>
 
+#include <cstdlib>
 #include <cstring>
 
 namespace robottestingframework {
 namespace platform {
 
-bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
-    if (data.size() > kMaxPacket || fds.size() > kMaxPassedFds) {
-        errno = EMSGSIZE;
-        return false;
-    }
-    // A zero-length packet cannot carry descriptors reliably; there is always one byte.
-    char dummy = 0;
-    iovec iov{};
-    iov.iov_base = data.empty() ? &dummy : const_cast<char*>(data.data());
-    iov.iov_len = data.empty() ? 1 : data.size();
+namespace {
 
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * kMaxPassedFds)];
+// Each packet starts with one byte: the message follows in the packet, or it is in the file
+// passed as the packet's last descriptor (a message longer than a packet can be).
+constexpr char kInline = 'i';
+constexpr char kInFile = 'f';
+
+// An unlinked file holding `data`, read from its start by the receiver.
+FileDescriptor fileHolding(const std::string& data) {
+#ifdef __linux__
+    FileDescriptor file(::memfd_create("rtf-message", MFD_CLOEXEC));
+#else
+    std::string path = (std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
+    path += "/rtf-message-XXXXXX";
+    FileDescriptor file(::mkstemp(&path[0]));
+    if (file.valid()) {
+        ::unlink(path.c_str());
+        setCloseOnExec(file.get());
+    }
+#endif
+    if (!file.valid() || !writeAll(file.get(), data)) {
+        return FileDescriptor();
+    }
+    return file;
+}
+
+bool sendPacket(int socket, const std::string& packet, const std::vector<int>& fds) {
+    iovec iov{};
+    iov.iov_base = const_cast<char*>(packet.data());
+    iov.iov_len = packet.size();
+
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
     msghdr msg{};
     msg.msg_iov = &iov;
     msg.msg_iovlen = 1;
@@ -43,6 +67,46 @@ bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fd
             return false;
         }
     }
+}
+
+// The whole content of `file`, from its start.
+bool readFile(int file, std::string& data) {
+    struct stat info {};
+    if (::fstat(file, &info) != 0) {
+        return false;
+    }
+    data.resize(static_cast<std::size_t>(info.st_size));
+    std::size_t done = 0;
+    while (done < data.size()) {
+        ssize_t n = ::pread(file, &data[done], data.size() - done, static_cast<off_t>(done));
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n <= 0) {
+            return false;
+        }
+        done += static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
+    if (fds.size() > kMaxPassedFds) {
+        errno = EMSGSIZE;
+        return false;
+    }
+    if (data.size() < kMaxPacket) {
+        return sendPacket(socket, kInline + data, fds);
+    }
+    FileDescriptor file = fileHolding(data);
+    if (!file.valid()) {
+        return false;
+    }
+    std::vector<int> withFile = fds;
+    withFile.push_back(file.get());
+    return sendPacket(socket, std::string(1, kInFile), withFile);
 }
 
 namespace {
@@ -74,7 +138,7 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     iovec iov{};
     iov.iov_base = &data[0];
     iov.iov_len = data.size();
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * kMaxPassedFds)];
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
     msghdr msg{};
     msg.msg_iov = &iov;
     msg.msg_iovlen = 1;
@@ -103,7 +167,18 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
         return false;
     }
     data.resize(static_cast<std::size_t>(n));
-    if ((msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) != 0) {
+    if ((msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) != 0 ||
+        (data[0] != kInline && data[0] != kInFile) || (data[0] == kInFile && fds.empty())) {
+        errno = EMSGSIZE;
+        return false;
+    }
+    if (data[0] == kInline) {
+        data.erase(0, 1);
+        return true;
+    }
+    FileDescriptor file = std::move(fds.back());
+    fds.pop_back();
+    if (!readFile(file.get(), data)) {
         errno = EMSGSIZE;
         return false;
     }

@@ -11,7 +11,8 @@
 namespace robottestingframework {
 namespace platform {
 
-// The largest message sendWithFds accepts.
+// The largest packet on the socket. A longer message travels in an anonymous file whose
+// descriptor goes with the packet, so a message may have any size.
 constexpr std::size_t kMaxPacket = 128 * 1024;
 // The most descriptors one message carries.
 constexpr std::size_t kMaxPassedFds = 8;

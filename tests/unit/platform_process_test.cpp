@@ -216,6 +216,27 @@ TEST(FdPassing, PacketsOfEverySizeArriveWhole) {
     }
 }
 
+// A suite's param or environment of any size reaches the fork server (it said "Message too
+// long" over 128 KiB).
+TEST(FdPassing, MessagesLongerThanAPacketArriveWholeWithTheirDescriptors) {
+    FileDescriptor a, b;
+    ASSERT_TRUE(makeSocketPair(a, b, true));
+    std::string data;
+    std::vector<FileDescriptor> fds;
+    for (std::size_t size : {kMaxPacket - 1, kMaxPacket + 1, std::size_t(8 * 1024 * 1024)}) {
+        std::string sent(size, 'x');
+        sent[size / 2] = '\0';
+        ASSERT_TRUE(sendWithFds(a.get(), sent, {a.get(), b.get()})) << size;
+        ASSERT_TRUE(receiveWithFds(b.get(), data, fds)) << size;
+        EXPECT_EQ(data, sent) << size;
+        EXPECT_EQ(fds.size(), 2u) << "only the descriptors the sender passed";
+    }
+    ASSERT_TRUE(sendWithFds(a.get(), "", {}));
+    ASSERT_TRUE(receiveWithFds(b.get(), data, fds));
+    EXPECT_EQ(data, "");
+    EXPECT_TRUE(fds.empty());
+}
+
 TEST(Deadline, NeverAndExpired) {
     Deadline never(0);
     EXPECT_TRUE(never.never());
