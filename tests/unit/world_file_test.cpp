@@ -226,6 +226,40 @@ TEST(WorldFile, ReportsAnUndefinedVariableWithItsLine) {
                 "environment variable 'RTF_WORLD_TEST_UNSET' is not set");
 }
 
+// Variables that expand each other ten times per level reach 100 MB after 8 levels.
+TEST(WorldFile, RefusesAnExpansionBombAtTheVariableThatCrossesTheCap) {
+    std::string text = "<world>\n<variable name=\"v0\">0123456789</variable>\n";
+    for (int level = 1; level <= 8; ++level) {
+        text += "<variable name=\"v" + std::to_string(level) + "\">";
+        for (int i = 0; i < 10; ++i) {
+            text += "${v" + std::to_string(level - 1) + "}";
+        }
+        text += "</variable>\n";
+    }
+    text += "<process name=\"p\" command=\"true\"/>\n</world>\n";
+    // v5 holds 10^6 bytes, v6 would hold 10^7: v6 (line 8) is the first over 1 MiB.
+    expectError(text, 8, "<variable name=\"v6\"> grows past 1 MiB");
+}
+
+TEST(WorldFile, RefusesManyLargeValuesThatTogetherPassTheTotalCap) {
+    std::string text =
+        "<world>\n<variable name=\"big\">" + std::string(512 * 1024, 'x') + "</variable>\n";
+    for (int i = 0; i < 40; ++i) {
+        text += "<env name=\"E" + std::to_string(i) + "\">${big}</env>\n";
+    }
+    text += "<process name=\"p\" command=\"true\"/>\n</world>\n";
+    // The variable and 31 copies of it (with the names) pass 16 MiB at the 31st <env>.
+    expectError(text, 33, "grow past 16 MiB together");
+}
+
+TEST(WorldFile, KeepsValuesJustUnderTheCap) {
+    Parsed parsed = parse("<world><variable name=\"v\">" + std::string(1024 * 1024 - 2, 'x') +
+                          "</variable><process name=\"p\" command=\"true\">"
+                          "<env name=\"E\">${v}ab</env></process></world>");
+    ASSERT_TRUE(parsed.ok) << parsed.error.substr(0, 300);
+    EXPECT_EQ(parsed.world.processes[0].environment[0].second.size(), 1024u * 1024u);
+}
+
 TEST(WorldFile, AcceptsA200CharacterNameAndGivesItAShortLogFile) {
     const std::string name(200, 'n');
     Parsed parsed =
