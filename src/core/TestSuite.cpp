@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <exception>
+#include <mutex>
+#include <string>
 
 #include <robottestingframework/Arguments.h>
 #include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResult.h>
 
 namespace robottestingframework {
@@ -29,6 +32,32 @@ bool guardedFixtureCall(Call call, std::string& why) {
     }
     return false;
 }
+
+// The last report made about `suite` while it listens: what a fixture said before its setup
+// returned false is the reason its tests are skipped.
+class LastReport : public TestListener {
+public:
+    LastReport(TestResult& result, const Test* suite) : result_(result), suite_(suite) {
+        result_.addListener(this);
+    }
+    ~LastReport() override { result_.removeListener(this); }
+    void addReport(const Test* test, TestMessage message) override {
+        if (test == suite_) {
+            std::lock_guard<std::mutex> lock(mutex_);
+            last_ = message.toString();
+        }
+    }
+    std::string text() const {
+        std::lock_guard<std::mutex> lock(mutex_);
+        return last_;
+    }
+
+private:
+    TestResult& result_;
+    const Test* suite_;
+    mutable std::mutex mutex_;
+    std::string last_;
+};
 
 }  // namespace
 
@@ -103,9 +132,13 @@ bool TestSuite::setupFixtures(TestResult& result) {
         ArgumentVector args(fixture->getName(), fixture->getParam());
         bool up = false;
         std::string why;
+        LastReport said(result, this);
         if (guardedFixtureCall([&] { up = fixture->setup(args.argc(), args.argv()); }, why) &&
             !up) {
             why = "setup returned false";
+            if (!said.text().empty()) {
+                why += " after reporting: " + said.text();
+            }
         }
         if (!up) {
             const TestMessage failure("fixture " + fixtureName(fixture, i) + " failed: " + why);

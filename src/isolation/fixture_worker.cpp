@@ -136,7 +136,8 @@ int runFixtureWorker(const WorkRequest& request, int channel) {
                 reply(writer, false, TestMessage("unknown call " + call.name));
             }
         } catch (...) {
-            reply(writer, false, TestMessage("fixture " + call.name + " threw", exceptionText()));
+            // The runner's suite says which fixture and which call; this is the reason.
+            reply(writer, false, TestMessage(exceptionText()));
         }
     }
     loaded.reset();

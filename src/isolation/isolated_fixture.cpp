@@ -5,8 +5,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <exception>
 #include <sstream>
 
+#include <robottestingframework/Exception.h>
 #include <robottestingframework/TestResult.h>
 
 #include "clock.h"
@@ -197,9 +199,7 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
             if (replied_) {
                 ok = reply_.flag;
                 if (!ok) {
-                    failure_ = reply_.message.getMessage().empty()
-                                   ? "fixture " + getName() + " " + name + " returned false"
-                                   : reply_.message.toString();
+                    failure_ = reply_.message.toString();  // empty: it returned false
                 }
             } else if (dead_) {
                 failure_ = "fixture " + getName() + " died in " + name + ": " +
@@ -225,8 +225,10 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
         inCall_ = false;
     }
     flush();
-    if (!ok && getResult() != nullptr) {
-        getResult()->addError(getOwner(), TestMessage(failure_));
+    // Why it failed goes to the suite with the exception, which names the fixture and the call
+    // and hands the reason on to the tests it skips.
+    if (!ok && !failure_.empty()) {
+        throw TestErrorException(TestMessage(failure_));
     }
     return ok;
 }
@@ -264,7 +266,12 @@ void IsolatedFixture::tearDown() {
     if (!worker_) {
         return;
     }
-    call("tearDown", "");
+    std::exception_ptr failed;
+    try {
+        call("tearDown", "");
+    } catch (...) {
+        failed = std::current_exception();
+    }
     {
         std::lock_guard<std::mutex> lock(mutex_);
         quitting_ = true;
@@ -281,6 +288,9 @@ void IsolatedFixture::tearDown() {
         kill();
     }
     flush();
+    if (failed) {
+        std::rethrow_exception(failed);
+    }
 }
 
 }  // namespace isolation

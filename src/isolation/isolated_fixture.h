@@ -1,7 +1,8 @@
 // The runner's handle on a fixture manager that lives in a worker process for the whole suite.
 // setup/check/tearDown are calls to the worker, each bounded in time; a worker that crashes or
-// hangs makes the call fail with the reason, and one that dies between calls, or reports a
-// collapse from any of its threads, collapses the fixture through the dispatcher.
+// hangs makes the call fail with the reason (a TestErrorException, which the suite reports
+// and hands on to the tests it skips), and one that dies between calls, or reports a collapse
+// from any of its threads, collapses the fixture through the dispatcher.
 #pragma once
 
 #include <condition_variable>
@@ -36,7 +37,7 @@ public:
     // A setup or check in progress fails as interrupted (the worker is stopped).
     void interruptCall() override;
 
-    // Why the last call failed (also sent to the result as an error about the suite).
+    // Why the last call failed (empty when it returned false without saying why).
     std::string failure() const { return failure_; }
 
 private:

@@ -187,7 +187,8 @@ struct Counts {
     std::size_t skipped = 0;
 };
 
-// The numbers of a suite's <testsuite> element; a failed fixture counts as one error more.
+// The numbers of a suite's <testsuite> element; a failed fixture counts as one error more,
+// but not as a test (tests= counts the suite's tests, which carry the fixture's reason).
 Counts countsOf(const SuiteRecord& suite) {
     Counts counts;
     counts.tests = suite.tests.size();
@@ -201,7 +202,6 @@ Counts countsOf(const SuiteRecord& suite) {
         }
     }
     if (suite.fixtureFailed) {
-        ++counts.tests;
         ++counts.errors;
     }
     return counts;

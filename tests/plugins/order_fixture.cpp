@@ -1,6 +1,8 @@
 // A fixture that appends "setup NAME", "check NAME", "teardown NAME" to the file given with
-// "--log FILE"; "--fail-setup" makes its set-up fail.
+// "--log FILE"; "--fail-setup" makes its set-up fail (after a report), "--throw-teardown" makes
+// its tear-down throw.
 #include <cstdio>
+#include <stdexcept>
 #include <string>
 
 #include <robottestingframework/Arguments.h>
@@ -15,6 +17,7 @@ public:
         Arguments::getOption(argc, argv, "--log", log_);
         Arguments::getOption(argc, argv, "--name", name_);
         note("setup");
+        throwInTearDown_ = Arguments::hasOption(argc, argv, "--throw-teardown");
         if (Arguments::hasOption(argc, argv, "--fail-setup")) {
             ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT("fixture " + name_ + " refuses to start");
             return false;
@@ -25,7 +28,12 @@ public:
         note("check");
         return true;
     }
-    void tearDown() override { note("teardown"); }
+    void tearDown() override {
+        note("teardown");
+        if (throwInTearDown_) {
+            throw std::runtime_error("the arm is stuck");
+        }
+    }
 
 private:
     void note(const std::string& what) {
@@ -37,6 +45,7 @@ private:
 
     std::string log_;
     std::string name_;
+    bool throwInTearDown_ = false;
 };
 
 ROBOTTESTINGFRAMEWORK_PREPARE_FIXTURE_PLUGIN(OrderFixture)

@@ -142,15 +142,14 @@ public:
 
     bool setup(int /*argc*/, char** /*argv*/) override {
         bool ok = true;
-        bool called =
-            call("setup", [&](const py::object& method) { ok = setupAnswer(method(getParam())); });
-        return called && ok;
+        call("setup", [&](const py::object& method) { ok = setupAnswer(method(getParam())); });
+        return ok;
     }
 
     bool check() override {
         bool ok = true;
-        bool called = call("check", [&](const py::object& method) { ok = setupAnswer(method()); });
-        return called && ok;
+        call("check", [&](const py::object& method) { ok = setupAnswer(method()); });
+        return ok;
     }
 
     void tearDown() override {
@@ -158,9 +157,10 @@ public:
     }
 
 private:
-    // A fixture's exception is reported with its traceback; the call then counts as failed.
+    // A fixture's exception is reported with its traceback and thrown on with its own line,
+    // so the suite fails (a tearDown too) and tells the tests it skips why.
     template <typename Body>
-    bool call(const char* name, Body body) {
+    void call(const char* name, Body body) {
         py::gil_scoped_acquire gil;
         CallerScope caller({nullptr, this});
         try {
@@ -169,15 +169,19 @@ private:
             if (!method.is_none()) {
                 body(method);
             }
-            return true;
         } catch (py::error_already_set& e) {
             try {
                 rethrow(e);
             } catch (const Exception& converted) {
-                Asserter::report(converted.message(), this);
+                const TestMessage& message = converted.message();
+                if (!message.getDetail().empty()) {
+                    Asserter::report(message, this);
+                }
+                throw TestErrorException(TestMessage(message.getMessage(), "",
+                                                     message.getSourceFileName(),
+                                                     message.getSourceLineNumber()));
             }
         }
-        return false;
     }
 
     std::unique_ptr<ScriptModule> script_;
