@@ -317,3 +317,25 @@ TEST(TestSuite, FixtureWatcherThreadReportsWhileTheTestReports) {
     EXPECT_EQ(r.test(0).events.size(), 201u);  // 200 reports and the interruption
     EXPECT_FALSE(suite.succeeded());
 }
+
+// A fixture that says why before its setup returns false: the skipped tests carry what it said.
+TEST(TestSuite, WhatAFixtureReportedBeforeFailingIsTheReasonOfTheSkippedTests) {
+    std::vector<std::string> log;
+    struct Reporting : LoggingFixture {
+        using LoggingFixture::LoggingFixture;
+        bool setup(int argc, char** argv) override {
+            LoggingFixture::setup(argc, argv);
+            ROBOTTESTINGFRAMEWORK_FIXTURE_REPORT("no robot on the bus");
+            return false;
+        }
+    } fixture("bus", log);
+    LambdaTest t("t");
+    TestSuite suite("s");
+    suite.addFixtureManager(&fixture);
+    suite.addTest(&t);
+    SuiteRun r;
+    suite.run(r.result);
+    ASSERT_EQ(r.suite().tests.size(), 1u);
+    EXPECT_EQ(r.test(0).reason()->message.getMessage(),
+              "fixture bus failed: setup returned false after reporting: no robot on the bus");
+}
