@@ -120,6 +120,23 @@ class TestCase:
     assert "Message too long" not in r.output, r
 
 
+def test_a_one_megabyte_fixture_param_reaches_the_fixture(tmp_path, isolation):
+    fixture = tmp_path / "world.py"
+    fixture.write_text("""import robottestingframework
+
+class FixtureManager:
+    def setup(self, param):
+        robottestingframework.testReport("fixture param length %d" % len(param))
+        return True
+""")
+    big = "y" * (1024 * 1024)
+    suite = suite_with(tmp_path, f'<fixture param="{big}">{fixture}</fixture>\n'
+                                 f'<test>{plugin("passing_test")}</test>')
+    r = run_isolated(isolation, "--suite", suite, "-v", cwd=tmp_path)
+    assert r.returncode == 0, r
+    assert f"fixture param length {len(big)}" in r.output, r
+
+
 # --- 7. Expansion bombs in world files ---------------------------------------------------------
 
 def test_a_world_file_expansion_bomb_is_refused_quickly_naming_where(tmp_path, marker):
