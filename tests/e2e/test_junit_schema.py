@@ -24,7 +24,7 @@ def report(tmp_path_factory):
   <test>{plugin("passing_test")}</test>
   <test>{plugin("failing_test")}</test>
   <test>{plugin("throw_runtime")}</test>
-  <test depends="FailingTest">{plugin("printing_test")}</test>
+  <test depends="failing_test">{plugin("printing_test")}</test>
 </suite>
 """)
     out = folder / "report.xml"
@@ -38,8 +38,14 @@ def test_schema_lies_in_the_repository():
     assert SCHEMA.resolve().is_relative_to(SOURCE_DIR.resolve()), SCHEMA
 
 
-def test_runner_report_with_every_state_validates(report):
+def test_runner_report_with_every_state_validates(report, tmp_path):
     validate_junit(report)
+    # The optional parts the runner does not write today are accepted too.
+    tree = ET.parse(report)
+    _add_properties(tree.getroot(), {"name": "robot", "value": "icubSim"})
+    with_properties = tmp_path / "properties.xml"
+    tree.write(with_properties, encoding="UTF-8", xml_declaration=True)
+    validate_junit(with_properties)
     root = ET.parse(report).getroot()
     cases = list(root.iter("testcase"))
     assert any(case.find("failure") is not None for case in cases), ET.tostring(root)
@@ -68,9 +74,14 @@ MUTATIONS = {
     "skipped and failed": lambda r: ET.SubElement(
         next(c for c in r.iter("testcase") if c.find("failure") is not None), "skipped"),
     "system-out before failure": lambda r: _move_output_first(r),
-    "property without value": lambda r: ET.SubElement(
-        ET.SubElement(_first(r, "testsuite"), "properties"), "property", name="x"),
+    "property without value": lambda r: _add_properties(r, {"name": "x"}),
 }
+
+
+def _add_properties(root, attributes):
+    properties = ET.Element("properties")
+    ET.SubElement(properties, "property", attributes)
+    _first(root, "testsuite").insert(0, properties)
 
 
 def _move_output_first(root):
