@@ -89,6 +89,8 @@ def run_external(build, runner):
     assert "answer.right" in tests.stdout and "answer.wrong" in tests.stdout
     assert (build / "answer-junit.xml").is_file(), "the JUNIT option wrote no report"
     check_rtf2_part(build / "rtf2", tests.stdout)
+    runners = [Path(line).resolve() for line in (build / "runners.txt").read_text().split()]
+    assert runners == [Path(runner).resolve()] * 2, runners
     # CONFIGURATIONS: the Release-only suite ran in neither configuration above; it is there
     # for Release.
     assert "rtf2.release_only" not in tests.stdout, tests.stdout
