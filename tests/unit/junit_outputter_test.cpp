@@ -89,7 +89,7 @@ struct MixedRun {
 
 }  // namespace
 
-TEST(JUnitOutputter, MixedRunValidatesAgainstTheJenkinsSchema) {
+TEST(JUnitOutputter, MixedRunValidatesAgainstTheJUnitSchema) {
     MixedRun run;
     const fs::path file = scratchDir() / "results.xml";
     JUnitOutputter out(run.collector, true);
