@@ -1,7 +1,8 @@
-# CTest helpers: register a C++ test plug-in, a script test or a whole suite as a CTest test.
-# Each test runs robottestingframework-testrunner; its exit status is the test's verdict
-# (0 passed; 1 something failed; 2 usage or configuration error).
+# CMake helpers: build a C++ test plug-in, and register a plug-in, a script test or a whole
+# suite as a CTest test. Each test runs robottestingframework-testrunner; its exit status is
+# the test's verdict (0 passed; 1 something failed; 2 usage or configuration error).
 #
+#   robottestingframework_add_plugin(name SOURCES file... [HEADERS file...] [OUTPUT_NAME n])
 #   robottestingframework_add_test(NAME name PLUGIN target_or_file
 #                                  [PARAM "..."] [ENVIRONMENT "..."] [REPETITION n]
 #                                  [TIMEOUT seconds] [JUNIT file] [RUNNER_ARGS ...]
@@ -12,6 +13,16 @@
 #                                   [ENVIRONMENT "..."] [TIMEOUT seconds] [JUNIT file]
 #                                   [RUNNER_ARGS ...] [TEST_ENVIRONMENT ...]
 #                                   [WORKING_DIRECTORY dir] [LABELS ...] [WILL_FAIL])
+#   robottestingframework_add_suite(NAME name                              (RTF 2.x's form)
+#       [RobotTestingFramework_FIXTURE target_or_file [param words...]]...
+#       RobotTestingFramework_TEST target_or_file TYPE type [ARGS param...]...
+#       [WORKING_DIRECTORY dir] [CONFIGURATIONS config...] [WEB_REPORTER] [WEB_PORT n]
+#       [DETAIL] [VERBOSE] [OUTPUT file] [OUTPUT_TYPE text|junit]
+#       [ENVIRONMENT "..."] [TIMEOUT seconds] [RUNNER_ARGS ...] [TEST_ENVIRONMENT ...]
+#       [LABELS ...] [WILL_FAIL])
+#
+# robottestingframework_add_plugin builds a MODULE library without the `lib` prefix, linked to
+# RobotTestingFramework::RTF and RTF_dll, as RTF 2.x's function did.
 #
 # PLUGIN is a shared-library target of this project (its file is used) or a file. Relative
 # SCRIPT and SUITE files (and PLUGIN files that exist there) are taken from the current source
@@ -21,8 +32,14 @@
 # JUNIT writes a JUnit XML report there (relative: in the current build folder); without it
 # (and without --output in RUNNER_ARGS) the runner writes no result file (--no-output).
 #
-# The runner is the imported target RobotTestingFramework::robottestingframework-testrunner
-# when it exists, else the file in RobotTestingFramework_TESTRUNNER.
+# RTF 2.x's suite form writes the suite file <build folder>/<name>.xml with file(GENERATE) (so
+# targets become their files) and runs it: one <fixture> per RobotTestingFramework_FIXTURE
+# (the words after it are its param), one <test> per value of ARGS (one without param when
+# there is no ARGS). OUTPUT (relative: in the current build folder) and OUTPUT_TYPE are the
+# runner's --output and --output-type; without them no result file is written.
+#
+# The runner is the imported target RobotTestingFramework::RTF_testrunner when it exists, else
+# the file in RobotTestingFramework_TESTRUNNER.
 
 include_guard(GLOBAL)
 
@@ -39,7 +56,9 @@ function(_robottestingframework_resolve_file file out)
 endfunction()
 
 function(_robottestingframework_runner out)
-    if(TARGET RobotTestingFramework::robottestingframework-testrunner)
+    if(TARGET RobotTestingFramework::RTF_testrunner)
+        set(${out} "$<TARGET_FILE:RobotTestingFramework::RTF_testrunner>" PARENT_SCOPE)
+    elseif(TARGET RobotTestingFramework::robottestingframework-testrunner)
         set(${out} "$<TARGET_FILE:RobotTestingFramework::robottestingframework-testrunner>"
             PARENT_SCOPE)
     elseif(RobotTestingFramework_TESTRUNNER)
@@ -102,6 +121,11 @@ function(_robottestingframework_add_runner_test caller file_keyword option)
     else()
         add_test(NAME "${arg_NAME}" COMMAND ${command})
     endif()
+    _robottestingframework_test_properties()
+endfunction()
+
+# The CTest properties every helper offers, from the caller's parsed arg_* variables.
+macro(_robottestingframework_test_properties)
     if(arg_TIMEOUT)
         set_property(TEST "${arg_NAME}" PROPERTY TIMEOUT "${arg_TIMEOUT}")
     endif()
@@ -114,7 +138,7 @@ function(_robottestingframework_add_runner_test caller file_keyword option)
     if(arg_WILL_FAIL)
         set_property(TEST "${arg_NAME}" PROPERTY WILL_FAIL TRUE)
     endif()
-endfunction()
+endmacro()
 
 # A C++ test plug-in (a target or a shared-library file), run with --test.
 function(robottestingframework_add_test)
@@ -127,7 +151,238 @@ function(robottestingframework_add_script_test)
                                            ${ARGN})
 endfunction()
 
-# A suite file, run with --suite.
+# A suite: a file run with --suite, or RTF 2.x's form that describes the suite in place.
 function(robottestingframework_add_suite)
-    _robottestingframework_add_runner_test(robottestingframework_add_suite SUITE --suite ${ARGN})
+    if("SUITE" IN_LIST ARGN)
+        _robottestingframework_add_runner_test(robottestingframework_add_suite SUITE --suite
+                                               ${ARGN})
+    else()
+        _robottestingframework_add_generated_suite(${ARGN})
+    endif()
+endfunction()
+
+# A C++ test or fixture plug-in, as RTF 2.x built them: a module without the `lib` prefix.
+function(robottestingframework_add_plugin name)
+    cmake_parse_arguments(PARSE_ARGV 1 arg "" "OUTPUT_NAME" "SOURCES;HEADERS")
+    if(arg_UNPARSED_ARGUMENTS)
+        message(FATAL_ERROR "robottestingframework_add_plugin(${name}): unknown arguments: "
+                            "${arg_UNPARSED_ARGUMENTS}")
+    endif()
+    if(NOT arg_SOURCES)
+        message(FATAL_ERROR "robottestingframework_add_plugin(${name}): SOURCES is required")
+    endif()
+    add_library(${name} MODULE ${arg_SOURCES} ${arg_HEADERS})
+    set_target_properties(${name} PROPERTIES PREFIX "")
+    if(arg_OUTPUT_NAME)
+        set_target_properties(${name} PROPERTIES OUTPUT_NAME "${arg_OUTPUT_NAME}")
+    endif()
+    # The plain signature, as RTF 2.x's: its users add libraries with plain calls too.
+    target_link_libraries(${name} RobotTestingFramework::RTF RobotTestingFramework::RTF_dll)
+endfunction()
+
+function(_robottestingframework_xml_escape text out)
+    string(REPLACE "&" "&amp;" text "${text}")
+    string(REPLACE "<" "&lt;" text "${text}")
+    string(REPLACE ">" "&gt;" text "${text}")
+    string(REPLACE "\"" "&quot;" text "${text}")
+    set(${out} "${text}" PARENT_SCOPE)
+endfunction()
+
+# A target becomes its file (a generator expression); a file is resolved as the helpers do.
+function(_robottestingframework_plugin_file plugin out)
+    if(TARGET "${plugin}")
+        set(${out} "$<TARGET_FILE:${plugin}>" PARENT_SCOPE)
+    else()
+        _robottestingframework_resolve_file("${plugin}" file)
+        _robottestingframework_xml_escape("${file}" file)
+        set(${out} "${file}" PARENT_SCOPE)
+    endif()
+endfunction()
+
+# The suite file's elements for one RobotTestingFramework_FIXTURE (kind FIXTURE: the words
+# after it are its param) or RobotTestingFramework_TEST (kind TEST: a TYPE, one <test> per ARGS
+# value), in `out`.
+function(_robottestingframework_suite_elements where kind name file type words args out)
+    set(elements "")
+    if(kind STREQUAL "FIXTURE")
+        string(JOIN " " param ${words})
+        _robottestingframework_xml_escape("${param}" param)
+        if(param STREQUAL "")
+            set(elements "  <fixture>${file}</fixture>\n")
+        else()
+            set(elements "  <fixture param=\"${param}\">${file}</fixture>\n")
+        endif()
+    else()
+        if(type STREQUAL "")
+            message(FATAL_ERROR "${where}: RobotTestingFramework_TEST ${name} has no TYPE "
+                                "(e.g. TYPE dll)")
+        endif()
+        if(words)
+            message(FATAL_ERROR "${where}: RobotTestingFramework_TEST ${name}: unexpected "
+                                "${words} (the tests' params go after ARGS)")
+        endif()
+        _robottestingframework_xml_escape("${type}" type)
+        if(NOT args)
+            set(elements "  <test type=\"${type}\">${file}</test>\n")
+        endif()
+        foreach(param IN LISTS args)
+            _robottestingframework_xml_escape("${param}" param)
+            string(APPEND elements "  <test type=\"${type}\" param=\"${param}\">${file}</test>\n")
+        endforeach()
+    endif()
+    set(${out} "${elements}" PARENT_SCOPE)
+endfunction()
+
+# RTF 2.x's form of robottestingframework_add_suite. The fixture and test groups repeat, so
+# the arguments are read one by one rather than with cmake_parse_arguments.
+function(_robottestingframework_add_generated_suite)
+    set(caller robottestingframework_add_suite)
+    set(flags WEB_REPORTER DETAIL VERBOSE WILL_FAIL)
+    set(one NAME WORKING_DIRECTORY WEB_PORT OUTPUT OUTPUT_TYPE ENVIRONMENT TIMEOUT)
+    set(multi CONFIGURATIONS RUNNER_ARGS TEST_ENVIRONMENT LABELS)
+    set(groups RobotTestingFramework_FIXTURE RobotTestingFramework_TEST)
+    set(keywords ${flags} ${one} ${multi} ${groups})
+
+    set(FIXTURE_elements "")
+    set(TEST_elements "")
+    set(mode "")        # the keyword whose values come next
+    set(group_kind "")  # FIXTURE or TEST while inside a group
+    set(group_file "")
+    set(group_words "")
+    set(group_type "")
+    set(group_args "")
+    set(arguments ${ARGN})
+    list(APPEND arguments "<end>")  # closes the last group
+    foreach(word IN LISTS arguments)
+        set(keyword "")
+        if(word IN_LIST keywords OR word STREQUAL "<end>")
+            set(keyword "${word}")
+        elseif(group_kind STREQUAL "TEST" AND (word STREQUAL "TYPE" OR word STREQUAL "ARGS"))
+            set(keyword "${word}")
+        endif()
+
+        if(keyword AND NOT keyword STREQUAL "TYPE" AND NOT keyword STREQUAL "ARGS")
+            if(mode IN_LIST one OR mode STREQUAL "TYPE" OR mode STREQUAL "GROUP_FILE")
+                if(mode STREQUAL "GROUP_FILE")
+                    message(FATAL_ERROR "${caller}(${arg_NAME}): ${group_keyword} needs a "
+                                        "target or file")
+                endif()
+                message(FATAL_ERROR "${caller}(${arg_NAME}): ${mode} needs a value")
+            endif()
+            # A group ends at the next keyword of the function.
+            if(group_kind)
+                _robottestingframework_suite_elements("${caller}(${arg_NAME})" ${group_kind}
+                    "${group_name}" "${group_file}" "${group_type}" "${group_words}"
+                    "${group_args}" elements)
+                string(APPEND ${group_kind}_elements "${elements}")
+            endif()
+            set(group_kind "")
+            set(mode "${keyword}")
+            if(keyword IN_LIST flags)
+                set(arg_${keyword} TRUE)
+                set(mode "")
+            elseif(keyword IN_LIST groups)
+                string(REPLACE "RobotTestingFramework_" "" group_kind "${keyword}")
+                set(group_keyword "${keyword}")
+                set(mode "GROUP_FILE")
+                set(group_words "")
+                set(group_type "")
+                set(group_args "")
+            endif()
+        elseif(keyword AND mode STREQUAL "GROUP_FILE")
+            message(FATAL_ERROR "${caller}(${arg_NAME}): RobotTestingFramework_TEST needs a "
+                                "target or file before ${keyword}")
+        elseif(keyword STREQUAL "TYPE")
+            set(mode "TYPE")
+        elseif(keyword STREQUAL "ARGS")
+            set(mode "ARGS")
+        elseif(mode STREQUAL "GROUP_FILE")
+            set(group_name "${word}")
+            _robottestingframework_plugin_file("${word}" group_file)
+            set(mode "GROUP_WORDS")
+        elseif(mode STREQUAL "GROUP_WORDS")
+            list(APPEND group_words "${word}")
+        elseif(mode STREQUAL "TYPE")
+            set(group_type "${word}")
+            set(mode "GROUP_WORDS")
+        elseif(mode STREQUAL "ARGS")
+            list(APPEND group_args "${word}")
+        elseif(mode IN_LIST one)
+            set(arg_${mode} "${word}")
+            set(mode "")
+        elseif(mode IN_LIST multi)
+            list(APPEND arg_${mode} "${word}")
+        else()
+            message(FATAL_ERROR "${caller}(${arg_NAME}): unexpected argument \"${word}\"")
+        endif()
+    endforeach()
+
+    if(NOT arg_NAME)
+        message(FATAL_ERROR "${caller}: NAME is required (NAME name)")
+    endif()
+    if(TEST_elements STREQUAL "")
+        message(FATAL_ERROR "${caller}(${arg_NAME}): no RobotTestingFramework_TEST (or SUITE "
+                            "file.xml) given")
+    endif()
+
+    # One suite file per configuration with multi-configuration generators.
+    string(REGEX REPLACE "[^A-Za-z0-9_.-]" "_" file_name "${arg_NAME}")
+    get_property(multi_config GLOBAL PROPERTY GENERATOR_IS_MULTI_CONFIG)
+    if(multi_config)
+        set(suite_file "${CMAKE_CURRENT_BINARY_DIR}/${file_name}-$<CONFIG>.xml")
+    else()
+        set(suite_file "${CMAKE_CURRENT_BINARY_DIR}/${file_name}.xml")
+    endif()
+    _robottestingframework_xml_escape("${arg_NAME}" suite_name)
+    string(CONCAT content "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                  "<suite name=\"${suite_name}\">\n${FIXTURE_elements}${TEST_elements}</suite>\n")
+    file(GENERATE OUTPUT "${suite_file}" CONTENT "${content}")
+
+    _robottestingframework_runner(runner)
+    set(command "${runner}" --suite "${suite_file}")
+    if(DEFINED arg_ENVIRONMENT)
+        list(APPEND command --environment "${arg_ENVIRONMENT}")
+    endif()
+    if(arg_WEB_REPORTER)
+        list(APPEND command --web-reporter)
+    endif()
+    if(arg_WEB_PORT)
+        list(APPEND command --web-port "${arg_WEB_PORT}")
+    endif()
+    if(arg_DETAIL)
+        list(APPEND command --detail)
+    endif()
+    if(arg_VERBOSE)
+        list(APPEND command --verbose)
+    endif()
+    if(arg_OUTPUT_TYPE AND NOT arg_OUTPUT)
+        # The runner's default file would land in the working folder, maybe the sources.
+        if(arg_OUTPUT_TYPE STREQUAL "junit")
+            set(arg_OUTPUT "${file_name}-result.xml")
+        else()
+            set(arg_OUTPUT "${file_name}-result.txt")
+        endif()
+    endif()
+    if(arg_OUTPUT)
+        if(NOT IS_ABSOLUTE "${arg_OUTPUT}")
+            set(arg_OUTPUT "${CMAKE_CURRENT_BINARY_DIR}/${arg_OUTPUT}")
+        endif()
+        list(APPEND command --output "${arg_OUTPUT}")
+        if(arg_OUTPUT_TYPE)
+            list(APPEND command --output-type "${arg_OUTPUT_TYPE}")
+        endif()
+    elseif(NOT "-o" IN_LIST arg_RUNNER_ARGS AND NOT "--output" IN_LIST arg_RUNNER_ARGS)
+        list(APPEND command --no-output)
+    endif()
+    list(APPEND command ${arg_RUNNER_ARGS})
+
+    set(options "")
+    if(arg_WORKING_DIRECTORY)
+        list(APPEND options WORKING_DIRECTORY "${arg_WORKING_DIRECTORY}")
+    endif()
+    if(arg_CONFIGURATIONS)
+        list(APPEND options CONFIGURATIONS ${arg_CONFIGURATIONS})
+    endif()
+    add_test(NAME "${arg_NAME}" COMMAND ${command} ${options})
+    _robottestingframework_test_properties()
 endfunction()

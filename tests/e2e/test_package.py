@@ -1,15 +1,18 @@
 """The CMake package and pkg-config file, used the way another project uses them: install the
 build tree into a prefix, check the layout, then build and run an external project
-(external_project/) against the install tree and against the build tree."""
+(external_project/, with rtf2/ written as for RTF 2.x) against the install tree and against the
+build tree; bad calls of the CMake functions stop CMake with a message naming the argument."""
 import os
 import re
 import shutil
+import socket
 import subprocess
+import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
 
-from conftest import BUILD_DIR, SOURCE_DIR
+from conftest import BUILD_DIR, SOURCE_DIR, validate_junit
 
 EXTERNAL = Path(__file__).parent / "external_project"
 
@@ -46,10 +49,17 @@ def prefix(tmp_path_factory):
     return prefix
 
 
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
 def configure_and_build(build, package_option):
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
     configured = check(["cmake", "-S", EXTERNAL, "-B", build, *generator, "-Wdev", package_option,
-                        "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"], timeout=120)
+                        "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON",
+                        f"-DWEB_PORT={free_port()}"], timeout=120)
     assert "CMake Warning" not in configured.stdout + configured.stderr, configured.stderr
     check(["cmake", "--build", build], timeout=300)
     values = dict(line.split("=", 1) for line in
@@ -73,11 +83,64 @@ def run_external(build, runner):
     own = run([build / "own_main"], 60)
     assert own.returncode == 0, own.stdout + own.stderr
 
-    tests = check(["ctest", "--test-dir", build, "--output-on-failure", "--timeout", "120"],
-                  timeout=300)
+    tests = check(["ctest", "--test-dir", build, "--output-on-failure", "--timeout", "120",
+                   "-C", "Debug"], timeout=300)
     assert "100% tests passed" in tests.stdout, tests.stdout
     assert "answer.right" in tests.stdout and "answer.wrong" in tests.stdout
     assert (build / "answer-junit.xml").is_file(), "the JUNIT option wrote no report"
+    check_rtf2_part(build / "rtf2", tests.stdout)
+    runners = [Path(line).resolve() for line in (build / "runners.txt").read_text().split()]
+    assert runners == [Path(runner).resolve()] * 2, runners
+    # CONFIGURATIONS: the Release-only suite ran in neither configuration above; it is there
+    # for Release.
+    assert "rtf2.release_only" not in tests.stdout, tests.stdout
+    release = check(["ctest", "--test-dir", build, "-N", "-C", "Release"], timeout=60)
+    assert "rtf2.release_only" in release.stdout, release.stdout
+
+
+def check_rtf2_part(build, ctest_output):
+    """What external_project/rtf2/ (RTF 2.x's functions and variables) built and ran."""
+    # The suites ran through CTest: the passing one (with WEB_REPORTER, which must neither
+    # hang nor fail the test) and the failing one (WILL_FAIL).
+    assert "rtf2.suite " in ctest_output and "rtf2.suite_fails" in ctest_output, ctest_output
+
+    # robottestingframework_add_plugin: modules without the lib prefix, OUTPUT_NAME honoured.
+    assert (build / "rtf2_answer.so").is_file(), sorted(p.name for p in build.iterdir())
+    assert (build / "world_fixture.so").is_file(), sorted(p.name for p in build.iterdir())
+    assert not list(build.glob("lib*.so")), sorted(p.name for p in build.iterdir())
+
+    # The generated suite: the fixture with its param words, one <test> per ARGS value.
+    suite = ET.parse(build / "rtf2.suite.xml").getroot()
+    assert suite.tag == "suite" and suite.get("name") == "rtf2.suite", ET.tostring(suite)
+    fixtures = suite.findall("fixture")
+    assert [f.get("param") for f in fixtures] == ["--world ready"], ET.tostring(suite)
+    assert Path(fixtures[0].text) == (build / "world_fixture.so"), ET.tostring(suite)
+    tests = suite.findall("test")
+    assert [(t.get("type"), t.get("param")) for t in tests] == [("dll", "--answer 42")] * 2
+    assert all(Path(t.text) == build / "rtf2_answer.so" for t in tests), ET.tostring(suite)
+
+    # OUTPUT / OUTPUT_TYPE: a JUnit report of both tests; without OUTPUT the report is named
+    # after the suite, in the build folder.
+    report = build / "rtf2-suite.xml"
+    validate_junit(report)
+    cases = list(ET.parse(report).getroot().iter("testcase"))
+    assert len(cases) == 2 and all(c.find("failure") is None for c in cases), report.read_text()
+    failing = build / "rtf2.suite_fails-result.xml"
+    validate_junit(failing)
+    cases = list(ET.parse(failing).getroot().iter("testcase"))
+    assert [c.find("failure") is not None for c in cases] == [False, True], failing.read_text()
+
+    # The package's RTF 2.x variables.
+    values = dict(line.split("=", 1) for line in
+                  (build / "package.txt").read_text().splitlines() if "=" in line)
+    includes = [Path(d) for d in values["include_dirs"].split(";") if d]
+    assert any((d / "robottestingframework" / "TestCase.h").is_file() for d in includes), values
+    assert len(includes) == len(set(includes)), values
+    libraries = values["libraries"].split(";")
+    assert {"RobotTestingFramework::RTF", "RobotTestingFramework::RTF_dll"} <= set(libraries)
+    assert values["dll_found"] == "TRUE", values
+    assert values["runner_target"] == "YES", values
+    assert Path(values["runner"]).is_file(), values
 
 
 def test_install_layout(prefix):
@@ -223,3 +286,43 @@ def test_pkg_config(prefix, tmp_path):
     check(["c++", "-std=c++17", EXTERNAL / "own_main.cpp", "-o", program, *flags], timeout=120)
     result = run([program], 60, env={"LD_LIBRARY_PATH": str(prefix / LIBDIR)})
     assert result.returncode == 0, result.stdout + result.stderr
+
+
+# Bad calls: CMake stops, and the message names the argument that is wrong.
+BAD_CALLS = {
+    "test without TYPE": ("robottestingframework_add_suite(NAME s "
+                          "RobotTestingFramework_TEST t.so ARGS \"--x 1\")",
+                          ["RobotTestingFramework_TEST t.so has no TYPE"]),
+    "suite without NAME": ("robottestingframework_add_suite("
+                           "RobotTestingFramework_TEST t.so TYPE dll)", ["NAME is required"]),
+    "suite without tests": ("robottestingframework_add_suite(NAME s WEB_REPORTER)",
+                            ["no RobotTestingFramework_TEST"]),
+    "option without value": ("robottestingframework_add_suite(NAME s "
+                             "RobotTestingFramework_TEST t.so TYPE dll WEB_PORT)",
+                             ["WEB_PORT needs a value"]),
+    "unknown argument": ("robottestingframework_add_suite(NAME s COLOUR red "
+                         "RobotTestingFramework_TEST t.so TYPE dll)",
+                         ["unexpected argument \"COLOUR\""]),
+    "plugin without sources": ("robottestingframework_add_plugin(p HEADERS p.h)",
+                               ["robottestingframework_add_plugin(p)", "SOURCES is required"]),
+}
+
+
+@pytest.mark.parametrize("case", sorted(BAD_CALLS))
+def test_bad_call_stops_cmake_naming_the_argument(tmp_path, case):
+    call, expected = BAD_CALLS[case]
+    source = tmp_path / "src"
+    source.mkdir()
+    (source / "CMakeLists.txt").write_text(f"""cmake_minimum_required(VERSION 3.16)
+project(bad LANGUAGES CXX)
+find_package(RobotTestingFramework REQUIRED)
+enable_testing()
+{call}
+""")
+    result = run(["cmake", "-S", source, "-B", tmp_path / "build",
+                  f"-DRobotTestingFramework_DIR={BUILD_DIR}"], 120)
+    assert result.returncode != 0, result.stdout + result.stderr
+    message = " ".join((result.stdout + result.stderr).split())
+    for part in expected:
+        assert part in message, message
+    assert "CMakeLists.txt:5" in message, message

@@ -1,4 +1,4 @@
-"""Result files: text and JUnit (valid against the Jenkins schema), what tests print."""
+"""Result files: text and JUnit (valid against schemas/junit.xsd), what tests print."""
 import xml.etree.ElementTree as ET
 
 from conftest import plugin, run_runner, validate_junit

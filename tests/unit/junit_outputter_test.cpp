@@ -24,7 +24,7 @@ bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;
 }
 
-// xmllint's verdict on `file` against the Jenkins JUnit schema; its messages go to `log`.
+// xmllint's verdict on `file` against the project's JUnit schema; its messages go to `log`.
 bool validates(const fs::path& file) {
     const fs::path log = file.string() + ".xmllint.log";
     const std::string command = "xmllint --noout --schema '" + std::string(RTF_JUNIT_SCHEMA) +
@@ -89,7 +89,7 @@ struct MixedRun {
 
 }  // namespace
 
-TEST(JUnitOutputter, MixedRunValidatesAgainstTheJenkinsSchema) {
+TEST(JUnitOutputter, MixedRunValidatesAgainstTheJUnitSchema) {
     MixedRun run;
     const fs::path file = scratchDir() / "results.xml";
     JUnitOutputter out(run.collector, true);
