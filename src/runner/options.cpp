@@ -120,7 +120,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_option("--repetition", options.repetition,
                    "Run each test N times (a test's own repetition wins)")
         ->type_name("N")
-        ->check(numberRule(checkRepetition, "N"));
+        ->check(numberRule(checkRepetition, "from 1 to " + std::to_string(maxRepetition)));
     takeAll(app.add_option("-o,--output", outputs,
                            "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); "
                            "repeatable. Default: result.txt")
@@ -148,7 +148,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
                    "and a test's timeout=\"...\" win (default: none)")
         ->type_name("SECONDS")
-        ->check(numberRule(checkSeconds, "SECONDS"));
+        ->check(numberRule(checkSeconds, "from 0 (no limit) to " +
+                                             std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
     takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
