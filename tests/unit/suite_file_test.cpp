@@ -178,3 +178,15 @@ TEST(SuiteFile, MissingFileIsAnErrorNamingIt) {
             << e.what();
     }
 }
+
+TEST(SuiteFile, OnlyARegularFileIsReadAsASuite) {
+    std::vector<std::string> warnings;
+    try {
+        readSuiteFile("/dev/zero", warnings);
+        FAIL() << "a device was read as a suite";
+    } catch (const SuiteFileError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "/dev/zero: is a character device, not a suite file (a suite file is a "
+                  "regular file)");
+    }
+}
