@@ -7,6 +7,7 @@
 #include "suite_file.h"
 
 using robottestingframework::runner::parseSuite;
+using robottestingframework::runner::readSuiteFile;
 using robottestingframework::runner::SuiteFileError;
 using robottestingframework::runner::SuiteSpec;
 
