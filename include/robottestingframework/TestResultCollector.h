@@ -69,6 +69,10 @@ public:
     // Keeps check events in the records only when true (the outputs show them only verbose).
     void setKeepChecks(bool keep) { keepChecks_ = keep; }
 
+    // Ends the tests and suites still open, each open test interrupted with `why`: for the
+    // outputs of a run cut short. The collector must receive no more events meanwhile.
+    void interruptOpen(const TestMessage& why);
+
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;
     void addFailure(const Test* test, TestMessage msg) override;

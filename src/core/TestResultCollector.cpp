@@ -295,6 +295,24 @@ void TestResultCollector::endTestSuite(const TestSuite* suite) {
     openSuites_.pop_back();
 }
 
+void TestResultCollector::interruptOpen(const TestMessage& why) {
+    while (!openTests_.empty()) {
+        const std::size_t open = openTests_.size();
+        const Test* test = openTests_.back().test;
+        addInterrupted(test, why);
+        endTest(test);
+        if (openTests_.size() == open) {
+            openTests_.pop_back();  // never left open for ever
+        }
+    }
+    while (!openSuites_.empty()) {
+        endTestSuite(nullptr);
+    }
+    if (end_ < 0) {
+        endTestRunner();
+    }
+}
+
 void TestResultCollector::startTestRunner() {
     start_ = now();
     end_ = -1;

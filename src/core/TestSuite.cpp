@@ -261,7 +261,14 @@ void TestSuite::run(TestResult& result) {
     if (interrupted_) {
         stopped(0);
     } else if (!setupFixtures(result)) {
-        reportRemaining(result, 0, fixtureFailure(), false);
+        // A set-up cut short by Ctrl-C: the tests were interrupted, not skipped for a reason
+        // of their own.
+        if (interrupted_) {
+            successful_ = false;
+            reportRemaining(result, 0, TestMessage("interrupted"), true);
+        } else {
+            reportRemaining(result, 0, fixtureFailure(), false);
+        }
     } else {
         for (std::size_t i = 0; i < tests_.size(); ++i) {
             Test* test = tests_[i];

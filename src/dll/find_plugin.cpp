@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include "shared_library.h"
 
@@ -15,6 +16,32 @@ namespace {
 bool isFile(const std::string& path) {
     struct stat info {};
     return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+}
+
+// What `path` is when it exists but is no file a plug-in can be read from; empty otherwise.
+std::string whatElse(const std::string& path) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode)) {
+        return {};
+    }
+    const char* kind = S_ISDIR(info.st_mode)    ? "a folder"
+                       : S_ISFIFO(info.st_mode) ? "a FIFO (named pipe)"
+                       : S_ISCHR(info.st_mode)  ? "a character device"
+                       : S_ISBLK(info.st_mode)  ? "a block device"
+                       : S_ISSOCK(info.st_mode) ? "a socket"
+                                                : "not a regular file";
+    return std::string("is ") + kind + ", not a plug-in file: " + path;
+}
+
+// The dynamic loader looks a bare "libfoo.so" up on the library path, not in the current
+// folder: what was found is handed on as an absolute path.
+std::string absolute(const std::string& path) {
+    if (path.empty() || path[0] == '/') {
+        return path;
+    }
+    std::error_code error;
+    std::filesystem::path full = std::filesystem::absolute(path, error);
+    return error ? path : full.lexically_normal().string();
 }
 
 bool startsWith(const std::string& text, const std::string& prefix) {
@@ -84,11 +111,17 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
         tried.push_back(name);
         for (const auto& path : tried) {
             if (isFile(path)) {
-                return path;
+                return absolute(path);
             }
         }
         if (searched != nullptr) {
             *searched = "no such file: " + list(tried);
+            for (const auto& path : tried) {
+                if (!whatElse(path).empty()) {
+                    *searched = whatElse(path);
+                    break;
+                }
+            }
         }
         return {};
     }
@@ -103,16 +136,20 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
         }
     }
     const auto names = spellings(name);
+    std::string other;  // the first candidate that exists but is no file
     for (const auto& folder : folders) {
         for (const auto& candidate : names) {
             std::string path = join(folder, candidate);
             if (isFile(path)) {
-                return path;
+                return absolute(path);
+            }
+            if (other.empty()) {
+                other = whatElse(path);
             }
         }
     }
     if (searched != nullptr) {
-        *searched = "not found as " + list(names) + " in " + list(folders);
+        *searched = !other.empty() ? other : "not found as " + list(names) + " in " + list(folders);
     }
     return {};
 }

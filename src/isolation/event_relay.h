@@ -37,8 +37,10 @@ public:
     // "repetition k/N" while a test with several repetitions runs, else empty.
     const std::string& repetition() const { return repetition_; }
 
-private:
+    // Sends the one startTest now (else the first event sends it).
     void start();
+
+private:
     void note(ResultEvent::Kind kind, const TestMessage& message);
 
     Test& self_;

@@ -105,6 +105,9 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
         return relay.status();
     }
 
+    // The test starts with its worker (as in-process): one that hangs while loading and times
+    // out reports the time it took, not the moment its timeout was reported.
+    relay.start();
     enum class Stop { None, Timeout, Interrupt, Garbage } why = Stop::None;
     platform::Deadline deadline(spec.timeout);
     std::vector<WireRecord> records;

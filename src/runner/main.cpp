@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <string>
 #include <thread>
@@ -20,6 +21,7 @@
 #include "isolated_executor.h"
 #include "options.h"
 #include "output_capture.h"
+#include "output_paths.h"
 #include "process_tree.h"
 #include "run_gate.h"
 #include "run_plan.h"
@@ -46,9 +48,12 @@ int interruptedBy(int signal) {
 // test is stopped, tear-downs run, outputs are written); a second one ends the runner at once.
 class InterruptWatcher {
 public:
-    // `console`: where to say so (stderr is captured while tests run).
-    InterruptWatcher(RunPlan& plan, std::FILE* console)
-        : signals_({SIGINT, SIGTERM}), thread_([this, &plan, console] { watch(plan, console); }) {}
+    // `console`: where to say so (stderr is captured while tests run). `quit`: what to do
+    // before quitting at once (write what is known).
+    InterruptWatcher(RunPlan& plan, std::FILE* console, std::function<void()> quit)
+        : signals_({SIGINT, SIGTERM}),
+          quit_(std::move(quit)),
+          thread_([this, &plan, console] { watch(plan, console); }) {}
     ~InterruptWatcher() {
         done_ = true;
         signals_.wake();  // or the run would end up to one poll period (200 ms) late
@@ -69,9 +74,13 @@ private:
                              program);
                 std::fflush(console);
             } else if (signal != 0) {
+                std::fprintf(console, "%s: interrupted again; writing what is known and quitting\n",
+                             program);
+                std::fflush(console);
                 // Whatever the run started goes with us: the fork server kills its workers when
                 // we are gone; what the runner itself started (in-process tests) is killed here.
                 platform::killDescendants(::getpid());
+                quit_();
                 ::_exit(interruptedBy(received_));
             }
             if (received_ != 0) {
@@ -84,6 +93,7 @@ private:
     }
 
     platform::SignalPipe signals_;
+    std::function<void()> quit_;
     std::atomic<bool> done_{false};
     std::atomic<int> received_{0};
     std::thread thread_;
@@ -95,8 +105,9 @@ bool wantColours() {
            !(term != nullptr && std::string(term) == "dumb");
 }
 
-// Writes every requested output; false when one could not be written (each is reported).
-bool writeOutputs(const Options& options, TestResultCollector& collector) {
+// Writes every requested output; false when one could not be written (each is reported on
+// `console`).
+bool writeOutputs(const Options& options, TestResultCollector& collector, std::FILE* console) {
     bool ok = true;
     for (const auto& output : options.outputs) {
         TestMessage error;
@@ -108,7 +119,7 @@ bool writeOutputs(const Options& options, TestResultCollector& collector) {
                           .write(output.file, !options.noSummary, &error);
         }
         if (!written) {
-            std::fprintf(stderr, "%s: cannot write the %s output %s: %s\n", program,
+            std::fprintf(console, "%s: cannot write the %s output %s: %s\n", program,
                          output.type.c_str(), output.file.c_str(), error.toString().c_str());
             ok = false;
         }
@@ -158,10 +169,17 @@ int main(int argc, char** argv) {
     for (const auto& warning : warnings) {
         std::fprintf(stderr, "%s\n", warning.c_str());
     }
-    const std::string unknown = findUnknownDependency(suites);
-    if (!unknown.empty()) {
-        std::fprintf(stderr, "%s: %s\n", program, unknown.c_str());
-        return configurationError;
+    const Overrides overrides{options.param, options.environment, options.repetition,
+                              options.timeout, options.variables};
+    for (const auto& warning : unreadVariables(suites, overrides)) {
+        std::fprintf(stderr, "%s: %s\n", program, warning.c_str());
+    }
+    for (const std::string& problem : {findUnknownDependency(suites), findDependencyCycle(suites),
+                                       checkOutputPaths(options.outputs, suites)}) {
+        if (!problem.empty()) {
+            std::fprintf(stderr, "%s: %s\n", program, problem.c_str());
+            return configurationError;
+        }
     }
 
     // The fork server is started here, on the main thread, which lives for the whole run: the
@@ -181,8 +199,6 @@ int main(int argc, char** argv) {
     }
     RunPlan plan(*executor);
     plan.gate().setFailFast(options.failFast);
-    const Overrides overrides{options.param, options.environment, options.repetition,
-                              options.timeout};
     for (auto& suite : suites) {
         applyOverrides(suite, overrides);
         plan.addSuite(std::move(suite));
@@ -219,7 +235,14 @@ int main(int argc, char** argv) {
 
     int interrupted = 0;
     {
-        InterruptWatcher watcher(plan, capture.console());
+        // A second signal quits at once: the collector is taken off the run (no event reaches
+        // it any more), what is still open is ended as interrupted, and the outputs written.
+        auto quit = [&] {
+            result.removeListener(&collector);
+            collector.interruptOpen(TestMessage("interrupted: the runner quit"));
+            writeOutputs(options, collector, capture.console());
+        };
+        InterruptWatcher watcher(plan, capture.console(), quit);
         plan.runner().run(result);
         interrupted = watcher.received();
     }
@@ -229,7 +252,7 @@ int main(int argc, char** argv) {
     if (interrupted != 0) {
         status = interruptedBy(interrupted);
     }
-    if (!writeOutputs(options, collector)) {
+    if (!writeOutputs(options, collector, stderr)) {
         status = configurationError;
     }
     return status;

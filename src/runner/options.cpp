@@ -1,6 +1,8 @@
 #include "options.h"
 
-#include <cstdlib>
+#include "numbers.h"
+
+#include <cstring>
 
 #include <CLI/CLI.hpp>
 
@@ -13,17 +15,16 @@ namespace {
 
 const char* const program = "robottestingframework-testrunner";
 
-// A number check whose message says what is expected (CLI11's own prints the type's range).
-CLI::Validator atLeast(double minimum, bool inclusive, const std::string& what) {
+// A number check by the rule suite files follow too (numbers.h); its message says what is
+// expected, where CLI11's own would print the type's range.
+template <typename Number>
+CLI::Validator numberRule(std::string (*check)(const std::string&, Number&),
+                          const std::string& what) {
     return CLI::Validator(
-        [=](std::string& text) -> std::string {
-            char* end = nullptr;
-            const double value = std::strtod(text.c_str(), &end);
-            const bool number = !text.empty() && end != nullptr && *end == '\0';
-            if (number && (inclusive ? value >= minimum : value > minimum)) {
-                return {};
-            }
-            return "'" + text + "' is not " + what;
+        [check](std::string& text) -> std::string {
+            Number value{};
+            const std::string problem = check(text, value);
+            return problem.empty() ? problem : "'" + text + "' " + problem;
         },
         what);
 }
@@ -31,6 +32,13 @@ CLI::Validator atLeast(double minimum, bool inclusive, const std::string& what) 
 // Output types other issues will add; named here so "tap:out.tap" is not taken for a file name.
 bool isPlannedOutputType(const std::string& type) {
     return type == "tap" || type == "json" || type == "html";
+}
+
+bool isTypeWord(const std::string& text) {
+    return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
+        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+               c == '_' || c == '-';
+    });
 }
 
 std::string checkOutputType(const std::string& type) {
@@ -112,7 +120,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_option("--repetition", options.repetition,
                    "Run each test N times (a test's own repetition wins)")
         ->type_name("N")
-        ->check(atLeast(0, false, "a positive number"));
+        ->check(numberRule(checkRepetition, "from 1 to " + std::to_string(maxRepetition)));
     takeAll(app.add_option("-o,--output", outputs,
                            "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); "
                            "repeatable. Default: result.txt")
@@ -140,7 +148,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
                    "and a test's timeout=\"...\" win (default: none)")
         ->type_name("SECONDS")
-        ->check(atLeast(0, true, "a number of seconds >= 0 (0: no limit)"));
+        ->check(numberRule(checkSeconds, "from 0 (no limit) to " +
+                                             std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
     takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
@@ -176,22 +185,38 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         return result;
     }
 
+    // An empty name would be looked up as the current folder, or as nothing at all.
+    for (const auto& named :
+         {std::make_pair("--test", &options.tests), std::make_pair("--tests", &options.testDirs),
+          std::make_pair("--suite", &options.suites),
+          std::make_pair("--suites", &options.suiteDirs)}) {
+        for (const auto& name : *named.second) {
+            if (name.empty()) {
+                return usageError(
+                    std::string(named.first) + ": an empty name; expected a " +
+                    (named.first[std::strlen(named.first) - 1] == 's' ? "folder" : "file"));
+            }
+        }
+    }
+
     std::string problem = checkOutputType(outputType);
     if (!problem.empty()) {
         return usageError("--output-type: " + problem);
     }
     for (const auto& output : outputs) {
         OutputRequest request{outputType, output};
+        // A word before the first colon is a type, known or not ("junti:x.xml" is a typo, not
+        // a file name); "text:a:b" or "./a:b" writes a file whose name has a colon.
         std::size_t colon = output.find(':');
-        if (colon != std::string::npos) {
+        if (colon != std::string::npos && isTypeWord(output.substr(0, colon))) {
             std::string type = output.substr(0, colon);
-            if (isKnownOutputType(type) || isPlannedOutputType(type)) {
-                problem = checkOutputType(type);
-                if (!problem.empty()) {
-                    return usageError("--output " + output + ": " + problem);
-                }
-                request = OutputRequest{type, output.substr(colon + 1)};
+            problem = checkOutputType(type);
+            if (!problem.empty()) {
+                return usageError("--output " + output + ": " + problem +
+                                  "; a file whose name has a colon is written as text:" + output +
+                                  " or ./" + output);
             }
+            request = OutputRequest{type, output.substr(colon + 1)};
         }
         if (request.file.empty()) {
             return usageError("--output " + output + ": no file name");

@@ -1,5 +1,7 @@
 #include "run_gate.h"
 
+#include <algorithm>
+
 namespace robottestingframework {
 namespace runner {
 
@@ -38,7 +40,9 @@ std::string findUnknownDependency(const std::vector<SuiteSpec>& suites) {
                 bool known = false;
                 for (const auto& other : suites) {
                     for (const auto& candidate : other.tests) {
-                        known = known || (&candidate != &test && names(dependency, candidate));
+                        // Itself included: a test that depends on itself is a cycle, said so
+                        // by findDependencyCycle.
+                        known = known || names(dependency, candidate);
                     }
                 }
                 if (!known) {
@@ -49,6 +53,97 @@ std::string findUnknownDependency(const std::vector<SuiteSpec>& suites) {
         }
     }
     return {};
+}
+
+namespace {
+
+std::string label(const TestSpec& test) {
+    const std::string name = test.name.empty() ? test.plugin : test.name;
+    return name + " (" + test.where.toString() + ")";
+}
+
+// Finds a cycle among the tests' dependencies by a depth-first walk.
+class CycleFinder {
+public:
+    explicit CycleFinder(const std::vector<SuiteSpec>& suites) {
+        for (const auto& suite : suites) {
+            for (const auto& test : suite.tests) {
+                tests_.push_back(&test);
+            }
+        }
+        // A dependency means the other tests it names, as the gate reads it; itself only when
+        // it names no other.
+        edges_.resize(tests_.size());
+        for (std::size_t i = 0; i < tests_.size(); ++i) {
+            for (const auto& dependency : tests_[i]->depends) {
+                bool other = false;
+                for (std::size_t j = 0; j < tests_.size(); ++j) {
+                    if (j != i && names(dependency, *tests_[j])) {
+                        edges_[i].push_back(j);
+                        other = true;
+                    }
+                }
+                if (!other && names(dependency, *tests_[i])) {
+                    edges_[i].push_back(i);
+                }
+            }
+        }
+    }
+
+    std::string find() {
+        state_.assign(tests_.size(), State::New);
+        for (std::size_t i = 0; i < tests_.size(); ++i) {
+            if (state_[i] == State::New && visit(i)) {
+                return describe();
+            }
+        }
+        return {};
+    }
+
+private:
+    enum class State { New, OnPath, Done };
+
+    // True when a cycle was found: then path_ ends with it, from its first test.
+    bool visit(std::size_t i) {
+        state_[i] = State::OnPath;
+        path_.push_back(i);
+        for (std::size_t next : edges_[i]) {
+            if (state_[next] == State::OnPath) {
+                path_.erase(path_.begin(), std::find(path_.begin(), path_.end(), next));
+                return true;
+            }
+            if (state_[next] == State::New && visit(next)) {
+                return true;
+            }
+        }
+        path_.pop_back();
+        state_[i] = State::Done;
+        return false;
+    }
+
+    std::string describe() const {
+        const TestSpec& first = *tests_[path_.front()];
+        if (path_.size() == 1) {
+            return first.where.toString() + ": dependency cycle: " + label(first) +
+                   " depends on itself";
+        }
+        std::string text = first.where.toString() + ": dependency cycle: " + label(first);
+        for (std::size_t k = 1; k < path_.size(); ++k) {
+            text += " depends on " + label(*tests_[path_[k]]) + ", which";
+        }
+        return text + " depends on " + label(first);
+    }
+
+    std::vector<const TestSpec*> tests_;
+    std::vector<std::vector<std::size_t>> edges_;
+    std::vector<State> state_;
+    std::vector<std::size_t> path_;
+};
+
+}  // namespace
+
+std::string findDependencyCycle(const std::vector<SuiteSpec>& suites) {
+    return CycleFinder(suites).find();
 }
 
 void RunGate::tripped(const Test* test) {

@@ -22,6 +22,11 @@ namespace runner {
 // ran, so it cannot make a dependency known here.
 std::string findUnknownDependency(const std::vector<SuiteSpec>& suites);
 
+// Empty when the dependencies have no cycle (each test of one would be skipped for the other,
+// and the run would look green); else "suite.xml:3: dependency cycle: a (suite.xml:3) depends
+// on b (suite.xml:4), which depends on a (suite.xml:3)", or "... depends on itself".
+std::string findDependencyCycle(const std::vector<SuiteSpec>& suites);
+
 // Also a listener: any failure reported during the run (a test's or a fixture's) trips
 // --fail-fast.
 class RunGate : public TestGate, public TestListener {

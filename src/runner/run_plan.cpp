@@ -1,5 +1,6 @@
 #include "run_plan.h"
 
+#include <fstream>
 #include <stdexcept>
 
 namespace robottestingframework {
@@ -24,9 +25,69 @@ private:
     std::string reason_;
 };
 
+// One word for the fixture's param, as a shell would quote it.
+std::string quoted(const std::string& word) {
+    std::string text = "'";
+    for (char c : word) {
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return text + "'";
+}
+
+bool isProcessFixture(const FixtureSpec& fixture) {
+    return fixture.type == "process" && !fixture.path.empty();
+}
+
+// A world file's text, for a look at the variables it names; a world file is small.
+std::string worldText(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string text;
+    char chunk[65536];
+    const std::size_t limit = 16 * 1024 * 1024;
+    while (in && text.size() < limit) {
+        in.read(chunk, sizeof chunk);
+        text.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
+    return text;
+}
+
 }  // namespace
 
+std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
+                                         const Overrides& overrides) {
+    std::vector<std::string> worlds;
+    for (const auto& suite : suites) {
+        for (const auto& fixture : suite.fixtures) {
+            if (isProcessFixture(fixture)) {
+                worlds.push_back(worldText(fixture.path));
+            }
+        }
+    }
+    std::vector<std::string> warnings;
+    for (const auto& variable : overrides.variables) {
+        const std::string use = "${" + variable.first + "}";
+        bool read = false;
+        for (const auto& world : worlds) {
+            read = read || world.find(use) != std::string::npos;
+        }
+        if (!read) {
+            warnings.push_back("warning: --var " + variable.first + "=" + variable.second +
+                               " is not used: no world file of a process fixture in this run "
+                               "reads " +
+                               use + " (suite variables are not supported yet)");
+        }
+    }
+    return warnings;
+}
+
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides) {
+    for (auto& fixture : suite.fixtures) {
+        if (isProcessFixture(fixture)) {
+            for (const auto& variable : overrides.variables) {
+                append(fixture.param, "--var " + quoted(variable.first + "=" + variable.second));
+            }
+        }
+    }
     for (auto& test : suite.tests) {
         if (test.param.empty()) {
             test.param = overrides.param;

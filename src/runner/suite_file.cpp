@@ -3,17 +3,18 @@
 #include <robottestingframework/dll/DllPluginLoader.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
-#include <sstream>
 #include <unordered_map>
 
 #include <pugixml.hpp>
+
+#include "numbers.h"
+
+#include <sys/stat.h>
 
 namespace robottestingframework {
 namespace runner {
@@ -184,29 +185,20 @@ private:
     }
 
     unsigned int repetitionOf(pugi::xml_node node, pugi::xml_attribute attribute) const {
-        std::string value = trim(attribute.value());
-        bool digits = !value.empty() && std::all_of(value.begin(), value.end(),
-                                                    [](char c) { return c >= '0' && c <= '9'; });
-        unsigned long number = 0;
-        if (digits) {
-            errno = 0;
-            number = std::strtoul(value.c_str(), nullptr, 10);
+        unsigned int runs = 0;
+        const std::string problem = checkRepetition(attribute.value(), runs);
+        if (!problem.empty()) {
+            fail(node, "repetition=\"" + std::string(attribute.value()) + "\" " + problem +
+                           " (e.g. repetition=\"3\")");
         }
-        if (!digits || errno == ERANGE || number == 0 || number > 1000000000UL) {
-            fail(node, "repetition=\"" + std::string(attribute.value()) +
-                           "\" is not a whole number of runs >= 1 (e.g. repetition=\"3\")");
-        }
-        return static_cast<unsigned int>(number);
+        return runs;
     }
 
     double secondsOf(pugi::xml_node node, const std::string& text, const std::string& what) const {
-        std::string value = trim(text);
-        char* end = nullptr;
-        double seconds = value.empty() ? -1 : std::strtod(value.c_str(), &end);
-        if (value.empty() || end == nullptr || *end != '\0' || !std::isfinite(seconds) ||
-            seconds < 0) {
-            fail(node, what + " \"" + text +
-                           "\" is not a number of seconds >= 0 (e.g. 30 or 2.5; 0 for none)");
+        double seconds = 0;
+        const std::string problem = checkSeconds(text, seconds);
+        if (!problem.empty()) {
+            fail(node, what + " \"" + text + "\" " + problem);
         }
         return seconds;
     }
@@ -354,20 +346,49 @@ SuiteSpec parseSuite(const std::string& text, const std::string& path,
 }
 
 SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings) {
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) {
+    // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
+    // runs out: only a regular file of a bounded size is read.
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        throw SuiteFileError(path + ": cannot read the suite file (" + std::strerror(errno) + ")");
+    }
+    if (S_ISDIR(info.st_mode)) {
         throw SuiteFileError(path + ": is a folder, not a suite file (use --suites for folders)");
+    }
+    if (!S_ISREG(info.st_mode)) {
+        const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO (named pipe)"
+                           : S_ISCHR(info.st_mode)  ? "a character device"
+                           : S_ISBLK(info.st_mode)  ? "a block device"
+                           : S_ISSOCK(info.st_mode) ? "a socket"
+                                                    : "not a regular file";
+        throw SuiteFileError(path + ": is " + std::string(kind) +
+                             ", not a suite file (a suite file is a regular file)");
+    }
+    const std::string tooLarge = path + ": the suite file is larger than " +
+                                 std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
+                                 " MiB, the limit of a suite file";
+    if (static_cast<unsigned long long>(info.st_size) > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
     }
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         throw SuiteFileError(path + ": cannot read the suite file (" + std::strerror(errno) + ")");
     }
-    std::ostringstream content;
-    content << in.rdbuf();
+    // Up to one byte past the limit: a file can grow after stat().
+    std::string content;
+    content.reserve(static_cast<std::size_t>(info.st_size));
+    char chunk[65536];
+    while (in && content.size() <= maxSuiteFileBytes) {
+        in.read(chunk, sizeof chunk);
+        content.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
     if (in.bad()) {
         throw SuiteFileError(path + ": cannot read the suite file");
     }
-    return parseSuite(content.str(), path, warnings);
+    if (content.size() > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
+    }
+    return parseSuite(content, path, warnings);
 }
 
 }  // namespace runner

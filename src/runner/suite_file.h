@@ -2,6 +2,7 @@
 // would not understand is an error naming the file and line, never silently ignored.
 #pragma once
 
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,9 +18,13 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Reads and checks `path`. Plug-in names are resolved next to the suite file, then on the
-// library search path (TestSpec::path stays empty when not found: the test then fails to load).
-// Non-fatal remarks (the old `suit` root) are appended to `warnings`.
+// The largest suite file read, in bytes: a suite of 100 000 tests is a few MiB.
+constexpr std::size_t maxSuiteFileBytes = 16 * 1024 * 1024;
+
+// Reads and checks `path`, a regular file of at most maxSuiteFileBytes. Plug-in names are resolved
+// next to the suite file, then on the library search path (TestSpec::path stays empty when not
+// found: the test then fails to load). Non-fatal remarks (the old `suit` root) are appended to
+// `warnings`.
 SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings);
 
 // The same from text already read; `path` names it in messages and gives the folder plug-ins

@@ -84,7 +84,7 @@ def test_help_lists_every_option(tmp_path):
     (["--frobnicate"], "--frobnicate"),
     ([], "nothing to run"),
     (["-t"], "--test"),
-    (["-t", "x.so", "--repetition", "zero"], "--repetition: 'zero' is not a positive number"),
+    (["-t", "x.so", "--repetition", "zero"], "--repetition: 'zero' is not a whole number of runs >= 1"),
     (["-t", "x.so", "--output-type", "pdf"], "unknown output type 'pdf'"),
     (["-t", "x.so", "--isolation", "thread"], "isolation"),
     (["-t", "x.so", "--timeout", "-2"], "--timeout: '-2' is not a number of seconds >= 0"),

@@ -182,6 +182,26 @@ TEST(TestResultCollector, WithoutKeepingEventsCountsStayAndRecordsAreDropped) {
     EXPECT_EQ(c.suites()[0].tests.size(), 1u);  // the last test only
 }
 
+TEST(TestResultCollector, InterruptOpenEndsTheOpenTestAndSuiteAsInterrupted) {
+    TestResultCollector c;
+    TestSuite suite("s");
+    Named done("done");
+    Named running("running");
+    c.startTestRunner();
+    c.startTestSuite(&suite);
+    oneTest(c, done, {});
+    c.startTest(&running);
+    c.interruptOpen(TestMessage("quit"));
+    ASSERT_EQ(c.suites().size(), 1u);
+    const auto& tests = c.suites()[0].tests;
+    ASSERT_EQ(tests.size(), 2u);
+    EXPECT_EQ(tests[0].status, TestStatus::Passed);
+    EXPECT_EQ(tests[1].status, TestStatus::Interrupted);
+    EXPECT_EQ(tests[1].reason()->message.getMessage(), "quit");
+    EXPECT_EQ(c.suiteCount(), 1u);
+    EXPECT_EQ(c.failedCount(), 1u);
+}
+
 TEST(TestResult, DispatchesToEveryListenerInOrderAndRemoves) {
     struct Log : TestListener {
         Log(std::string name, std::vector<std::string>& log) : name(std::move(name)), log(log) {}

@@ -141,6 +141,12 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "--timeout", "soon"}, "timeout"},
         {{"-t", "a.so", "--var", "novalue"}, "NAME=VALUE"},
         {{"-t", "a.so", "stray"}, "stray"},
+        {{"-t", "a.so", "--repetition", "99999999999"}, "is too large: at most 1000000000 runs"},
+        {{"-t", "a.so", "--timeout", "inf"}, "'inf' is not a number of seconds"},
+        {{"-t", ""}, "--test: an empty name"},
+        {{"--suite", ""}, "--suite: an empty name"},
+        {{"-t", "a.so", "-o", "junti:x.xml"}, "unknown output type 'junti'"},
+        {{"-t", "a.so", "-o", "junti:x.xml"}, "text:junti:x.xml or ./junti:x.xml"},
     };
     for (const auto& c : cases) {
         Options options;
@@ -155,6 +161,18 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         EXPECT_EQ(result.status, 2) << line;
         EXPECT_NE(result.text.find(c.says), std::string::npos) << line << "→ " << result.text;
     }
+}
+
+TEST(Options, AFileNameWithAColonIsWrittenWithItsTypeOrAFolder) {
+    Options options;
+    ParseResult result =
+        parse({"-t", "a.so", "-o", "text:junti:x.xml", "-o", "./junti:y.xml"}, options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    ASSERT_EQ(options.outputs.size(), 2u);
+    EXPECT_EQ(options.outputs[0].type, "text");
+    EXPECT_EQ(options.outputs[0].file, "junti:x.xml");
+    EXPECT_EQ(options.outputs[1].type, "text");
+    EXPECT_EQ(options.outputs[1].file, "./junti:y.xml");
 }
 
 TEST(Options, ProcessIsolationIsTheDefault) {

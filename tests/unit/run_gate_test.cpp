@@ -58,8 +58,31 @@ TEST(RunGate, UnknownDependencyNamesFileAndLine) {
         suite.tests[1].depends = {known};
         EXPECT_EQ(findUnknownDependency({suite}), "") << known;
     }
-    suite.tests[1].depends = {"b"};  // itself
-    EXPECT_NE(findUnknownDependency({suite}), "");
+    suite.tests[1].depends = {"b"};  // itself: known, and a cycle
+    EXPECT_EQ(findUnknownDependency({suite}), "");
+}
+
+TEST(RunGate, DependencyCyclesAreFoundWithFileAndLine) {
+    SuiteSpec suite;
+    suite.tests = {spec("a", "a.so", "", {"b"}), spec("b", "b.so", "", {"a"}),
+                   spec("c", "c.so", "", {"a"})};
+    suite.tests[1].where.line = 8;
+    EXPECT_EQ(findDependencyCycle({suite}),
+              "suite.xml:7: dependency cycle: a (suite.xml:7) depends on b (suite.xml:8), which "
+              "depends on a (suite.xml:7)");
+
+    suite.tests[1].depends = {"c"};  // a -> b -> c -> a
+    suite.tests[2].where.line = 9;
+    EXPECT_EQ(findDependencyCycle({suite}),
+              "suite.xml:7: dependency cycle: a (suite.xml:7) depends on b (suite.xml:8), which "
+              "depends on c (suite.xml:9), which depends on a (suite.xml:7)");
+
+    suite.tests = {spec("a", "a.so", "", {"a"})};
+    EXPECT_EQ(findDependencyCycle({suite}),
+              "suite.xml:7: dependency cycle: a (suite.xml:7) depends on itself");
+
+    suite.tests = {spec("a", "a.so"), spec("b", "b.so", "", {"a"}), spec("c", "c.so", "", {"b"})};
+    EXPECT_EQ(findDependencyCycle({suite}), "");
 }
 
 TEST(RunGate, DependencyMustHaveRunAndPassed) {

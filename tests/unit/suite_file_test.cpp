@@ -7,6 +7,7 @@
 #include "suite_file.h"
 
 using robottestingframework::runner::parseSuite;
+using robottestingframework::runner::readSuiteFile;
 using robottestingframework::runner::SuiteFileError;
 using robottestingframework::runner::SuiteSpec;
 
@@ -176,5 +177,17 @@ TEST(SuiteFile, MissingFileIsAnErrorNamingIt) {
     } catch (const SuiteFileError& e) {
         EXPECT_NE(std::string(e.what()).find("/no/such/suite.xml: cannot read"), std::string::npos)
             << e.what();
+    }
+}
+
+TEST(SuiteFile, OnlyARegularFileIsReadAsASuite) {
+    std::vector<std::string> warnings;
+    try {
+        readSuiteFile("/dev/zero", warnings);
+        FAIL() << "a device was read as a suite";
+    } catch (const SuiteFileError& e) {
+        EXPECT_EQ(std::string(e.what()),
+                  "/dev/zero: is a character device, not a suite file (a suite file is a "
+                  "regular file)");
     }
 }
