@@ -317,3 +317,25 @@ TEST(TestSuite, FixtureWatcherThreadReportsWhileTheTestReports) {
     EXPECT_EQ(r.test(0).events.size(), 201u);  // 200 reports and the interruption
     EXPECT_FALSE(suite.succeeded());
 }
+
+TEST(TestSuite, FixtureThrowingFixtureExceptionFailsTheSuiteWithItsMessage) {
+    // RTF 2.x fixtures throw FixtureException when the world cannot be set up.
+    class ThrowingFixture : public FixtureManager {
+    public:
+        bool setup(int, char**) override {
+            throw FixtureException(TestMessage("the simulator did not start"));
+        }
+    } fixture;
+    fixture.setName("sim");
+    LambdaTest t1("t1");
+    TestSuite suite("s");
+    suite.addFixtureManager(&fixture);
+    suite.addTest(&t1);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(r.suite().fixtureFailed);
+    EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
+    EXPECT_NE(suite.fixtureFailure().getMessage().find("the simulator did not start"),
+              std::string::npos)
+        << suite.fixtureFailure().getMessage();
+}
