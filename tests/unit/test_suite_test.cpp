@@ -339,3 +339,24 @@ TEST(TestSuite, FixtureThrowingFixtureExceptionFailsTheSuiteWithItsMessage) {
               std::string::npos)
         << suite.fixtureFailure().getMessage();
 }
+
+TEST(TestSuite, Rtf2ListenerOverridingTheTestFormsHearsTheSuite) {
+    // RTF 2.x's TestListener passed the suite as a `const Test*`; listeners override that form.
+    class Rtf2Listener : public TestListener {
+    public:
+        void startTestSuite(const robottestingframework::Test* test) override {
+            heard.push_back("start " + test->getName());
+        }
+        void endTestSuite(const robottestingframework::Test* test) override {
+            heard.push_back("end " + test->getName());
+        }
+        std::vector<std::string> heard;
+    } listener;
+    LambdaTest t1("t1");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    TestResult result;
+    result.addListener(&listener);
+    suite.run(result);
+    EXPECT_EQ(listener.heard, (Lines{"start s", "end s"}));
+}
