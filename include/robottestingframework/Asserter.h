@@ -3,7 +3,11 @@
 
 #include <string>
 
+// What RTF 2.x's Asserter.h (and so TestAssert.h) brought along; tests rely on them.
+#include <robottestingframework/Exception.h>
+#include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestSuite.h>
 
 namespace robottestingframework {
 
@@ -33,7 +37,8 @@ public:
     static void report(TestMessage msg, FixtureManager* fixture);
     // Records a check: when `condition` is false the test is marked failed and goes on.
     static void testCheck(bool condition, TestMessage msg, TestCase* testcase = nullptr);
-    // Marks the test failed (and goes on) when `condition` is true.
+    // Marks the test failed (and goes on) when `condition` is false, as RTF 2.x's did: the
+    // condition is what should hold.
     static void testFail(bool condition, TestMessage msg, TestCase* testcase = nullptr);
 };
 

@@ -37,4 +37,10 @@ public:
     using TestErrorException::TestErrorException;
 };
 
+// A fixture could not be set up or broke (RTF 2.x's name, for fixtures that throw it).
+class FixtureException : public Exception {
+public:
+    using Exception::Exception;
+};
+
 }  // namespace robottestingframework

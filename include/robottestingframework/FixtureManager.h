@@ -4,6 +4,9 @@
 #include <string>
 
 #include <robottestingframework/FixtureEvents.h>
+// What RTF 2.x's FixtureManager.h brought along; fixtures written for it rely on them.
+#include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestResult.h>
 
 namespace robottestingframework {
 

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestMessage.h>
 
 namespace robottestingframework {

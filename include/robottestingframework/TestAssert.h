@@ -27,10 +27,10 @@
 // Marks the test failed (and goes on) when the condition is true / false.
 #define ROBOTTESTINGFRAMEWORK_TEST_FAIL_IF_TRUE(condition, message) \
     ::robottestingframework::Asserter::testFail(                    \
-        static_cast<bool>(condition), ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
+        !static_cast<bool>(condition), ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
 #define ROBOTTESTINGFRAMEWORK_TEST_FAIL_IF_FALSE(condition, message) \
     ::robottestingframework::Asserter::testFail(                     \
-        !static_cast<bool>(condition),                               \
+        static_cast<bool>(condition),                                \
         ROBOTTESTINGFRAMEWORK_MESSAGE_(message, "!(" #condition ")"))
 
 // A failure: the test stops.

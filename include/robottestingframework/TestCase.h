@@ -5,6 +5,7 @@
 #include <string>
 
 #include <robottestingframework/Test.h>
+#include <robottestingframework/TestResult.h>  // RTF 2.x users rely on it coming along
 
 namespace robottestingframework {
 

@@ -3,11 +3,11 @@
 
 #include <string>
 
+#include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestMessage.h>
 
 namespace robottestingframework {
 
-class Test;
 class TestSuite;
 
 class TestListener {
@@ -20,8 +20,12 @@ public:
     virtual void addFailure(const Test* /*test*/, TestMessage /*msg*/) {}
     virtual void startTest(const Test* /*test*/) {}
     virtual void endTest(const Test* /*test*/) {}
-    virtual void startTestSuite(const TestSuite* /*suite*/) {}
-    virtual void endTestSuite(const TestSuite* /*suite*/) {}
+    // A suite starts or ends. Override either form: these call the `const Test*` ones, which
+    // RTF 2.x's listeners override (RTF 2.x passed the suite as a Test).
+    virtual void startTestSuite(const TestSuite* suite);
+    virtual void endTestSuite(const TestSuite* suite);
+    virtual void startTestSuite(const Test* /*suite*/) {}
+    virtual void endTestSuite(const Test* /*suite*/) {}
     virtual void startTestRunner() {}
     virtual void endTestRunner() {}
 

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestMessage.h>
 

@@ -52,6 +52,9 @@ public:
     std::size_t suiteCount() const;
     std::size_t passedSuiteCount() const;
     std::size_t failedSuiteCount() const;
+    // Forgets everything collected (events, records, counts) and restarts the clock, so one
+    // collector can serve several runs.
+    void reset();
 
     // Every event in arrival order.
     const std::vector<ResultEvent>& getResults() const { return events_; }

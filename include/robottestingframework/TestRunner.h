@@ -8,6 +8,7 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestGate.h>
 #include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestResult.h>  // RTF 2.x users rely on it coming along
 
 namespace robottestingframework {
 

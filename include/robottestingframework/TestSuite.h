@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <robottestingframework/FixtureEvents.h>
+#include <robottestingframework/FixtureManager.h>  // with TestResult.h, as in RTF 2.x
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestGate.h>
 #include <robottestingframework/TestMessage.h>

@@ -112,7 +112,7 @@ void Asserter::testCheck(bool condition, TestMessage msg, TestCase* testcase) {
 }
 
 void Asserter::testFail(bool condition, TestMessage msg, TestCase* testcase) {
-    if (!condition) {
+    if (condition) {
         return;
     }
     TestCase* test = target(testcase);

@@ -70,6 +70,21 @@ TestResultCollector::TestResultCollector()
 
 TestResultCollector::~TestResultCollector() = default;
 
+void TestResultCollector::reset() {
+    origin_ = std::chrono::steady_clock::now();
+    wallOrigin_ = std::chrono::system_clock::now();
+    start_ = 0;
+    end_ = -1;
+    events_.clear();
+    suites_.clear();
+    openSuites_.clear();
+    openTests_.clear();
+    looseSuite_ = none;
+    std::fill(std::begin(counts_), std::end(counts_), 0);
+    suitesRun_ = 0;
+    suitesFailed_ = 0;
+}
+
 double TestResultCollector::now() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
 }

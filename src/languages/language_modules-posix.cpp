@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
 #include <map>
 #include <mutex>
 #include <vector>
@@ -22,6 +23,22 @@ namespace languages {
 
 namespace {
 
+// The folder of the shared library this code is linked into (libRobotTestingFrameworkLua.so
+// & co, see PluginLoader.h), or empty when it is linked into the program itself.
+std::string libraryFolder(const std::string& program) {
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&libraryFolder), &info) == 0 ||
+        info.dli_fname == nullptr) {
+        return {};
+    }
+    std::error_code error;
+    std::filesystem::path library = std::filesystem::canonical(info.dli_fname, error);
+    if (error || library == std::filesystem::canonical(program, error)) {
+        return {};
+    }
+    return library.parent_path().string();
+}
+
 std::vector<std::string> moduleFolders() {
     if (const char* override = std::getenv("RTF_LANGUAGE_DIR")) {
         if (*override != '\0') {
@@ -30,6 +47,12 @@ std::vector<std::string> moduleFolders() {
     }
     std::vector<std::string> folders;
     std::string self = platform::executablePath();
+    // A program using a plug-in loader library may live anywhere: the modules are beside the
+    // library (lib/robottestingframework/ next to lib/libRobotTestingFrameworkLua.so).
+    std::string library = libraryFolder(self);
+    if (!library.empty()) {
+        folders.push_back(library + "/robottestingframework");
+    }
     if (!self.empty()) {
         folders.push_back(self.substr(0, self.find_last_of('/')) + "/" + RTF_LANGUAGE_RELATIVE_DIR);
     }

@@ -1,7 +1,7 @@
 """An RTF 2.x plug-in, fixture and suite file work unchanged, in both isolation modes."""
 import pytest
 
-from conftest import PLUGIN_DIR, run_runner, validate_junit
+from conftest import PLUGIN_DIR, plugin, run_runner, validate_junit
 
 
 @pytest.mark.parametrize("isolation", ["process", "none"])
@@ -26,3 +26,106 @@ def test_rtf2_plugin_fixture_and_suite_run_unchanged(tmp_path, isolation):
     assert "suit" in run.stderr, run  # the warning about the old root spelling
     assert run.stdout.rstrip().endswith("1 passed, 0 failed"), run
     validate_junit(junit)
+
+
+# Written as RTF 2.x's documentation and examples write them.
+RTF2_PYTHON_NO_IMPORT = """
+class TestCase:
+    def setup(self, param):
+        robottestingframework.setName("Rtf2PythonTest")
+        robottestingframework.testReport("setup with " + param)
+        return True
+
+    def run(self):
+        robottestingframework.testReport("env: " + robottestingframework.getEnvironment())
+        robottestingframework.testCheck(5 > 3, "5 is bigger than 3")
+        robottestingframework.testCheck(%s, "the checked condition")
+
+    def tearDown(self):
+        robottestingframework.testReport("tearing down")
+"""
+
+RTF2_LUA = """
+TestCase.setup = function(parameter)
+    robottestingframework.setName("Rtf2LuaTest")
+    robottestingframework.testReport("setup with " .. parameter)
+    return true
+end
+
+TestCase.run = function()
+    robottestingframework.testReport("env: " .. robottestingframework.getEnvironment())
+    robottestingframework.testCheck(5 > 3, "5 is bigger than 3")
+    robottestingframework.testFail(%s, "testFail's condition")
+end
+
+TestCase.tearDown = function()
+    robottestingframework.testReport("tearing down")
+end
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("passing", [True, False], ids=["passing", "failing"])
+def test_rtf2_python_test_uses_the_module_without_importing_it(tmp_path, isolation, passing):
+    script = tmp_path / "rtf2_test.py"
+    script.write_text(RTF2_PYTHON_NO_IMPORT % ("True" if passing else "False"))
+    run = run_runner("-v", "--isolation", isolation, "--test", script, "--param", "--x 1",
+                     "--environment", "sim", "--no-output")
+    assert "NameError" not in run.output, run
+    assert run.returncode == (0 if passing else 1), run
+    assert "Rtf2PythonTest" in run.stdout, run
+    assert "setup with --x 1" in run.stdout and "env: sim" in run.stdout, run
+    assert "tearing down" in run.stdout, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_python_test_that_imports_the_module_still_works(tmp_path, isolation):
+    script = tmp_path / "imports.py"
+    script.write_text("import robottestingframework\n" + RTF2_PYTHON_NO_IMPORT % "True")
+    run = run_runner("-v", "--isolation", isolation, "--test", script, "--no-output")
+    assert run.returncode == 0, run
+    assert "env: " in run.stdout and "tearing down" in run.stdout, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("passing", [True, False], ids=["passing", "failing"])
+def test_rtf2_lua_test_fills_the_table_that_already_exists(tmp_path, isolation, passing):
+    script = tmp_path / "rtf2_test.lua"
+    script.write_text(RTF2_LUA % ("true" if passing else "false"))
+    run = run_runner("-v", "--isolation", isolation, "--test", script, "--param", "--x 1",
+                     "--environment", "sim", "--no-output")
+    assert "attempt to index a nil value" not in run.output, run
+    assert run.returncode == (0 if passing else 1), run
+    assert "Rtf2LuaTest" in run.stdout, run
+    assert "setup with --x 1" in run.stdout and "env: sim" in run.stdout, run
+    assert "tearing down" in run.stdout, run
+    if not passing:
+        assert "testFail's condition" in run.output, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_lua_test_that_makes_its_own_table_still_works(tmp_path, isolation):
+    script = tmp_path / "own_table.lua"
+    script.write_text("TestCase = {}\nfunction TestCase.run()\n"
+                      "    robottestingframework.testReport(\"own table ran\")\nend\n")
+    run = run_runner("-v", "--isolation", isolation, "--test", script, "--no-output")
+    assert run.returncode == 0, run
+    assert "own table ran" in run.stdout, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_rtf2_headers_bring_what_they_brought(tmp_path, isolation):
+    """Plug-ins that compile only because RTF 2.x's headers include each other
+    (tests/plugins/rtf2_collector_test.cpp, rtf2_header_fixture.*) build and run."""
+    suite = tmp_path / "headers.xml"
+    suite.write_text(f"""<suite name="rtf2 headers">
+    <fixture param="--answer 42">{plugin("rtf2_header_fixture")}</fixture>
+    <test>{plugin("rtf2_collector_test")}</test>
+</suite>
+""")
+    run = run_runner("-v", "--isolation", isolation, "-s", suite, "--no-output")
+    assert run.returncode == 0, run
+    assert "rtf2 collector test ran its inner test" in run.stdout, run
+    assert "rtf2 header fixture: setting up with 3 argument(s)" in run.output, run
+    assert "rtf2 header fixture: tearing down" in run.output, run
+    assert run.stdout.rstrip().endswith("1 passed, 0 failed"), run

@@ -79,6 +79,16 @@ TEST(Assert, TestFailIfFalseFailsOnlyWhenFalseAndGoesOn) {
     EXPECT_EQ(o.record[0].message.getDetail(), "!(false)");
 }
 
+TEST(Assert, AsserterTestFailFailsWhenTheConditionDoesNotHoldAsInRtf2) {
+    // RTF 2.x's Asserter::testFail(condition, ...): the condition is what should hold.
+    Outcome o = runBody([] {
+        Asserter::testFail(true, TestMessage("holds"));
+        Asserter::testFail(false, TestMessage("does not hold"));
+    });
+    EXPECT_EQ(o.events, (Lines{"start-test t", "failure t: does not hold", "end-test t"}));
+    EXPECT_EQ(o.status, TestStatus::Failed);
+}
+
 TEST(Assert, AssertFailStopsTheTestAsFailed) {
     bool after = false;
     Outcome o = runBody([&] {

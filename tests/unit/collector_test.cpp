@@ -283,3 +283,27 @@ TEST(TestResultCollector, ASuiteReservesItsRecordsOnce) {
     c.endTestSuite(&s);
     EXPECT_EQ(c.suites()[0].tests.size(), 3u);
 }
+
+TEST(Collector, ResetForgetsEverythingSoTheCollectorServesANewRun) {
+    TestResultCollector c;
+    Named a("a");
+    c.startTestRunner();
+    oneTest(c, a, {ResultEvent::Kind::Failure});
+    c.endTestRunner();
+    ASSERT_EQ(c.testCount(), 1u);
+    ASSERT_EQ(c.failedCount(), 1u);
+
+    c.reset();
+    EXPECT_EQ(c.testCount(), 0u);
+    EXPECT_EQ(c.failedCount(), 0u);
+    EXPECT_EQ(c.suiteCount(), 0u);
+    EXPECT_TRUE(c.getResults().empty());
+    EXPECT_TRUE(c.suites().empty());
+
+    Named b("b");
+    oneTest(c, b, {});
+    EXPECT_EQ(c.testCount(), 1u);
+    EXPECT_EQ(c.passedCount(), 1u);
+    ASSERT_EQ(c.suites().size(), 1u);
+    EXPECT_EQ(c.suites()[0].tests.at(0).name, "b");
+}

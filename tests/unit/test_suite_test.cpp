@@ -339,3 +339,46 @@ TEST(TestSuite, WhatAFixtureReportedBeforeFailingIsTheReasonOfTheSkippedTests) {
     EXPECT_EQ(r.test(0).reason()->message.getMessage(),
               "fixture bus failed: setup returned false after reporting: no robot on the bus");
 }
+
+TEST(TestSuite, FixtureThrowingFixtureExceptionFailsTheSuiteWithItsMessage) {
+    // RTF 2.x fixtures throw FixtureException when the world cannot be set up.
+    class ThrowingFixture : public FixtureManager {
+    public:
+        bool setup(int, char**) override {
+            throw FixtureException(TestMessage("the simulator did not start"));
+        }
+    } fixture;
+    fixture.setName("sim");
+    LambdaTest t1("t1");
+    TestSuite suite("s");
+    suite.addFixtureManager(&fixture);
+    suite.addTest(&t1);
+    SuiteRun r;
+    suite.run(r.result);
+    EXPECT_TRUE(r.suite().fixtureFailed);
+    EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
+    EXPECT_NE(suite.fixtureFailure().getMessage().find("the simulator did not start"),
+              std::string::npos)
+        << suite.fixtureFailure().getMessage();
+}
+
+TEST(TestSuite, Rtf2ListenerOverridingTheTestFormsHearsTheSuite) {
+    // RTF 2.x's TestListener passed the suite as a `const Test*`; listeners override that form.
+    class Rtf2Listener : public TestListener {
+    public:
+        void startTestSuite(const robottestingframework::Test* test) override {
+            heard.push_back("start " + test->getName());
+        }
+        void endTestSuite(const robottestingframework::Test* test) override {
+            heard.push_back("end " + test->getName());
+        }
+        std::vector<std::string> heard;
+    } listener;
+    LambdaTest t1("t1");
+    TestSuite suite("s");
+    suite.addTest(&t1);
+    TestResult result;
+    result.addListener(&listener);
+    suite.run(result);
+    EXPECT_EQ(listener.heard, (Lines{"start s", "end s"}));
+}

@@ -1,11 +1,12 @@
-// Loads test and fixture plug-ins from shared libraries (see Plugin.h).
+// Loads test plug-ins from shared libraries (see Plugin.h), and finds plug-ins by name.
 #pragma once
 
 #include <memory>
 #include <string>
 
-#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/PluginLoader.h>
 #include <robottestingframework/TestCase.h>
+#include <robottestingframework/dll/DllFixturePluginLoader.h>
 
 namespace robottestingframework {
 namespace plugin {
@@ -13,35 +14,16 @@ namespace plugin {
 class SharedLibrary;
 
 // Owns the library and the object it made; both go when the loader is closed or destroyed.
-class DllPluginLoader {
+class DllPluginLoader : public PluginLoader {
 public:
     DllPluginLoader();
-    ~DllPluginLoader();
-    DllPluginLoader(const DllPluginLoader&) = delete;
-    DllPluginLoader& operator=(const DllPluginLoader&) = delete;
+    ~DllPluginLoader() override;
 
     // Loads `filename` (a path) and makes its test case. nullptr on failure: see getLastError().
-    TestCase* open(const std::string& filename);
-    void close();
-    std::string getLastError() const { return error_; }
-
-private:
-    std::unique_ptr<SharedLibrary> library_;
-    void* object_ = nullptr;
-    void (*destroy_)(void*) = nullptr;
-    std::string error_;
-};
-
-class DllFixturePluginLoader {
-public:
-    DllFixturePluginLoader();
-    ~DllFixturePluginLoader();
-    DllFixturePluginLoader(const DllFixturePluginLoader&) = delete;
-    DllFixturePluginLoader& operator=(const DllFixturePluginLoader&) = delete;
-
-    FixtureManager* open(const std::string& filename);
-    void close();
-    std::string getLastError() const { return error_; }
+    // Libraries built with RTF 2.x's ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN load too.
+    TestCase* open(const std::string filename) override;
+    void close() override;
+    const std::string getLastError() override { return error_; }
 
 private:
     std::unique_ptr<SharedLibrary> library_;

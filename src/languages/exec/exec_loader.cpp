@@ -132,7 +132,7 @@ private:
         }
         for (const auto& problem : tap.problems) {
             Asserter::testFail(
-                true, TestMessage("TAP: " + problem.message, "", path_, problem.line), this);
+                false, TestMessage("TAP: " + problem.message, "", path_, problem.line), this);
         }
     }
 

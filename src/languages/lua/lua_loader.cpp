@@ -60,6 +60,10 @@ public:
 
     bool load(std::string& error) {
         openModule();
+        // RTF 2.x made the table before running the file; its tests start with
+        // "TestCase.setup = ...". A file that makes its own table replaces this one.
+        lua_newtable(L_);
+        lua_setglobal(L_, "TestCase");
         // require() finds the script's neighbours first.
         std::string folder = std::filesystem::absolute(path_).parent_path().string();
         lua_getglobal(L_, "package");
@@ -149,6 +153,12 @@ private:
                  return 0;
              }},
             {"testFailIf",
+             [](lua_State* L) {
+                 Asserter::testFail(!lua_toboolean(L, 1), messageHere(L, 2), owner(L));
+                 return 0;
+             }},
+            // RTF 2.x's, with its Asserter::testFail meaning: fails when the condition is false.
+            {"testFail",
              [](lua_State* L) {
                  Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
                  return 0;

@@ -195,7 +195,7 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
             }
             return;
         }
-        Asserter::testFail(failing, messageHere(py::str(text)), currentTest());
+        Asserter::testFail(!failing, messageHere(py::str(text)), currentTest());
     });
     m.def("assertFail", [](const py::object& text) { raise(g_failure, text); });
     m.def("assertError", [](const py::object& text) { raise(g_error, text); });
@@ -373,6 +373,8 @@ std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::s
     script->module_ = py::module_::import("types").attr("ModuleType")(name);
     script->module_.attr("__file__") = path;
     script->module_.attr("__builtins__") = builtins;
+    // RTF 2.x put the module in every test's namespace; its tests call it without an import.
+    script->module_.attr("robottestingframework") = py::module_::import("robottestingframework");
     script->scope_ = g_scopeType(folder, name, script->module_);
     try {
         Call call(*script);

@@ -263,7 +263,7 @@ VALUE testCheck(VALUE, VALUE condition, VALUE text) {
 
 VALUE testFailIf(VALUE, VALUE condition, VALUE text) {
     VALUE message = rb_obj_as_string(text);
-    Asserter::testFail(RTEST(condition), messageHere(toString(message)), activeTest());
+    Asserter::testFail(!RTEST(condition), messageHere(toString(message)), activeTest());
     return Qnil;
 }
 

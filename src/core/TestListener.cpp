@@ -1,0 +1,14 @@
+#include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestSuite.h>
+
+namespace robottestingframework {
+
+void TestListener::startTestSuite(const TestSuite* suite) {
+    startTestSuite(static_cast<const Test*>(suite));
+}
+
+void TestListener::endTestSuite(const TestSuite* suite) {
+    endTestSuite(static_cast<const Test*>(suite));
+}
+
+}  // namespace robottestingframework
