@@ -11,7 +11,7 @@ end
 function TestCase.run()
     robottestingframework.testReport("environment: " .. robottestingframework.getEnvironment())
     robottestingframework.testCheck(2 + 2 == 4, "arithmetic still works")
-    robottestingframework.testFailIf(#robottestingframework.getParam() > 100, "a very long param")
+    robottestingframework.testFailIf(#robottestingframework.getParam() <= 100, "a very long param")
 end
 
 function TestCase.tearDown()

@@ -14,7 +14,7 @@ class TestCase:
         robottestingframework.testReport("param again: " + robottestingframework.getParam())
         robottestingframework.testReport("environment: " + robottestingframework.getEnvironment())
         robottestingframework.testCheck(self.joints == 6, "the arm has six joints")
-        robottestingframework.testFailIf(self.joints < 0, "a negative joint count")
+        robottestingframework.testFailIf(self.joints >= 0, "a negative joint count")
 
     def tearDown(self):
         robottestingframework.testReport("done")

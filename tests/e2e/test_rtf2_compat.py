@@ -129,3 +129,40 @@ def test_rtf2_headers_bring_what_they_brought(tmp_path, isolation):
     assert "rtf2 header fixture: setting up with 3 argument(s)" in run.output, run
     assert "rtf2 header fixture: tearing down" in run.output, run
     assert run.stdout.rstrip().endswith("1 passed, 0 failed"), run
+
+
+# testFailIf as RTF 2.x documents it: "marks the test as failed ... if condition is false".
+FAIL_IF_SCRIPTS = {
+    "py": """class TestCase:
+    def run(self):
+        robottestingframework.testFailIf(%s, "the motor is not homed")
+""",
+    "lua": """TestCase.run = function()
+    robottestingframework.testFailIf(%s, "the motor is not homed")
+end
+""",
+    "rb": """class TestCase
+  def run
+    RobotTestingFramework::testFailIf(%s, "the motor is not homed")
+  end
+end
+""",
+}
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("language", sorted(FAIL_IF_SCRIPTS))
+def test_test_fail_if_fails_when_the_condition_is_false_as_in_rtf2(tmp_path, language,
+                                                                   isolation):
+    true_word, false_word = ("True", "False") if language == "py" else ("true", "false")
+    holds = tmp_path / f"holds.{language}"
+    holds.write_text(FAIL_IF_SCRIPTS[language] % true_word)
+    run = run_runner("--isolation", isolation, "--test", holds, "--no-output")
+    assert run.returncode == 0, run
+    assert "the motor is not homed" not in run.output, run
+
+    broken = tmp_path / f"broken.{language}"
+    broken.write_text(FAIL_IF_SCRIPTS[language] % false_word)
+    run = run_runner("--isolation", isolation, "--test", broken, "--no-output")
+    assert run.returncode == 1, run
+    assert "the motor is not homed" in run.output, run

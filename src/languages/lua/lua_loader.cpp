@@ -152,12 +152,13 @@ private:
                  Asserter::testCheck(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
                  return 0;
              }},
+            // RTF 2.x's meaning for both, which its tests rely on: the test fails when the
+            // condition is false.
             {"testFailIf",
              [](lua_State* L) {
-                 Asserter::testFail(!lua_toboolean(L, 1), messageHere(L, 2), owner(L));
+                 Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
                  return 0;
              }},
-            // RTF 2.x's, with its Asserter::testFail meaning: fails when the condition is false.
             {"testFail",
              [](lua_State* L) {
                  Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));

@@ -187,15 +187,16 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
         }
         Asserter::testCheck(passed, messageHere(py::str(text)), currentTest());
     });
+    // RTF 2.x's meaning, which its tests rely on: the test fails when the condition is false.
     m.def("testFailIf", [](const py::object& condition, const py::object& text) {
-        bool failing = truth(condition);
+        bool passed = truth(condition);
         if (g_caller.fixture != nullptr) {
-            if (failing) {
+            if (!passed) {
                 report(messageHere(py::str(text), "failed"));
             }
             return;
         }
-        Asserter::testFail(!failing, messageHere(py::str(text)), currentTest());
+        Asserter::testFail(passed, messageHere(py::str(text)), currentTest());
     });
     m.def("assertFail", [](const py::object& text) { raise(g_failure, text); });
     m.def("assertError", [](const py::object& text) { raise(g_error, text); });

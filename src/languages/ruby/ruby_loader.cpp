@@ -261,9 +261,10 @@ VALUE testCheck(VALUE, VALUE condition, VALUE text) {
     return Qnil;
 }
 
+// RTF 2.x's meaning, which its tests rely on: the test fails when the condition is false.
 VALUE testFailIf(VALUE, VALUE condition, VALUE text) {
     VALUE message = rb_obj_as_string(text);
-    Asserter::testFail(!RTEST(condition), messageHere(toString(message)), activeTest());
+    Asserter::testFail(RTEST(condition), messageHere(toString(message)), activeTest());
     return Qnil;
 }
 
