@@ -17,10 +17,13 @@ struct SpawnOptions {
     bool newProcessGroup = true;           // the child leads a group of its own
     int parentDeathSignal = 0;             // sent to the child when we die (Linux); 0: none
     bool nullStdin = true;                 // stdin is /dev/null unless `fds` maps 0
+    // Set in (or added to) the child's environment, which is ours otherwise.
+    std::vector<std::pair<std::string, std::string>> environment;
 };
 
-// Starts a program. Returns its pid, or -1 with `error` set (including exec failures, which
-// are reported back from the child).
+// Starts a program, with every signal at its default disposition. Returns its pid, or -1 with
+// `error` set (including exec failures, which are reported back from the child; a script whose
+// #! interpreter is missing is reported as such).
 pid_t spawnProcess(const SpawnOptions& options, std::string& error);
 
 // How a child ended, from a wait status.

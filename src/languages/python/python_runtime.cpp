@@ -218,6 +218,28 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
     });
 }
 
+// os._exit() skips everything: in the runner's own process (--isolation none) it would end the
+// run with status 0 and no result files. In the process that loaded the interpreter it raises
+// SystemExit instead, an error of the test; a forked child still exits at once.
+const char* const kExitGuardSource = R"PY(
+import os
+def _guard(real=os._exit, pid=os.getpid(), getpid=os.getpid):
+    def _exit(status):
+        if getpid() != pid:
+            real(status)
+        raise SystemExit("os._exit(%r) was called: it would end the test runner's process "
+                         "without a report" % (status,))
+    return _exit
+os._exit = _guard()
+)PY";
+
+void guardProcessExit() {
+    py::dict globals;
+    globals["__builtins__"] = py::module_::import("builtins");
+    globals["__name__"] = "_rtf_exit_guard";
+    py::exec(kExitGuardSource, globals);
+}
+
 void ensureInterpreter() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -238,6 +260,7 @@ void ensureInterpreter() {
             g_scopeType = globals["Scope"];
             g_scopeType.inc_ref();  // never released: the interpreter is never finalized
             addVirtualEnvironment();
+            guardProcessExit();
         }
         PyEval_SaveThread();  // every later call takes the GIL with gil_scoped_acquire
     });
