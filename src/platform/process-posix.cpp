@@ -82,7 +82,7 @@ std::string missingInterpreter(const std::string& program) {
 
 }  // namespace
 
-pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
+pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNumber) {
     if (options.argv.empty()) {
         error = "nothing to run";
         return -1;
@@ -93,6 +93,9 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
         argv.push_back(const_cast<char*>(word.c_str()));
     }
     argv.push_back(nullptr);
+    const char* program = options.program.empty() ? argv[0] : options.program.c_str();
+    const char* folder =
+        options.workingDirectory.empty() ? nullptr : options.workingDirectory.c_str();
     std::vector<std::string> envEntries;
     std::vector<char*> envp;
     if (!options.environment.empty()) {
@@ -184,10 +187,13 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
             ::close(fd);
         }
         closeDescriptorsFrom(report + 1);
+        if (folder != nullptr && ::chdir(folder) != 0) {
+            failChild(report, "chdir");
+        }
         if (envp.empty()) {
-            ::execvp(argv[0], argv.data());
+            ::execvp(program, argv.data());
         } else {
-            ::execvpe(argv[0], argv.data(), envp.data());
+            ::execvpe(program, argv.data(), envp.data());
         }
         failChild(report, "exec");
     }
@@ -201,10 +207,20 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
         if (message.size() >= sizeof(code)) {
             ::memcpy(&code, message.data(), sizeof(code));
         }
-        std::string interpreter = code == ENOENT ? missingInterpreter(options.argv[0]) : "";
-        error = !interpreter.empty() ? interpreter
-                                     : message.substr(sizeof(code)) + " " + options.argv[0] + ": " +
-                                           ::strerror(code);
+        const std::string step = message.substr(sizeof(code));
+        const std::string file = options.program.empty() ? options.argv[0] : options.program;
+        std::string interpreter = code == ENOENT && step == "exec" ? missingInterpreter(file) : "";
+        if (step == "chdir") {
+            error =
+                "cannot enter the folder '" + options.workingDirectory + "': " + ::strerror(code);
+        } else if (!interpreter.empty()) {
+            error = interpreter;
+        } else {
+            error = step + " " + file + ": " + ::strerror(code);
+        }
+        if (errorNumber != nullptr) {
+            *errorNumber = code;
+        }
         int status;
         ::waitpid(pid, &status, 0);
         return -1;
