@@ -343,3 +343,26 @@ class TestCase:
     _, out = junit_case(junit)
     assert "line 199999" in out and "line 0\n" not in out
     assert len(out) < 80 * 1024
+
+
+def test_a_timeout_wakes_a_sleeping_python_script_in_the_runners_process(tmp_path):
+    path = tmp_path / "sleepy_test.py"
+    path.write_text("""import time
+import robottestingframework
+
+
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("going to sleep")
+        time.sleep(30)
+        robottestingframework.testReport("woke up by itself")
+""")
+    began = time.monotonic()
+    r = run_runner("--isolation", "none", "--timeout", "2", "-v", "--no-output", "--test", path,
+                   timeout=60)
+    if "is not supported by this build" in r.output:
+        pytest.skip("this build leaves Python out")
+    assert time.monotonic() - began < 20, r  # was 30 s: the sleep ran to its end
+    assert r.returncode == 1, r
+    assert "timed out after 2 s" in r.output, r
+    assert "woke up by itself" not in r.output, r
