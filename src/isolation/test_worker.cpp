@@ -1,11 +1,16 @@
+#include <signal.h>
+
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <stdexcept>
+#include <thread>
 #include <typeinfo>
 
 #include <robottestingframework/TestResult.h>
 
 #include "event_writer.h"
+#include "signal_pipe.h"
 #include "test_loader.h"
 #include "worker.h"
 
@@ -93,12 +98,29 @@ int runTestWorker(const WorkRequest& request, int channel) {
 
     TestResult result;
     result.addListener(&writer);
+    // The runner stops a test that outlives its time or is interrupted with SIGTERM. An exec
+    // test is asked to stop instead of dying at once: it reports what its program said, then
+    // stops it. Other tests end with the worker, as their output already reached the runner.
+    std::unique_ptr<platform::SignalPipe> stopSignal;
+    std::thread stopWatcher;
+    if (request.type == "exec") {
+        stopSignal = std::make_unique<platform::SignalPipe>(std::initializer_list<int>{SIGTERM});
+        stopWatcher = std::thread([&stopSignal, test]() {
+            if (stopSignal->wait() == SIGTERM) {
+                test->interrupt();
+            }
+        });
+    }
     try {
         test->run(result);
     } catch (...) {
         // TestCase::run catches what the test throws; this is for what escapes it anyway.
         writer.sendEvent(ResultEvent::Kind::Error, test, TestMessage(describeCurrentException()));
         writer.sendEvent(ResultEvent::Kind::EndTest, test, TestMessage());
+    }
+    if (stopWatcher.joinable()) {
+        stopSignal->wake();
+        stopWatcher.join();
     }
     if (test->hasCriticalError()) {
         WireRecord record;

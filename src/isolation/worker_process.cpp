@@ -9,31 +9,6 @@
 namespace robottestingframework {
 namespace isolation {
 
-void OutputTail::append(const std::string& bytes) {
-    text_ += bytes;
-    if (text_.size() > limit_ + limit_ / 2) {
-        // Trim in chunks, not on every append.
-        std::size_t cut = text_.size() - limit_;
-        dropped_ += cut;
-        text_.erase(0, cut);
-    }
-}
-
-std::string OutputTail::take() {
-    if (text_.size() > limit_) {
-        dropped_ += text_.size() - limit_;
-        text_.erase(0, text_.size() - limit_);
-    }
-    std::string text;
-    if (dropped_ > 0) {
-        text = "[... " + std::to_string(dropped_) + " bytes of earlier output dropped ...]\n";
-    }
-    text += text_;
-    text_.clear();
-    dropped_ = 0;
-    return text;
-}
-
 WorkerProcess::~WorkerProcess() {
     if (pid_ > 0 && !exited_) {
         // Whatever is left of the worker's group goes now (it may be a worker that finished and

@@ -9,25 +9,15 @@
 
 #include "file_descriptor.h"
 #include "fork_server.h"
+#include "output_tail.h"
 #include "wire_format.h"
 
 namespace robottestingframework {
 namespace isolation {
 
-// The last bytes a worker printed, bounded so a chatty test cannot fill the runner's memory.
-class OutputTail {
-public:
-    explicit OutputTail(std::size_t limit = 64 * 1024) : limit_(limit) {}
-    void append(const std::string& bytes);
-    bool empty() const { return text_.empty(); }
-    // What is kept, marked when earlier output was dropped; then forgets it.
-    std::string take();
-
-private:
-    std::size_t limit_;
-    std::string text_;
-    std::size_t dropped_ = 0;
-};
+// The last bytes a worker printed (64 KiB), bounded so a chatty test cannot fill the runner's
+// memory.
+using languages::OutputTail;
 
 class WorkerProcess {
 public:

@@ -11,11 +11,17 @@
 #endif
 
 #include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
 #include <thread>
 
 #include "clock.h"
 #include "file_descriptor.h"
 #include "signal_name.h"
+
+extern char** environ;
 
 namespace robottestingframework {
 namespace platform {
@@ -30,9 +36,53 @@ namespace {
     ::_exit(127);
 }
 
+// "NAME=value" for our environment with `changes` applied.
+std::vector<std::string> mergedEnvironment(
+    const std::vector<std::pair<std::string, std::string>>& changes) {
+    std::map<std::string, std::string> merged;
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+        const char* eq = std::strchr(*entry, '=');
+        if (eq != nullptr) {
+            merged[std::string(*entry, static_cast<std::size_t>(eq - *entry))] = eq + 1;
+        }
+    }
+    for (const auto& [name, value] : changes) {
+        merged[name] = value;
+    }
+    std::vector<std::string> entries;
+    for (const auto& [name, value] : merged) {
+        entries.push_back(name + "=" + value);
+    }
+    return entries;
+}
+
+// exec said ENOENT although the program is there: the interpreter on its #! line is missing.
+std::string missingInterpreter(const std::string& program) {
+    if (program.find('/') == std::string::npos || ::access(program.c_str(), F_OK) != 0) {
+        return {};
+    }
+    std::ifstream file(program, std::ios::binary);
+    std::string first;
+    std::getline(file, first);
+    if (first.compare(0, 2, "#!") != 0) {
+        return {};
+    }
+    std::size_t begin = first.find_first_not_of(" \t", 2);
+    if (begin == std::string::npos) {
+        return program + ": its #! line names no interpreter";
+    }
+    std::size_t end = first.find_first_of(" \t\r", begin);
+    std::string interpreter = first.substr(begin, end == std::string::npos ? end : end - begin);
+    if (::access(interpreter.c_str(), X_OK) == 0) {
+        return {};
+    }
+    return program + ": its interpreter " + interpreter + " (line 1: " + first +
+           ") cannot be run: " + ::strerror(errno);
+}
+
 }  // namespace
 
-pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
+pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNumber) {
     if (options.argv.empty()) {
         error = "nothing to run";
         return -1;
@@ -43,6 +93,18 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
         argv.push_back(const_cast<char*>(word.c_str()));
     }
     argv.push_back(nullptr);
+    const char* program = options.program.empty() ? argv[0] : options.program.c_str();
+    const char* folder =
+        options.workingDirectory.empty() ? nullptr : options.workingDirectory.c_str();
+    std::vector<std::string> envEntries;
+    std::vector<char*> envp;
+    if (!options.environment.empty()) {
+        envEntries = mergedEnvironment(options.environment);
+        for (std::string& entry : envEntries) {
+            envp.push_back(entry.data());
+        }
+        envp.push_back(nullptr);
+    }
     int highest = 2;
     bool mapsStdin = false;
     for (const auto& mapping : options.fds) {
@@ -75,6 +137,12 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
 #else
         (void)parent;
 #endif
+        // Signals this process ignores or handles start at their defaults in the program.
+        for (int number = 1; number < NSIG; ++number) {
+            if (number != SIGKILL && number != SIGSTOP) {
+                ::signal(number, SIG_DFL);
+            }
+        }
         sigset_t none;
         sigemptyset(&none);
         ::sigprocmask(SIG_SETMASK, &none, nullptr);
@@ -119,7 +187,14 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
             ::close(fd);
         }
         closeDescriptorsFrom(report + 1);
-        ::execvp(argv[0], argv.data());
+        if (folder != nullptr && ::chdir(folder) != 0) {
+            failChild(report, "chdir");
+        }
+        if (envp.empty()) {
+            ::execvp(program, argv.data());
+        } else {
+            ::execvpe(program, argv.data(), envp.data());
+        }
         failChild(report, "exec");
     }
     reportWrite.reset();
@@ -132,7 +207,20 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error) {
         if (message.size() >= sizeof(code)) {
             ::memcpy(&code, message.data(), sizeof(code));
         }
-        error = message.substr(sizeof(code)) + " " + options.argv[0] + ": " + ::strerror(code);
+        const std::string step = message.substr(sizeof(code));
+        const std::string file = options.program.empty() ? options.argv[0] : options.program;
+        std::string interpreter = code == ENOENT && step == "exec" ? missingInterpreter(file) : "";
+        if (step == "chdir") {
+            error =
+                "cannot enter the folder '" + options.workingDirectory + "': " + ::strerror(code);
+        } else if (!interpreter.empty()) {
+            error = interpreter;
+        } else {
+            error = step + " " + file + ": " + ::strerror(code);
+        }
+        if (errorNumber != nullptr) {
+            *errorNumber = code;
+        }
         int status;
         ::waitpid(pid, &status, 0);
         return -1;

@@ -13,15 +13,21 @@ namespace platform {
 
 struct SpawnOptions {
     std::vector<std::string> argv;         // argv[0] is the program (a path, or searched)
+    std::string program;                   // the file to run instead of argv[0]
+    std::string workingDirectory;          // the child's; ours when empty
     std::vector<std::pair<int, int>> fds;  // {descriptor in the child, ours}; others closed
     bool newProcessGroup = true;           // the child leads a group of its own
     int parentDeathSignal = 0;             // sent to the child when we die (Linux); 0: none
     bool nullStdin = true;                 // stdin is /dev/null unless `fds` maps 0
+    // Set in (or added to) the child's environment, which is ours otherwise.
+    std::vector<std::pair<std::string, std::string>> environment;
 };
 
-// Starts a program. Returns its pid, or -1 with `error` set (including exec failures, which
-// are reported back from the child).
-pid_t spawnProcess(const SpawnOptions& options, std::string& error);
+// Starts a program, with every signal at its default disposition. Returns its pid, or -1 with
+// `error` set (including exec failures, which are reported back from the child; a script whose
+// #! interpreter is missing is reported as such).
+// `errorNumber`, when given, gets the errno of a failure.
+pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNumber = nullptr);
 
 // How a child ended, from a wait status.
 struct ExitStatus {

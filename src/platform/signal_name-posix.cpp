@@ -42,6 +42,15 @@ std::string signalName(int signal) {
     return "signal " + std::to_string(signal);
 }
 
+int signalNumber(const std::string& name) {
+    for (int number = 1; number < NSIG; ++number) {
+        if (signalName(number) == name) {
+            return number;
+        }
+    }
+    return 0;
+}
+
 std::string signalDescription(int signal) {
     const char* text = ::strsignal(signal);
     return text != nullptr ? text : signalName(signal);

@@ -70,24 +70,35 @@ int SignalPipe::fd() const {
     return readFd;
 }
 
-int SignalPipe::take() {
+namespace {
+
+// One byte from the pipe: true with the signal (0: a wake()), false when it is empty.
+bool readByte(int& value) {
     unsigned char byte;
     for (;;) {
         ssize_t n = ::read(readFd, &byte, 1);
         if (n == 1) {
-            return byte;
+            value = byte;
+            return true;
         }
         if (n < 0 && errno == EINTR) {
             continue;
         }
-        return 0;
+        return false;
     }
 }
 
+}  // namespace
+
+int SignalPipe::take() {
+    int signal = 0;
+    return readByte(signal) ? signal : 0;
+}
+
 int SignalPipe::wait(int timeoutMs) {
-    int signal = take();
-    if (signal != 0) {
-        return signal;
+    int signal = 0;
+    if (readByte(signal)) {
+        return signal;  // a wake() that came before the wait ends it too
     }
     pollfd pfd{readFd, POLLIN, 0};
     int n;

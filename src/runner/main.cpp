@@ -22,6 +22,7 @@
 #include "options.h"
 #include "output_capture.h"
 #include "output_paths.h"
+#include "process.h"
 #include "process_tree.h"
 #include "run_gate.h"
 #include "run_plan.h"
@@ -186,6 +187,12 @@ int main(int argc, char** argv) {
     // server's parent-death signal is tied to the thread that started it.
     std::unique_ptr<TestExecutor> executor;
     if (options.isolation == "none") {
+        std::fprintf(stderr,
+                     "%s: warning: --isolation none: a test that crashes, exits or blocks in "
+                     "native code ends or holds the run; a timeout can only ask it to stop\n",
+                     program);
+        // Daemons the tests leave (out of their process groups) are adopted, and end with us.
+        platform::becomeSubreaper();
         executor = std::make_unique<InProcessExecutor>();
     } else {
         auto isolated = std::make_unique<isolation::IsolatedExecutor>();
@@ -247,6 +254,9 @@ int main(int argc, char** argv) {
         interrupted = watcher.received();
     }
     capture.stop();
+    if (options.isolation == "none") {
+        platform::killDescendants(::getpid());
+    }
 
     int status = anythingFailed(collector) ? somethingFailed : allPassed;
     if (interrupted != 0) {

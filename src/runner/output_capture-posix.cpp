@@ -13,8 +13,9 @@ namespace runner {
 
 namespace {
 
-// More than this per test is cut to its tail: the last lines are the ones that explain.
-const off_t maxOutput = 4 * 1024 * 1024;
+// More than this per test is cut to its tail: the last lines are the ones that explain. The
+// same 64 KiB as a worker's output (README: Isolation).
+const off_t maxOutput = 64 * 1024;
 
 void flushStreams() {
     std::cout.flush();

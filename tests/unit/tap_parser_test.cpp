@@ -1,6 +1,7 @@
 // The TAP parser against a corpus of streams, valid and broken (tests/unit/tap/).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <sstream>
 
@@ -198,4 +199,103 @@ TEST(TapParser, EmptyStreamIsNotTap) {
     TapStream tap = parseTap("");
     EXPECT_FALSE(tap.isTap);
     EXPECT_FALSE(tap.failed());
+}
+
+TEST(TapParser, UnclosedYamlEndsAtALessIndentedLine) {
+    TapStream tap = parseTap("1..2\nnot ok 1 - torque\n  ---\n  message: too high\nok 2 - speed\n");
+    EXPECT_TRUE(hasProblem(tap, "YAML block not closed"));
+    EXPECT_FALSE(hasProblem(tap, "planned"));
+    ASSERT_EQ(tap.points.size(), 2u);
+    EXPECT_EQ(tap.points[0].diagnostics, "message: too high\n");
+    EXPECT_EQ(tap.points[1].description, "speed");
+    EXPECT_EQ(tap.problems[0].line, 3u);
+}
+
+TEST(TapParser, BailOutKnowsItsLine) {
+    TapStream tap = parseFile("bail_out.tap");
+    EXPECT_EQ(tap.bailOutLine, 4u);
+}
+
+TEST(TapParser, CutsEndlessLines) {
+    std::string stream = "1..1\nok 1 - " + std::string(10 * 1024 * 1024, 'y') + "\n";
+    TapStream tap = parseTap(stream);
+    ASSERT_EQ(tap.points.size(), 1u);
+    EXPECT_LT(tap.points[0].description.size(), 70u * 1024);
+    EXPECT_NE(tap.points[0].description.find("more bytes of this line dropped"), std::string::npos);
+}
+
+TEST(TapParser, PlainOutputIsNotHeldWithoutBound) {
+    // Before any TAP, lines are held back; past 64 KiB the oldest go out as plain text.
+    class Counter : public robottestingframework::languages::TapListener {
+    public:
+        void text(const std::string&) override { ++lines; }
+        std::size_t lines = 0;
+    } counter;
+    robottestingframework::languages::TapParser parser(counter);
+    const std::string line = "# " + std::string(98, 'x') + "\n";
+    for (int i = 0; i < 10000; ++i) {
+        parser.feed(line.data(), line.size());
+    }
+    EXPECT_GT(counter.lines, 9000u);  // given while the stream goes on, not all at its end
+    parser.finish();
+    EXPECT_EQ(counter.lines, 10000u);
+    EXPECT_FALSE(parser.isTap());
+}
+
+TEST(TapParser, TellsPointsAsTheyCome) {
+    class Points : public robottestingframework::languages::TapListener {
+    public:
+        void point(const TapPoint&) override { ++count; }
+        int count = 0;
+    } points;
+    robottestingframework::languages::TapParser parser(points);
+    const std::string start = "TAP version 13\n1..3\nok 1 - a\nok 2 - b\n";
+    parser.feed(start.data(), start.size());
+    EXPECT_EQ(points.count, 1);  // the second may still get a YAML block
+    parser.finish();
+    EXPECT_EQ(points.count, 2);
+    EXPECT_TRUE(parser.failed());  // planned 3
+}
+
+namespace {
+
+std::string nestedStream(int depth) {
+    std::string text;
+    for (int level = 0; level < depth; ++level) {
+        text += std::string(4 * level, ' ') + "# Subtest: level\n";
+    }
+    text += std::string(4 * depth, ' ') + "ok 1 - innermost\n";
+    text += std::string(4 * depth, ' ') + "1..1\n";
+    for (int level = depth - 1; level >= 0; --level) {
+        text += std::string(4 * level, ' ') + "ok 1 - level\n";
+        text += std::string(4 * level, ' ') + "1..1\n";
+    }
+    return text;
+}
+
+double bestParseSeconds(const std::string& text) {
+    double best = 1e9;
+    for (int round = 0; round < 3; ++round) {
+        auto start = std::chrono::steady_clock::now();
+        TapStream tap = parseTap(text);
+        double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_FALSE(tap.failed());
+        best = seconds < best ? seconds : best;
+    }
+    return best;
+}
+
+}  // namespace
+
+TEST(TapParser, NestedSubtestsParseInTimeLinearInTheStream) {
+    // Depth 2000 is 16 times the text of depth 500 (each line is indented by its depth).
+    // Linear parsing takes about 16 times as long; the former parser took 64 times as long.
+    const std::string small = nestedStream(500);
+    const std::string large = nestedStream(2000);
+    TapStream tap = parseTap(large);
+    ASSERT_EQ(tap.points.size(), 2001u);
+    EXPECT_EQ(tap.points[0].subtest, "level > level > ... > level > level > level");
+    const double ratio = bestParseSeconds(large) / bestParseSeconds(small);
+    EXPECT_LT(ratio, 32.0) << "depth 2000 took " << ratio << " times as long as depth 500";
 }

@@ -10,6 +10,8 @@
 
 #include "backends.h"
 #include "exec_process.h"
+#include "output_tail.h"
+#include "signal_name.h"
 #include "tap_parser.h"
 
 namespace robottestingframework {
@@ -47,6 +49,81 @@ std::string pointLabel(const TapPoint& point) {
     return point.subtest.empty() ? label : point.subtest + " > " + label;
 }
 
+// Reports TAP as the program prints it, so that a test stopped half-way (timeout, Ctrl-C) keeps
+// what it said; and bounds what it keeps, so that a program printing without end costs no
+// more than a talkative one.
+class TapReporter : public TapListener {
+public:
+    TapReporter(TestCase* test, const std::string& path, OutputTail& output)
+        : test_(test), path_(path), output_(output) {}
+
+    void point(const TapPoint& point) override {
+        bool failed = point.failed();
+        if (failed ? failedShown_ >= kMaxShown : shown_ >= kMaxShown) {
+            ++(failed ? failedHidden_ : hidden_);
+            if (failed && failedHidden_ == 1) {
+                // Past the limit a failure is still one: the verdict never depends on volume.
+                Asserter::testFail(false,
+                                   TestMessage("more than " + std::to_string(kMaxShown) +
+                                                   " TAP points failed: the rest are counted, "
+                                                   "not listed",
+                                               "", path_, point.line),
+                                   test_);
+            }
+            return;
+        }
+        ++(failed ? failedShown_ : shown_);
+        TestMessage message(pointLabel(point), point.diagnostics, path_, point.line);
+        if (point.directive == TapPoint::Directive::Todo && !point.ok) {
+            Asserter::report(message, test_);  // expected to fail
+        } else {
+            Asserter::testCheck(point.ok, message, test_);
+        }
+    }
+    void comment(const std::string& text) override {
+        if (comments_++ < kMaxShown) {
+            Asserter::report(TestMessage("# " + text), test_);
+        }
+    }
+    void problem(const TapProblem& problem) override {
+        if (problems_++ < kMaxShown) {
+            Asserter::testFail(
+                false, TestMessage("TAP: " + problem.message, "", path_, problem.line), test_);
+        }
+    }
+    void text(const std::string& line) override {
+        output_.append(line);
+        output_.append("\n", 1);
+    }
+
+    // One line for what was counted but not listed.
+    void summarize() {
+        if (hidden_ + failedHidden_ > 0) {
+            Asserter::report(TestMessage(std::to_string(hidden_ + failedHidden_) +
+                                         " more TAP points not listed (" +
+                                         std::to_string(failedHidden_) + " of them failed)"),
+                             test_);
+        }
+        std::size_t unlisted = (comments_ > kMaxShown ? comments_ - kMaxShown : 0) +
+                               (problems_ > kMaxShown ? problems_ - kMaxShown : 0);
+        if (unlisted > 0) {
+            Asserter::report(
+                TestMessage(std::to_string(unlisted) + " more TAP comments or problems not listed"),
+                test_);
+        }
+    }
+
+private:
+    // Points (passed and failed counted apart), comments and problems listed in the report.
+    static constexpr std::size_t kMaxShown = 10000;
+
+    TestCase* test_;
+    std::string path_;
+    OutputTail& output_;
+    std::size_t shown_ = 0, failedShown_ = 0, hidden_ = 0, failedHidden_ = 0;
+    std::size_t comments_ = 0, problems_ = 0;
+};
+
 class ExecTestCase : public TestCase {
 public:
     explicit ExecTestCase(const std::string& path) : TestCase(path), path_(path) {}
@@ -56,47 +133,68 @@ public:
         for (auto& word : Arguments::split(getParam())) {
             argv.push_back(std::move(word));
         }
+        // What it printed, stdout (besides TAP) and stderr in the order they came, cut to
+        // the last 64 KiB; and the ends of each, for the verdict's message.
+        OutputTail output;
+        OutputTail lastOut(4096), lastErr(4096);
+        TapReporter reporter(this, path_, output);
+        TapParser tap(reporter);
+        bool stopped = false;
+        auto onOut = [&](const char* data, std::size_t size) {
+            if (!stopped) {
+                lastOut.append(data, size);
+                tap.feed(data, size);
+            }
+        };
+        auto onErr = [&](const char* data, std::size_t size) {
+            if (!stopped) {
+                lastErr.append(data, size);
+                output.append(data, size);
+            }
+        };
+        // Asked to stop (timeout, Ctrl-C): report at once what was said, while we may.
+        auto onStopping = [&]() {
+            tap.abandon();
+            reportOutput(output);
+            stopped = true;
+        };
         ExecOutcome outcome = process_.run(
-            argv, {{"RTF_ENVIRONMENT", getEnvironment()}, {"RTF_TEST_NAME", getName()}});
+            argv, {{"RTF_ENVIRONMENT", getEnvironment()}, {"RTF_TEST_NAME", getName()}}, onOut,
+            onErr, onStopping);
+        if (!stopped) {
+            tap.finish();
+            reportOutput(output);
+        }
+        const std::string err = lastErr.take();
         if (!outcome.started) {
             Asserter::error(TestMessage("cannot run " + path_, outcome.startError, path_, 0));
         }
-        TapStream tap = parseTap(outcome.out);
-        std::string output;
-        for (const auto& line : tap.otherText) {
-            output += line + "\n";
-        }
-        output += outcome.err;
-        if (!output.empty() && getResult()) {
-            getResult()->addOutput(this, output);
-        }
-        if (interrupted()) {
+        if (interrupted() || stopped) {
             return;  // the runner reports the interruption
         }
-        if (tap.isTap) {
-            reportTap(tap);
-        }
+        reporter.summarize();
         std::string status = "exited with status " + std::to_string(outcome.exitStatus);
         if (outcome.signal != 0) {
-            TestMessage crash("killed by " + signalName(outcome.signal), lastLine(outcome.err),
+            TestMessage crash("killed by " + platform::signalName(outcome.signal), lastLine(err),
                               path_, 0);
             if (getResult()) {
                 getResult()->addCrash(this, crash);  // the state: crashed
             }
             return;
         }
-        if (tap.isTap) {
-            if (tap.bailedOut) {
-                Asserter::error(TestMessage("Bail out! " + tap.bailOutReason, "", path_, 0));
+        if (tap.isTap()) {
+            if (tap.bailedOut()) {
+                Asserter::error(
+                    TestMessage("Bail out! " + tap.bailOutReason(), "", path_, tap.bailOutLine()));
             }
             if (outcome.exitStatus != 0 && !tap.failed()) {
-                Asserter::fail(TestMessage(status, lastLine(outcome.err), path_, 0));
+                Asserter::fail(TestMessage(status, lastLine(err), path_, 0));
             }
-            if (tap.skipAll && !tap.failed() && getResult()) {
+            if (tap.skipAll() && !tap.failed() && getResult()) {
                 getResult()->addSkipped(
                     this,
-                    TestMessage(tap.skipReason.empty() ? "skipped (plan 1..0)" : tap.skipReason, "",
-                                path_, 0));
+                    TestMessage(tap.skipReason().empty() ? "skipped (plan 1..0)" : tap.skipReason(),
+                                "", path_, 0));
             }
             return;
         }
@@ -104,11 +202,10 @@ public:
             if (getResult()) {
                 getResult()->addSkipped(
                     this, TestMessage("skipped (exit status 77)",
-                                      lastLine(outcome.err.empty() ? outcome.out : outcome.err),
-                                      path_, 0));
+                                      lastLine(err.empty() ? lastOut.take() : err), path_, 0));
             }
         } else if (outcome.exitStatus != 0) {
-            Asserter::fail(TestMessage(status, lastLine(outcome.err), path_, 0));
+            Asserter::fail(TestMessage(status, lastLine(err), path_, 0));
         }
     }
 
@@ -118,21 +215,9 @@ public:
     }
 
 private:
-    void reportTap(const TapStream& tap) {
-        for (const auto& comment : tap.comments) {
-            Asserter::report(TestMessage("# " + comment), this);
-        }
-        for (const auto& point : tap.points) {
-            TestMessage message(pointLabel(point), point.diagnostics, path_, point.line);
-            if (point.directive == TapPoint::Directive::Todo && !point.ok) {
-                Asserter::report(message, this);  // expected to fail
-            } else {
-                Asserter::testCheck(point.ok, message, this);
-            }
-        }
-        for (const auto& problem : tap.problems) {
-            Asserter::testFail(
-                false, TestMessage("TAP: " + problem.message, "", path_, problem.line), this);
+    void reportOutput(OutputTail& output) {
+        if (!output.empty() && getResult()) {
+            getResult()->addOutput(this, output.take());
         }
     }
 

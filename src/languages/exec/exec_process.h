@@ -1,8 +1,11 @@
-// Runs a program to its end, collecting what it prints on stdout and stderr separately.
+// Runs a program to its end, handing what it prints on stdout and stderr to the caller as it
+// arrives (nothing is accumulated here: a program may print without end).
 #pragma once
 
 #include <sys/types.h>
 #include <chrono>
+#include <cstddef>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <utility>
@@ -16,16 +19,20 @@ struct ExecOutcome {
     std::string startError;  // why it could not be started
     int exitStatus = -1;     // when it exited
     int signal = 0;          // when a signal ended it
-    std::string out;
-    std::string err;
 };
 
 class ExecProcess {
 public:
+    using Sink = std::function<void(const char* data, std::size_t size)>;
+
     // Runs argv[0] (a path) with argv, the environment of this process plus `environment`
-    // (name, value pairs), stdin from /dev/null. Returns once it has ended.
+    // (name, value pairs), stdin from /dev/null, in a process group of its own that gets
+    // SIGKILL if this thread dies. `out` and `err` get its output as it comes. When a stop is
+    // asked for (terminate()), `stopping` is called once, before the program is stopped, so
+    // that the caller can report what it has while it still may. Returns once it has ended.
     ExecOutcome run(const std::vector<std::string>& argv,
-                    const std::vector<std::pair<std::string, std::string>>& environment);
+                    const std::vector<std::pair<std::string, std::string>>& environment,
+                    const Sink& out, const Sink& err, const std::function<void()>& stopping);
     // Stops the running program and everything in its process group (SIGTERM, then SIGKILL
     // after a grace), or the next one as soon as it starts (until reset()). Thread-safe.
     // Whatever the program left in its group is stopped when it ends, in any case.
@@ -38,9 +45,6 @@ private:
     bool terminate_ = false;
     std::chrono::steady_clock::time_point terminatedAt_;
 };
-
-// "SIGSEGV", "SIGKILL", ... or "signal N".
-std::string signalName(int signal);
 
 }  // namespace languages
 }  // namespace robottestingframework

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <cstddef>
+#include <cstring>
+#include <utility>
 
 namespace robottestingframework {
 namespace languages {
@@ -87,276 +89,425 @@ std::string directiveReason(const std::string& text) {
     return reason;
 }
 
-class Parser {
-public:
-    Parser(const std::string& text, TapStream& out) : out_(out) {
-        std::size_t start = 0;
-        while (start < text.size()) {
-            std::size_t end = text.find('\n', start);
-            if (end == std::string::npos) {
-                end = text.size();
-            }
-            std::string line = text.substr(start, end - start);
-            if (!line.empty() && line.back() == '\r') {
-                line.pop_back();
-            }
-            lines_.push_back(std::move(line));
-            start = end + 1;
-        }
+// Lines held back before the stream is known to be TAP, at most this many bytes.
+constexpr std::size_t kMaxHeld = 64 * 1024;
+// Subtest paths name at most this many levels ("a > b > ... > y > z"), so that deep nesting
+// costs linear time.
+constexpr std::size_t kPathHead = 2;
+constexpr std::size_t kPathTail = 3;
+constexpr std::size_t kMaxSubtestName = 256;
+
+std::string subtestName(const std::string& afterKeyword) {
+    std::string name = trim(afterKeyword);
+    if (!name.empty() && name[0] == ':') {
+        name = trim(name.substr(1));
     }
-
-    void parse() {
-        Level top = block(0, lines_.size(), 0, "");
-        out_.isTap = top.sawVersion || top.planned >= 0 || top.count > 0 || out_.bailedOut;
-        if (!out_.isTap) {
-            // Plain output that happens to contain a comment or two: none of it is TAP.
-            out_.comments.clear();
-            out_.problems.clear();
-            out_.otherText.clear();
-            for (const auto& line : lines_) {
-                out_.otherText.push_back(line);
-            }
-            while (!out_.otherText.empty() && isBlank(out_.otherText.back())) {
-                out_.otherText.pop_back();
-            }
-        }
-    }
-
-private:
-    struct Level {
-        bool sawVersion = false;
-        long planned = -1;
-        unsigned int planLine = 0;
-        unsigned int count = 0;
-        unsigned int beforePlan = 0;
-        unsigned int afterPlan = 0;
-    };
-
-    void problem(std::size_t index, const std::string& path, const std::string& message) {
-        TapProblem p;
-        p.line = index == std::string::npos ? 0 : static_cast<unsigned int>(index + 1);
-        p.message = path.empty() ? message : "subtest '" + path + "': " + message;
-        out_.problems.push_back(std::move(p));
-    }
-
-    // Parses lines [begin, end) that belong to one stream indented by `indent` spaces.
-    Level block(std::size_t begin, std::size_t end, std::size_t indent, const std::string& path) {
-        Level level;
-        std::string subtestName;
-        long lastPoint = -1;  // index in out_.points a YAML block would belong to
-        for (std::size_t i = begin; i < end && !out_.bailedOut; ++i) {
-            const std::string& line = lines_[i];
-            if (isBlank(line)) {
-                continue;
-            }
-            std::size_t lead = leadingSpaces(line);
-            if (lastPoint >= 0 && lead == indent + 2 && trim(line) == "---") {
-                i = yamlBlock(i, end, indent + 2, out_.points[static_cast<std::size_t>(lastPoint)],
-                              path);
-                lastPoint = -1;
-                continue;
-            }
-            lastPoint = -1;
-            if (lead >= indent + 4) {
-                i = subtest(i, end, indent, path, subtestName) - 1;
-                subtestName.clear();
-                continue;
-            }
-            if (lead != indent) {
-                out_.otherText.push_back(line);
-                continue;
-            }
-            std::string content = line.substr(indent);
-            if (startsWith(content, "TAP version ")) {
-                std::size_t pos = 12;
-                unsigned long version = 0;
-                if (!readNumber(content, pos, version) || version < 12 || version > 14) {
-                    problem(i, path, "unsupported '" + content + "' (versions 12 to 14 are)");
-                } else if (indent == 0) {
-                    out_.version = static_cast<int>(version);
-                }
-                level.sawVersion = true;
-            } else if (startsWith(content, "1..")) {
-                plan(i, content, path, indent, level);
-            } else if (startsWith(content, "ok") || startsWith(content, "not ok")) {
-                if (!point(i, content, path, level)) {
-                    out_.otherText.push_back(line);
-                    continue;
-                }
-                lastPoint = static_cast<long>(out_.points.size()) - 1;
-                subtestName.clear();
-            } else if (startsWith(content, "Bail out!")) {
-                out_.bailedOut = true;
-                out_.bailOutReason = trim(content.substr(9));
-            } else if (startsWith(content, "#")) {
-                std::string comment = trim(content.substr(1));
-                if (startsWith(comment, "Subtest")) {
-                    std::string name = trim(comment.substr(7));
-                    if (!name.empty() && name[0] == ':') {
-                        name = trim(name.substr(1));
-                    }
-                    subtestName = name;
-                } else {
-                    out_.comments.push_back(comment);
-                }
-            } else if (startsWith(content, "pragma ")) {
-                // Parser pragmas change nothing here.
-            } else {
-                out_.otherText.push_back(line);
-            }
-        }
-        if (!out_.bailedOut) {
-            checkPlan(path, level);
-        }
-        return level;
-    }
-
-    void plan(std::size_t i, const std::string& content, const std::string& path,
-              std::size_t indent, Level& level) {
-        std::size_t pos = 3;
-        unsigned long planned = 0;
-        if (!readNumber(content, pos, planned)) {
-            problem(i, path, "malformed plan '" + content + "'");
-            return;
-        }
-        if (level.planned >= 0) {
-            problem(i, path, "more than one plan");
-            return;
-        }
-        level.planned = static_cast<long>(planned);
-        level.planLine = static_cast<unsigned int>(i + 1);
-        level.beforePlan = level.count;
-        std::string rest = trim(content.substr(pos));
-        if (planned == 0 && indent == 0) {
-            out_.skipAll = true;
-            if (!rest.empty() && rest[0] == '#') {
-                rest = trim(rest.substr(1));
-                out_.skipReason = startsWithWordNoCase(rest, "skip") ? directiveReason(rest) : rest;
-            }
-        }
-    }
-
-    bool point(std::size_t i, const std::string& content, const std::string& path, Level& level) {
-        TapPoint p;
-        p.ok = startsWith(content, "ok");
-        std::size_t pos = p.ok ? 2 : 6;
-        if (pos < content.size() && content[pos] != ' ' && content[pos] != '#') {
-            return false;  // "okay", "oknot": not a test line
-        }
-        while (pos < content.size() && content[pos] == ' ') {
-            ++pos;
-        }
-        unsigned long number = 0;
-        bool numbered = readNumber(content, pos, number);
-        ++level.count;
-        if (numbered && number != level.count) {
-            problem(i, path,
-                    "test number " + std::to_string(number) + " out of sequence (expected " +
-                        std::to_string(level.count) + ")");
-        }
-        p.number = numbered ? static_cast<unsigned int>(number) : level.count;
-        std::string rest = content.substr(pos);
-        // The description ends at the first unescaped '#': a directive may follow.
-        std::size_t hash = std::string::npos;
-        for (std::size_t k = 0; k < rest.size(); ++k) {
-            if (rest[k] == '\\') {
-                ++k;
-            } else if (rest[k] == '#') {
-                hash = k;
-                break;
-            }
-        }
-        std::string description = trim(rest.substr(0, hash));
-        if (startsWith(description, "-")) {
-            description = trim(description.substr(1));
-        }
-        p.description = unescape(description);
-        if (hash != std::string::npos) {
-            std::string directive = trim(rest.substr(hash + 1));
-            if (startsWithWordNoCase(directive, "skip")) {
-                p.directive = TapPoint::Directive::Skip;
-                p.reason = directiveReason(directive);
-            } else if (startsWithWordNoCase(directive, "todo")) {
-                p.directive = TapPoint::Directive::Todo;
-                p.reason = directiveReason(directive);
-            } else if (!directive.empty()) {
-                p.description += " # " + directive;
-            }
-        }
-        p.subtest = path;
-        p.line = static_cast<unsigned int>(i + 1);
-        if (level.planned >= 0) {
-            ++level.afterPlan;
-        }
-        out_.points.push_back(std::move(p));
-        return true;
-    }
-
-    // Reads the YAML block starting at `i` ("---"); returns the index of its "..." line.
-    std::size_t yamlBlock(std::size_t i, std::size_t end, std::size_t indent, TapPoint& point,
-                          const std::string& path) {
-        std::string yaml;
-        for (std::size_t k = i + 1; k < end; ++k) {
-            const std::string& line = lines_[k];
-            if (leadingSpaces(line) == indent && trim(line) == "...") {
-                point.diagnostics = yaml;
-                return k;
-            }
-            yaml += (line.size() >= indent ? line.substr(indent) : trim(line)) + "\n";
-        }
-        problem(i, path, "YAML block not closed with '...'");
-        point.diagnostics = yaml;
-        return end - 1;
-    }
-
-    // Parses the indented stream starting at `i`; returns the index after it.
-    std::size_t subtest(std::size_t i, std::size_t end, std::size_t indent, const std::string& path,
-                        std::string name) {
-        std::size_t j = i;
-        while (j < end && (isBlank(lines_[j]) || leadingSpaces(lines_[j]) >= indent + 4)) {
-            ++j;
-        }
-        // The older form names the subtest on the first line of the indented stream.
-        std::string first = trim(lines_[i]);
-        std::size_t from = i;
-        if (name.empty() && startsWith(first, "# Subtest")) {
-            name = trim(first.substr(9));
-            if (!name.empty() && name[0] == ':') {
-                name = trim(name.substr(1));
-            }
-            from = i + 1;
-        }
-        if (name.empty()) {
-            name = "subtest";
-        }
-        block(from, j, indent + 4, path.empty() ? name : path + " > " + name);
-        return j;
-    }
-
-    void checkPlan(const std::string& path, const Level& level) {
-        if (level.planned < 0) {
-            if (level.count > 0 || level.sawVersion) {
-                problem(std::string::npos, path,
-                        "no plan (expected a line '1.." + std::to_string(level.count) + "')");
-            }
-            return;
-        }
-        if (level.beforePlan > 0 && level.afterPlan > 0) {
-            problem(level.planLine - 1, path,
-                    "the plan must come before the first test or after the last one");
-        }
-        if (static_cast<unsigned long>(level.planned) != level.count) {
-            problem(level.planLine - 1, path,
-                    "planned " + std::to_string(level.planned) + " test(s) but ran " +
-                        std::to_string(level.count));
-        }
-    }
-
-    std::vector<std::string> lines_;
-    TapStream& out_;
-};
+    return name.size() > kMaxSubtestName ? name.substr(0, kMaxSubtestName) + "..." : name;
+}
 
 }  // namespace
+
+void TapParser::feed(const char* data, std::size_t size) {
+    while (size > 0) {
+        const char* newline = static_cast<const char*>(std::memchr(data, '\n', size));
+        std::size_t take = newline ? static_cast<std::size_t>(newline - data) : size;
+        std::size_t room = kMaxTapLine > partial_.size() ? kMaxTapLine - partial_.size() : 0;
+        partial_.append(data, take < room ? take : room);
+        partialCut_ += take > room ? take - room : 0;
+        if (!newline) {
+            return;
+        }
+        std::string text = std::move(partial_);
+        partial_.clear();
+        if (partialCut_ > 0) {
+            text += " [... " + std::to_string(partialCut_) + " more bytes of this line dropped]";
+            partialCut_ = 0;
+        }
+        line(std::move(text));
+        data += take + 1;
+        size -= take + 1;
+    }
+}
+
+void TapParser::line(std::string text) {
+    if (finished_) {
+        return;
+    }
+    ++lineNumber_;
+    if (!text.empty() && text.back() == '\r') {
+        text.pop_back();
+    }
+    if (text.size() > kMaxTapLine) {
+        std::size_t cut = text.size() - kMaxTapLine;
+        text.resize(kMaxTapLine);
+        text += " [... " + std::to_string(cut) + " more bytes of this line dropped]";
+    }
+    if (!isTap_) {
+        heldBytes_ += text.size() + 1;
+        held_.push_back(Held{Held::Kind::Line, text, false, {}});
+        lineItem_ = held_.size() - 1;
+    }
+    process(text);
+    while (!isTap_ && heldBytes_ > kMaxHeld && !held_.empty()) {
+        // Too much before any TAP: the oldest lines are plain output after all.
+        Held& oldest = held_.front();
+        if (oldest.kind == Held::Kind::Line) {
+            heldBytes_ -= oldest.raw.size() + 1;
+            giveText(oldest.raw);
+        }
+        held_.pop_front();
+        lineItem_ = lineItem_ > 0 ? lineItem_ - 1 : 0;
+    }
+}
+
+void TapParser::process(const std::string& text) {
+    if (bailedOut_) {
+        emitText(text);  // after a bail out nothing is TAP any more
+        return;
+    }
+    const bool blank = isBlank(text);
+    const std::size_t lead = leadingSpaces(text);
+    if (inYaml_) {
+        const std::size_t indent = pendingIndent_ + 2;
+        if (blank || lead >= indent) {
+            if (lead == indent && trim(text) == "...") {
+                closeYaml(true);
+            } else if (pending_.diagnostics.size() < kMaxTapLine) {
+                pending_.diagnostics += (blank ? std::string() : text.substr(indent)) + "\n";
+            }
+            return;
+        }
+        closeYaml(false);  // a less indented line ends the block, and is read as what it is
+    }
+    if (blank) {
+        return;
+    }
+    if (havePending_ && lead == pendingIndent_ + 2 && trim(text) == "---") {
+        inYaml_ = true;
+        yamlLine_ = lineNumber_;
+        return;
+    }
+    flushPending();
+    while (levels_.size() > 1 && lead < levels_.back().indent) {
+        closeLevel();
+    }
+    // A deeper line starts a subtest (one level per four spaces).
+    while (lead >= levels_.back().indent + 4) {
+        Level& parent = levels_.back();
+        Level child;
+        child.indent = parent.indent + 4;
+        child.name = std::move(parent.nextSubtest);
+        parent.nextSubtest.clear();
+        bool namesIt = false;
+        if (child.name.empty() && lead == child.indent) {
+            std::string content = text.substr(lead);
+            if (startsWith(content, "# Subtest")) {
+                child.name = subtestName(content.substr(9));  // the older form names it first
+                namesIt = true;
+            }
+        }
+        if (child.name.empty()) {
+            child.name = "subtest";
+        }
+        levels_.push_back(std::move(child));
+        if (namesIt) {
+            return;
+        }
+    }
+    Level& level = levels_.back();
+    if (lead != level.indent) {
+        emitText(text);
+        return;
+    }
+    std::string content = text.substr(lead);
+    if (startsWith(content, "TAP version ")) {
+        if (levels_.size() == 1) {
+            decideTap();
+        }
+        std::size_t pos = 12;
+        unsigned long version = 0;
+        if (!readNumber(content, pos, version) || version < 12 || version > 14) {
+            emitProblem(lineNumber_, "unsupported '" + content + "' (versions 12 to 14 are)");
+        } else if (levels_.size() == 1) {
+            version_ = static_cast<int>(version);
+        }
+        level.sawVersion = true;
+    } else if (startsWith(content, "1..")) {
+        plan(content);
+    } else if (startsWith(content, "ok") || startsWith(content, "not ok")) {
+        if (!point(content)) {
+            emitText(text);
+        }
+    } else if (startsWith(content, "Bail out!")) {
+        decideTap();
+        bailedOut_ = true;
+        bailOutReason_ = trim(content.substr(9));
+        bailOutLine_ = lineNumber_;
+    } else if (startsWith(content, "#")) {
+        std::string comment = trim(content.substr(1));
+        if (startsWith(comment, "Subtest")) {
+            level.nextSubtest = subtestName(comment.substr(7));
+        } else {
+            emitComment(comment);
+        }
+    } else if (startsWith(content, "pragma ")) {
+        // Parser pragmas change nothing here.
+    } else {
+        emitText(text);
+    }
+}
+
+void TapParser::plan(const std::string& content) {
+    Level& level = levels_.back();
+    std::size_t pos = 3;
+    unsigned long planned = 0;
+    if (!readNumber(content, pos, planned)) {
+        emitProblem(lineNumber_, "malformed plan '" + content + "'");
+        return;
+    }
+    const bool top = levels_.size() == 1;
+    if (top) {
+        decideTap();
+    }
+    if (level.planned >= 0) {
+        emitProblem(lineNumber_, "more than one plan");
+        return;
+    }
+    level.planned = static_cast<long>(planned);
+    level.planLine = lineNumber_;
+    level.beforePlan = level.count;
+    std::string rest = trim(content.substr(pos));
+    if (planned == 0 && top) {
+        skipAll_ = true;
+        if (!rest.empty() && rest[0] == '#') {
+            rest = trim(rest.substr(1));
+            skipReason_ = startsWithWordNoCase(rest, "skip") ? directiveReason(rest) : rest;
+        }
+    }
+}
+
+bool TapParser::point(const std::string& content) {
+    Level& level = levels_.back();
+    TapPoint p;
+    p.ok = startsWith(content, "ok");
+    std::size_t pos = p.ok ? 2 : 6;
+    if (pos < content.size() && content[pos] != ' ' && content[pos] != '#') {
+        return false;  // "okay", "oknot": not a test line
+    }
+    decideTap();
+    while (pos < content.size() && content[pos] == ' ') {
+        ++pos;
+    }
+    unsigned long number = 0;
+    bool numbered = readNumber(content, pos, number);
+    ++level.count;
+    if (numbered && number != level.count) {
+        emitProblem(lineNumber_, "test number " + std::to_string(number) +
+                                     " out of sequence (expected " + std::to_string(level.count) +
+                                     ")");
+    }
+    p.number = numbered ? static_cast<unsigned int>(number) : level.count;
+    std::string rest = content.substr(pos);
+    // The description ends at the first unescaped '#': a directive may follow.
+    std::size_t hash = std::string::npos;
+    for (std::size_t k = 0; k < rest.size(); ++k) {
+        if (rest[k] == '\\') {
+            ++k;
+        } else if (rest[k] == '#') {
+            hash = k;
+            break;
+        }
+    }
+    std::string description = trim(rest.substr(0, hash));
+    if (startsWith(description, "-")) {
+        description = trim(description.substr(1));
+    }
+    p.description = unescape(description);
+    if (hash != std::string::npos) {
+        std::string directive = trim(rest.substr(hash + 1));
+        if (startsWithWordNoCase(directive, "skip")) {
+            p.directive = TapPoint::Directive::Skip;
+            p.reason = directiveReason(directive);
+        } else if (startsWithWordNoCase(directive, "todo")) {
+            p.directive = TapPoint::Directive::Todo;
+            p.reason = directiveReason(directive);
+        } else if (!directive.empty()) {
+            p.description += " # " + directive;
+        }
+    }
+    p.subtest = path();
+    p.line = lineNumber_;
+    if (level.planned >= 0) {
+        ++level.afterPlan;
+    }
+    level.nextSubtest.clear();
+    pending_ = std::move(p);
+    pendingIndent_ = level.indent;
+    havePending_ = true;  // told once we know whether a YAML block follows
+    return true;
+}
+
+void TapParser::closeYaml(bool closed) {
+    inYaml_ = false;
+    if (!closed) {
+        emitProblem(yamlLine_, "YAML block not closed with '...'");
+    }
+    flushPending();
+}
+
+void TapParser::flushPending() {
+    if (!havePending_) {
+        return;
+    }
+    havePending_ = false;
+    if (pending_.failed()) {
+        ++failedPoints_;
+    }
+    listener_.point(pending_);
+    pending_ = TapPoint();
+}
+
+// The innermost level ends: its plan is checked.
+void TapParser::closeLevel() {
+    const Level& level = levels_.back();
+    if (level.planned < 0) {
+        if (level.count > 0 || level.sawVersion) {
+            emitProblem(0, "no plan (expected a line '1.." + std::to_string(level.count) + "')");
+        }
+    } else {
+        if (level.beforePlan > 0 && level.afterPlan > 0) {
+            emitProblem(level.planLine,
+                        "the plan must come before the first test or after the last one");
+        }
+        if (static_cast<unsigned long>(level.planned) != level.count) {
+            emitProblem(level.planLine, "planned " + std::to_string(level.planned) +
+                                            " test(s) but ran " + std::to_string(level.count));
+        }
+    }
+    if (levels_.size() > 1) {
+        levels_.pop_back();
+        levels_.back().nextSubtest.clear();
+    }
+}
+
+void TapParser::finish() {
+    end(true);
+}
+
+void TapParser::abandon() {
+    end(false);
+}
+
+void TapParser::end(bool check) {
+    if (finished_) {
+        return;
+    }
+    if (!partial_.empty() || partialCut_ > 0) {
+        feed("\n", 1);
+    }
+    if (inYaml_) {
+        inYaml_ = false;
+        if (check) {
+            emitProblem(yamlLine_, "YAML block not closed with '...'");
+        }
+    }
+    flushPending();
+    if (check && !bailedOut_) {
+        while (levels_.size() > 1) {
+            closeLevel();
+        }
+        closeLevel();
+    }
+    if (!isTap_) {
+        // Plain output that may contain a comment or two: none of it is TAP.
+        for (const Held& item : held_) {
+            if (item.kind == Held::Kind::Line) {
+                giveText(item.raw);
+            }
+        }
+        held_.clear();
+        heldBytes_ = 0;
+    }
+    finished_ = true;
+}
+
+void TapParser::decideTap() {
+    if (isTap_) {
+        return;
+    }
+    isTap_ = true;
+    for (const Held& item : held_) {
+        if (item.kind == Held::Kind::Line) {
+            if (item.isText) {
+                listener_.text(item.raw);
+            }
+        } else if (item.kind == Held::Kind::Comment) {
+            listener_.comment(item.raw);
+        } else {
+            ++problems_;
+            listener_.problem(item.problem);
+        }
+    }
+    held_.clear();
+    heldBytes_ = 0;
+    heldBlankLines_ = 0;
+}
+
+std::string TapParser::path() const {
+    std::string text;
+    const std::size_t depth = levels_.size() - 1;
+    for (std::size_t k = 1; k < levels_.size(); ++k) {
+        if (depth > kPathHead + kPathTail + 1 && k > kPathHead && k <= depth - kPathTail) {
+            if (k == kPathHead + 1) {
+                text += " > ...";
+            }
+            continue;
+        }
+        text += (text.empty() ? "" : " > ") + levels_[k].name;
+    }
+    return text;
+}
+
+void TapParser::emitText(const std::string& raw) {
+    if (!isTap_) {
+        held_[lineItem_].isText = true;
+    } else if (!isBlank(raw)) {
+        listener_.text(raw);
+    }
+}
+
+void TapParser::emitComment(const std::string& comment) {
+    if (!isTap_) {
+        held_.push_back(Held{Held::Kind::Comment, comment, false, {}});
+    } else {
+        listener_.comment(comment);
+    }
+}
+
+void TapParser::emitProblem(unsigned int line, const std::string& message) {
+    TapProblem problem;
+    problem.line = line;
+    const std::string where = path();
+    problem.message = where.empty() ? message : "subtest '" + where + "': " + message;
+    if (!isTap_) {
+        held_.push_back(Held{Held::Kind::Problem, {}, false, std::move(problem)});
+    } else {
+        ++problems_;
+        listener_.problem(problem);
+    }
+}
+
+// Plain output of a stream that is not TAP: blank lines at its end are dropped.
+void TapParser::giveText(const std::string& raw) {
+    if (isBlank(raw)) {
+        ++heldBlankLines_;
+        return;
+    }
+    for (; heldBlankLines_ > 0; --heldBlankLines_) {
+        listener_.text("");
+    }
+    listener_.text(raw);
+}
 
 bool TapStream::failed() const {
     if (bailedOut || !problems.empty()) {
@@ -370,9 +521,35 @@ bool TapStream::failed() const {
     return false;
 }
 
+namespace {
+
+class Collector : public TapListener {
+public:
+    explicit Collector(TapStream& stream) : stream_(stream) {}
+    void point(const TapPoint& point) override { stream_.points.push_back(point); }
+    void comment(const std::string& text) override { stream_.comments.push_back(text); }
+    void problem(const TapProblem& problem) override { stream_.problems.push_back(problem); }
+    void text(const std::string& line) override { stream_.otherText.push_back(line); }
+
+private:
+    TapStream& stream_;
+};
+
+}  // namespace
+
 TapStream parseTap(const std::string& text) {
     TapStream stream;
-    Parser(text, stream).parse();
+    Collector collector(stream);
+    TapParser parser(collector);
+    parser.feed(text.data(), text.size());
+    parser.finish();
+    stream.isTap = parser.isTap();
+    stream.version = parser.version();
+    stream.skipAll = parser.skipAll();
+    stream.skipReason = parser.skipReason();
+    stream.bailedOut = parser.bailedOut();
+    stream.bailOutReason = parser.bailOutReason();
+    stream.bailOutLine = parser.bailOutLine();
     return stream;
 }
 

@@ -92,6 +92,7 @@ public:
             // Raised in the script at its next bytecode: stops loops, not blocking C calls.
             py::gil_scoped_acquire gil;
             PyThreadState_SetAsyncExc(thread, PyExc_KeyboardInterrupt);
+            wakeScript(thread);  // out of time.sleep() and other blocking calls
         }
     }
 

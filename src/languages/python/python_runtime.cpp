@@ -1,5 +1,8 @@
 #include "python_runtime.h"
 
+#include <pthread.h>
+#include <signal.h>
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -220,6 +223,56 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
     });
 }
 
+namespace {
+
+// os._exit() skips everything: in the runner's own process (--isolation none) it would end the
+// run with status 0 and no result files. In the process that loaded the interpreter it raises
+// SystemExit instead, an error of the test; a forked child still exits at once.
+const char* const kExitGuardSource = R"PY(
+import os
+def _guard(real=os._exit, pid=os.getpid(), getpid=os.getpid):
+    def _exit(status):
+        if getpid() != pid:
+            real(status)
+        raise SystemExit("os._exit(%r) was called: it would end the test runner's process "
+                         "without a report" % (status,))
+    return _exit
+os._exit = _guard()
+)PY";
+
+// The signal that wakes a sleeping script (see wakeScript): a real-time one nobody else uses.
+int wakeSignal() {
+    return SIGRTMAX - 2;
+}
+bool g_wakeInstalled = false;
+
+void installWakeHandler() {
+    py::dict globals;
+    globals["__builtins__"] = py::module_::import("builtins");
+    globals["number"] = wakeSignal();
+    try {
+        py::exec(R"PY(
+import signal
+def _wake(signum, frame):
+    raise KeyboardInterrupt
+signal.signal(number, _wake)
+)PY",
+                 globals);
+        g_wakeInstalled = true;
+    } catch (py::error_already_set&) {
+        // Not the main thread: blocking calls cannot be woken.
+    }
+}
+
+void guardProcessExit() {
+    py::dict globals;
+    globals["__builtins__"] = py::module_::import("builtins");
+    globals["__name__"] = "_rtf_exit_guard";
+    py::exec(kExitGuardSource, globals);
+}
+
+}  // namespace
+
 void ensureInterpreter() {
     static std::once_flag once;
     std::call_once(once, [] {
@@ -249,9 +302,17 @@ void ensureInterpreter() {
             g_scopeType = globals["Scope"];
             g_scopeType.inc_ref();  // never released: the interpreter is never finalized
             addVirtualEnvironment();
+            guardProcessExit();
+            installWakeHandler();
         }
         PyEval_SaveThread();  // every later call takes the GIL with gil_scoped_acquire
     });
+}
+
+void wakeScript(unsigned long thread) {
+    if (g_wakeInstalled && thread != 0) {
+        ::pthread_kill(static_cast<pthread_t>(thread), wakeSignal());
+    }
 }
 
 CallerScope::CallerScope(Caller caller) : previous_(g_caller) {

@@ -23,6 +23,12 @@ namespace py = pybind11;
 // Starts the interpreter on first use (GIL released afterwards). Safe from any thread.
 void ensureInterpreter();
 
+// Wakes the script running on `thread` (a PyThread ident) out of a blocking call (time.sleep,
+// a wait) so that an exception set for it is raised now: a signal whose Python handler raises
+// KeyboardInterrupt. Only the interpreter's main thread runs Python handlers; elsewhere the
+// call is merely interrupted and resumed.
+void wakeScript(unsigned long thread);
+
 // The test or fixture whose script is running; the module's functions report to it.
 struct Caller {
     TestCase* test = nullptr;

@@ -320,6 +320,27 @@ void defineRubyModule() {
     rb_define_module_function(module, "getEnvironment", reinterpret_cast<Function>(getEnvironment),
                               0);
     rb_define_module_function(module, "getParam", reinterpret_cast<Function>(getParam), 0);
+    // exit! skips everything: in the runner's own process (--isolation none) it would end the
+    // run with status 0 and no result files. In this process it raises SystemExit instead, an
+    // error of the test; a forked child still exits at once.
+    rb_eval_string(R"RUBY(
+module RobotTestingFramework
+  PROCESS_ID = Process.pid
+end
+module Process
+  class << self
+    alias_method :__rtf_exit!, :exit!
+    def exit!(status = false)
+      __rtf_exit!(status) unless Process.pid == RobotTestingFramework::PROCESS_ID
+      raise SystemExit.new(false, "exit!(#{status.inspect}) was called: it would end the " \
+                                  "test runner's process without a report")
+    end
+  end
+end
+module Kernel
+  private def exit!(status = false) = Process.exit!(status)
+end
+)RUBY");
 }
 
 std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& error) {

@@ -139,7 +139,11 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
         records.clear();
         polite = worker.stop(options_.killGrace, records);
         for (const WireRecord& record : records) {
-            relay.relay(record);
+            // A test that stops when asked (an exec test) says it was interrupted: that is our
+            // SIGTERM, reported below as what it was.
+            if (record.kind != WireKind::Event || record.event != Kind::Interrupted) {
+                relay.relay(record);
+            }
         }
     }
     if (relay.finished() && !worker.exited()) {
