@@ -1,6 +1,7 @@
 #include "reporter_registry.h"
 
 #include "junit_reporter.h"
+#include "tap_reporter.h"
 #include "text_reporter.h"
 
 namespace robottestingframework {
@@ -17,9 +18,14 @@ std::unique_ptr<Reporter> make(const TestResultCollector& collector,
 }  // namespace
 
 const std::vector<ReporterType>& reporterTypes() {
+    // One row per format.
+    // clang-format off
     static const std::vector<ReporterType> types = {
-        {"text", "result.txt", make<TextReporter>},  {"junit", "result.xml", make<JUnitReporter>},
+        {"text", "result.txt", make<TextReporter>},
+        {"junit", "result.xml", make<JUnitReporter>},
+        {"tap", "result.tap", make<TapReporter>},
     };
+    // clang-format on
     return types;
 }
 
