@@ -1,5 +1,6 @@
 #include "reporter_registry.h"
 
+#include "json_reporter.h"
 #include "junit_reporter.h"
 #include "tap_reporter.h"
 #include "text_reporter.h"
@@ -24,6 +25,7 @@ const std::vector<ReporterType>& reporterTypes() {
         {"text", "result.txt", make<TextReporter>},
         {"junit", "result.xml", make<JUnitReporter>},
         {"tap", "result.tap", make<TapReporter>},
+        {"json", "result.json", make<JsonReporter>},
     };
     // clang-format on
     return types;
