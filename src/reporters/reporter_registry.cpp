@@ -1,5 +1,6 @@
 #include "reporter_registry.h"
 
+#include "html_reporter.h"
 #include "json_reporter.h"
 #include "junit_reporter.h"
 #include "tap_reporter.h"
@@ -26,6 +27,7 @@ const std::vector<ReporterType>& reporterTypes() {
         {"junit", "result.xml", make<JUnitReporter>},
         {"tap", "result.tap", make<TapReporter>},
         {"json", "result.json", make<JsonReporter>},
+        {"html", "result.html", make<HtmlReporter>},
     };
     // clang-format on
     return types;
