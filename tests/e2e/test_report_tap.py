@@ -1,5 +1,10 @@
 """--output tap:FILE: TAP version 14, checked by the third-party tap-parser in strict mode."""
-from conftest import plugin, run_runner, validate_tap
+import signal
+import subprocess
+import time
+
+from conftest import (_marked_processes, leftover_processes, marked, plugin, run_runner,
+                      start_runner, validate_ctrf, validate_tap)
 
 
 def points_at(parsed, depth):
@@ -97,3 +102,36 @@ def test_unknown_output_type_lists_the_known_ones(tmp_path):
     assert "(expected text, junit, tap, json" in run.stderr, run
     run = run_runner("--help", cwd=tmp_path)
     assert "text, junit, tap, json" in run.stdout, run
+
+
+def test_a_run_quit_at_once_still_writes_every_result(tmp_path, marker):
+    """A second Ctrl-C quits at once: the streaming TAP report closes the open test as
+    interrupted, the cumulative JSON one has it too; both stay valid."""
+    suite = tmp_path / "suite.xml"
+    suite.write_text(f'''<suite name="stubborn">
+  <test name="first">{plugin("passing_test")}</test>
+  <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
+</suite>''')
+    tap = tmp_path / "r.tap"
+    ctrf = tmp_path / "r.json"
+    proc = start_runner("--isolation", "none", "--suite", suite, "--output", f"tap:{tap}",
+                        "--output", f"json:{ctrf}", env=marked(marker))
+    deadline = time.monotonic() + 20
+    while len(_marked_processes(marker)) < 2 and time.monotonic() < deadline:
+        time.sleep(0.05)
+    proc.send_signal(signal.SIGINT)
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    try:
+        proc.communicate(timeout=10)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        raise
+    assert proc.returncode == 130
+    parsed = validate_tap(tap)
+    assert [(p["ok"], p["name"]) for p in points_at(parsed, 1)] == [(True, "first"),
+                                                                    (False, "stubborn")]
+    assert points_at(parsed, 1)[1]["diag"]["severity"] == "interrupted", parsed
+    states = {t["name"]: t["rawStatus"] for t in validate_ctrf(ctrf)["results"]["tests"]}
+    assert states == {"first": "passed", "stubborn": "interrupted"}, states
+    assert leftover_processes(marker) == []
