@@ -11,6 +11,7 @@ from selenium import webdriver
 from selenium.common.exceptions import NoAlertPresentException
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
+from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
 from conftest import BUILD_DIR, plugin, run_runner
@@ -117,7 +118,9 @@ def test_page_from_file_url_filters_searches_and_shows_test_text_as_text(tmp_pat
     after = browser.execute_script("return document.documentElement.dataset.theme")
     assert {before, after} == {"light", "dark"}
 
-    search.clear()
+    search.send_keys(Keys.CONTROL, "a")
+    search.send_keys(Keys.BACKSPACE)  # clear() sends no input event
+    assert "6 of 6 tests shown" in browser.find_element(By.ID, "shown").text
     theme.click()
     no_alert(browser)
     assert browser.find_elements(By.TAG_NAME, "img") == []
