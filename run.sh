@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Quick start. Installs the build dependencies (Debian 12), configures and builds in build/,
 # then:
-#   ./run.sh example    runs the example suites; reports in build/example-reports/
+#   ./run.sh example    runs the example suites; reports (text, JUnit, TAP, JSON, HTML) in
+#                       build/example-reports/
 #   ./run.sh test       runs every test (ctest); last line "N passed, N failed"
 #   ./run.sh sanitize   builds build-asan/ with -DRTF_SANITIZE=ON and runs the unit tests
 # The build folder can be moved with RTF_BUILD_DIR (default build).
@@ -85,9 +86,12 @@ example)
     (cd "$reports" && "$build_dir/bin/robottestingframework-testrunner" \
         --suite "$examples/example.xml" --suite "$examples/scripts.xml" \
         --suite "$examples/robot/robot.xml" \
-        --output text:example.txt --output junit:example.xml) || status=$?
+        --output text:example.txt --output junit:example.xml --output tap:example.tap \
+        --output json:example.json --output html:example.html) || status=$?
     echo
-    echo "Reports: $reports/example.txt (text) and $reports/example.xml (JUnit)"
+    echo "Reports in $reports/:"
+    echo "  example.txt (text), example.xml (JUnit), example.tap (TAP 14),"
+    echo "  example.json (CTRF JSON), example.html (open it in a browser)"
     echo "Logs of the robot's processes: $reports/rtf-logs/robot/"
     exit $status
     ;;

@@ -6,6 +6,7 @@
 
 #include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestStatus.h>
 
 namespace robottestingframework {
 
@@ -37,5 +38,10 @@ struct ResultEvent {
 
 // "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats).
 const char* toString(ResultEvent::Kind kind);
+
+// The state an event gives the test it is about (a failure: Failed, a crash: Crashed, ...);
+// Passed for the events that leave the state as it is. A test's state is the highest one its
+// events gave it. The one table of it: the collector, the event relay and the executors read it.
+TestStatus stateOf(ResultEvent::Kind kind);
 
 }  // namespace robottestingframework

@@ -11,26 +11,6 @@ namespace {
 
 using Kind = ResultEvent::Kind;
 
-// The state an event gives a test; Passed for events that do not change it.
-TestStatus statusOf(Kind kind) {
-    switch (kind) {
-        case Kind::Failure:
-            return TestStatus::Failed;
-        case Kind::Error:
-            return TestStatus::Error;
-        case Kind::Crash:
-            return TestStatus::Crashed;
-        case Kind::Timeout:
-            return TestStatus::TimedOut;
-        case Kind::Interrupted:
-            return TestStatus::Interrupted;
-        case Kind::Skipped:
-            return TestStatus::Skipped;
-        default:
-            return TestStatus::Passed;
-    }
-}
-
 ResultEvent makeEvent(Kind kind, const Test* test, TestMessage msg, bool passed, double time) {
     ResultEvent event;
     event.kind = kind;
@@ -50,7 +30,7 @@ const ResultEvent* TestRecord::reason() const {
         return nullptr;
     }
     for (const ResultEvent& event : events) {
-        if (statusOf(event.kind) == status) {
+        if (stateOf(event.kind) == status) {
             return &event;
         }
     }
@@ -164,7 +144,7 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
         if (kind == Kind::Output) {
             owner->output += event.message.getMessage();
         } else if (kind != Kind::Check || keepChecks_) {
-            owner->status = std::max(owner->status, statusOf(kind));
+            owner->status = std::max(owner->status, stateOf(kind));
             owner->events.push_back(logged ? event : std::move(event));
         }
     } else if (!openSuites_.empty()) {
@@ -172,7 +152,7 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
         if (kind == Kind::Output) {
             suite.output += event.message.getMessage();
         } else {
-            if (isFailure(statusOf(kind))) {
+            if (isFailure(stateOf(kind))) {
                 suite.fixtureFailed = true;
             }
             suite.events.push_back(logged ? event : std::move(event));

@@ -60,4 +60,24 @@ const char* toString(ResultEvent::Kind kind) {
     return "unknown";
 }
 
+TestStatus stateOf(ResultEvent::Kind kind) {
+    using Kind = ResultEvent::Kind;
+    switch (kind) {
+        case Kind::Failure:
+            return TestStatus::Failed;
+        case Kind::Error:
+            return TestStatus::Error;
+        case Kind::Crash:
+            return TestStatus::Crashed;
+        case Kind::Timeout:
+            return TestStatus::TimedOut;
+        case Kind::Interrupted:
+            return TestStatus::Interrupted;
+        case Kind::Skipped:
+            return TestStatus::Skipped;
+        default:
+            return TestStatus::Passed;
+    }
+}
+
 }  // namespace robottestingframework

@@ -52,29 +52,7 @@ void EventRelay::start() {
 }
 
 void EventRelay::note(Kind kind, const TestMessage& message) {
-    TestStatus status = status_;
-    switch (kind) {
-        case Kind::Skipped:
-            status = TestStatus::Skipped;
-            break;
-        case Kind::Failure:
-            status = TestStatus::Failed;
-            break;
-        case Kind::Error:
-            status = TestStatus::Error;
-            break;
-        case Kind::Crash:
-            status = TestStatus::Crashed;
-            break;
-        case Kind::Timeout:
-            status = TestStatus::TimedOut;
-            break;
-        case Kind::Interrupted:
-            status = TestStatus::Interrupted;
-            break;
-        default:
-            break;
-    }
+    const TestStatus status = stateOf(kind);
     if (status > status_) {
         status_ = status;
     }

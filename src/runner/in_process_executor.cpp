@@ -1,5 +1,6 @@
 #include "in_process_executor.h"
 
+#include <robottestingframework/ResultEvent.h>
 #include <robottestingframework/TestResult.h>
 
 #include <algorithm>
@@ -107,11 +108,11 @@ public:
         target_->addReport(sync(test), msg);
     }
     void addError(const Test* test, TestMessage msg) override {
-        worsen(TestStatus::Error);
+        worsen(stateOf(ResultEvent::Kind::Error));
         target_->addError(sync(test), msg);
     }
     void addFailure(const Test* test, TestMessage msg) override {
-        worsen(TestStatus::Failed);
+        worsen(stateOf(ResultEvent::Kind::Failure));
         target_->addFailure(sync(test), msg);
     }
     void startTest(const Test* test) override { target_->startTest(sync(test)); }
@@ -120,25 +121,25 @@ public:
         target_->addCheck(sync(test), msg, passed);
     }
     void addSkipped(const Test* test, TestMessage reason) override {
-        worsen(TestStatus::Skipped);
+        worsen(stateOf(ResultEvent::Kind::Skipped));
         target_->addSkipped(sync(test), reason);
     }
     void addCrash(const Test* test, TestMessage msg) override {
-        worsen(TestStatus::Crashed);
+        worsen(stateOf(ResultEvent::Kind::Crash));
         target_->addCrash(sync(test), msg);
     }
     void addTimeout(const Test* test, TestMessage msg) override {
-        worsen(TestStatus::TimedOut);
+        worsen(stateOf(ResultEvent::Kind::Timeout));
         target_->addTimeout(sync(test), msg);
     }
     void addInterrupted(const Test* test, TestMessage msg) override {
         if (timedOut_) {
-            worsen(TestStatus::TimedOut);
+            worsen(stateOf(ResultEvent::Kind::Timeout));
             target_->addTimeout(
                 sync(test), TestMessage("timed out after " + seconds(timeout_), msg.getMessage()));
             return;
         }
-        worsen(TestStatus::Interrupted);
+        worsen(stateOf(ResultEvent::Kind::Interrupted));
         target_->addInterrupted(sync(test), msg);
     }
     void addOutput(const Test* test, const std::string& text) override {

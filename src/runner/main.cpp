@@ -12,10 +12,8 @@
 #include <vector>
 
 #include <robottestingframework/ConsoleListener.h>
-#include <robottestingframework/JUnitOutputter.h>
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
-#include <robottestingframework/TextOutputter.h>
 
 #include "in_process_executor.h"
 #include "isolated_executor.h"
@@ -24,6 +22,7 @@
 #include "output_paths.h"
 #include "process.h"
 #include "process_tree.h"
+#include "reporter_registry.h"
 #include "run_gate.h"
 #include "run_plan.h"
 #include "signal_pipe.h"
@@ -106,22 +105,35 @@ bool wantColours() {
            !(term != nullptr && std::string(term) == "dumb");
 }
 
-// Writes every requested output; false when one could not be written (each is reported on
-// `console`).
-bool writeOutputs(const Options& options, TestResultCollector& collector, std::FILE* console) {
+// One requested output: its file and the reporter of its type (from the one table).
+struct Output {
+    OutputRequest request;
+    std::unique_ptr<reporters::Reporter> reporter;
+};
+
+std::vector<Output> makeOutputs(const Options& options, const TestResultCollector& collector) {
+    reporters::ReporterSettings settings;
+    settings.verbose = options.verbose;
+    settings.summary = !options.noSummary;
+    std::vector<Output> outputs;
+    for (const auto& request : options.outputs) {
+        // The option parser let only the table's types through.
+        outputs.push_back(
+            {request, reporters::findReporterType(request.type)->make(collector, settings)});
+    }
+    return outputs;
+}
+
+// Writes every requested output, each whole or not at all; false when one could not be written
+// (each is reported on `console`, and the others are still written).
+bool writeOutputs(const std::vector<Output>& outputs, std::FILE* console) {
     bool ok = true;
-    for (const auto& output : options.outputs) {
+    for (const auto& output : outputs) {
         TestMessage error;
-        bool written = false;
-        if (output.type == "junit") {
-            written = JUnitOutputter(collector, options.verbose).write(output.file, &error);
-        } else {
-            written = TextOutputter(collector, options.verbose)
-                          .write(output.file, !options.noSummary, &error);
-        }
-        if (!written) {
+        if (!output.reporter->write(output.request.file, &error)) {
             std::fprintf(console, "%s: cannot write the %s output %s: %s\n", program,
-                         output.type.c_str(), output.file.c_str(), error.toString().c_str());
+                         output.request.type.c_str(), output.request.file.c_str(),
+                         error.toString().c_str());
             ok = false;
         }
     }
@@ -239,6 +251,10 @@ int main(int argc, char** argv) {
     result.addListener(&console);
     result.addListener(&collector);
     result.addListener(&plan.gate());
+    const std::vector<Output> outputs = makeOutputs(options, collector);
+    for (const auto& output : outputs) {
+        result.addListener(output.reporter.get());
+    }
 
     int interrupted = 0;
     {
@@ -246,8 +262,11 @@ int main(int argc, char** argv) {
         // it any more), what is still open is ended as interrupted, and the outputs written.
         auto quit = [&] {
             result.removeListener(&collector);
+            for (const auto& output : outputs) {
+                result.removeListener(output.reporter.get());
+            }
             collector.interruptOpen(TestMessage("interrupted: the runner quit"));
-            writeOutputs(options, collector, capture.console());
+            writeOutputs(outputs, capture.console());
         };
         InterruptWatcher watcher(plan, capture.console(), quit);
         plan.runner().run(result);
@@ -262,7 +281,7 @@ int main(int argc, char** argv) {
     if (interrupted != 0) {
         status = interruptedBy(interrupted);
     }
-    if (!writeOutputs(options, collector, stderr)) {
+    if (!writeOutputs(outputs, stderr)) {
         status = configurationError;
     }
     return status;

@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "numbers.h"
+#include "reporter_registry.h"
 
 #include <cstring>
 
@@ -29,11 +30,6 @@ CLI::Validator numberRule(std::string (*check)(const std::string&, Number&),
         what);
 }
 
-// Output types other issues will add; named here so "tap:out.tap" is not taken for a file name.
-bool isPlannedOutputType(const std::string& type) {
-    return type == "tap" || type == "json" || type == "html";
-}
-
 bool isTypeWord(const std::string& text) {
     return !text.empty() && std::all_of(text.begin(), text.end(), [](char c) {
         return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
@@ -45,10 +41,7 @@ std::string checkOutputType(const std::string& type) {
     if (isKnownOutputType(type)) {
         return {};
     }
-    if (isPlannedOutputType(type)) {
-        return "output type '" + type + "' is not available in this build (use text or junit)";
-    }
-    return "unknown output type '" + type + "' (expected text or junit)";
+    return "unknown output type '" + type + "' (expected " + reporters::reporterTypeList() + ")";
 }
 
 // A param or an environment is free text that often starts with "--" ("--robot icubSim"): glue
@@ -78,7 +71,7 @@ std::vector<std::string> glueFreeTextValues(int argc, const char* const* argv) {
 }  // namespace
 
 bool isKnownOutputType(const std::string& type) {
-    return type == "text" || type == "junit";
+    return reporters::findReporterType(type) != nullptr;
 }
 
 ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
@@ -126,8 +119,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                            "repeatable. Default: result.txt")
                 ->type_name("FILE"));
     app.add_option("--output-type", outputType,
-                   "Type of the --output files without a TYPE: "
-                   "text or junit (default text)")
+                   "Type of the --output files without a TYPE: " + reporters::reporterTypeList() +
+                       " (default text)")
         ->type_name("TYPE");
     app.add_flag("--no-output", options.noOutput, "Write no result file");
     app.add_flag("--no-summary", options.noSummary,
@@ -226,7 +219,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     if (options.outputs.empty() && !options.noOutput) {
         // RTF 2.x writes a result file unless told not to.
         options.outputs.push_back(
-            OutputRequest{outputType, outputType == "junit" ? "result.xml" : "result.txt"});
+            OutputRequest{outputType, reporters::findReporterType(outputType)->defaultFile});
     }
     if (options.noOutput) {
         options.outputs.clear();

@@ -9,7 +9,7 @@ namespace robottestingframework {
 namespace runner {
 
 struct OutputRequest {
-    std::string type;  // "text", "junit"
+    std::string type;  // a name of the reporter table (reporter_registry.h)
     std::string file;
 };
 

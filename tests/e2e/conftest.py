@@ -1,4 +1,5 @@
 """Shared helpers for the end-to-end tests: run the real runner on real files."""
+import json
 import os
 import signal
 import subprocess
@@ -42,7 +43,7 @@ def run_runner(*args, timeout=120, cwd=None, env=None, input=None):
     proc = subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.PIPE if input else subprocess.DEVNULL,
-                            start_new_session=True, text=True)
+                            start_new_session=True, text=True, errors="replace")
     try:
         out, err = proc.communicate(input=input, timeout=timeout)
     except subprocess.TimeoutExpired:
@@ -57,6 +58,30 @@ def validate_junit(path):
     result = subprocess.run(["xmllint", "--noout", "--schema", str(SCHEMA), str(path)],
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
+
+
+# The third-party checkers scripts/node-tools.sh installs into the build tree.
+NODE_TOOLS = BUILD_DIR / "node-tools" / "node_modules"
+TOOLS_DIR = Path(__file__).resolve().parent / "tools"
+
+
+def _node_check(script, path):
+    result = subprocess.run(["node", str(TOOLS_DIR / script), str(path)], capture_output=True,
+                            text=True, timeout=60, env={**os.environ, "NODE_PATH": str(NODE_TOOLS)})
+    assert result.returncode == 0, f"{script} {path}:\n{result.stderr}\n{result.stdout}"
+    return result.stdout
+
+
+def validate_tap(path):
+    """Parses `path` with tap-parser in strict mode; fails on any parse error. Returns what it
+    parsed: ok, count, pass, fail, skip, bailout, plan, and every test point with its depth."""
+    return json.loads(_node_check("validate_tap.js", path))
+
+
+def validate_ctrf(path):
+    """Fails the test unless `path` validates against CTRF's published JSON schema."""
+    _node_check("validate_ctrf.js", path)
+    return json.loads(Path(path).read_text())
 
 
 # Every process a run starts inherits the runner's environment: a unique value of this variable

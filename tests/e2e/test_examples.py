@@ -11,7 +11,7 @@ import uuid
 
 import pytest
 
-from conftest import BUILD_DIR, run_runner, validate_junit
+from conftest import BUILD_DIR, run_runner, validate_ctrf, validate_junit, validate_tap
 
 EXAMPLES = BUILD_DIR / "examples"
 MY_TEST = EXAMPLES / "libMyTest.so"
@@ -89,14 +89,20 @@ def test_example_suite_passes(tmp_path, mark, suite, isolation):
 
 
 def test_the_quick_start_example_run(tmp_path, mark):
-    """The three suites in one run with a text and a JUnit report, as `./run.sh example`."""
+    """The three suites in one run with a report of each type, as `./run.sh example`."""
     started = time.monotonic()
     run = run_runner(*[arg for suite in SUITES for arg in ("--suite", EXAMPLES / suite)],
                      "--verbose", "--output", "text:example.txt", "--output",
-                     "junit:example.xml", cwd=tmp_path, timeout=60, env={"RTF_E2E_MARK": mark})
+                     "junit:example.xml", "--output", "tap:example.tap", "--output",
+                     "json:example.json", "--output", "html:example.html", cwd=tmp_path,
+                     timeout=60, env={"RTF_E2E_MARK": mark})
     elapsed = time.monotonic() - started
     check_passed(run, tmp_path / "example.xml", [n for names in SUITES.values() for n in names])
     assert elapsed < 30, f"the example run took {elapsed:.1f} s"
+    total = sum(len(names) for names in SUITES.values())
+    assert validate_tap(tmp_path / "example.tap")["count"] == len(SUITES)
+    assert validate_ctrf(tmp_path / "example.json")["results"]["summary"]["passed"] == total
+    assert "tap example" in (tmp_path / "example.html").read_text()
     text = (tmp_path / "example.txt").read_text()
     for name in ("example", "scripts", "robot", "JointLimits", "tap example"):
         assert name in text, text

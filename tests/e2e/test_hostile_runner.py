@@ -248,7 +248,7 @@ def test_infinity_is_refused_by_one_rule_on_the_command_line_and_in_a_suite(tmp_
 def test_an_unknown_output_type_is_a_usage_error_listing_the_known_ones(tmp_path):
     run = run_runner("--test", PASSING, "--output", "junti:x.xml", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert "unknown output type 'junti' (expected text or junit)" in run.stderr, run
+    assert "unknown output type 'junti' (expected text, junit, tap, json or html)" in run.stderr, run
     assert "text:junti:x.xml or ./junti:x.xml" in run.stderr, run
     assert list(tmp_path.iterdir()) == []
 

@@ -134,7 +134,7 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "--repetition", "abc"}, "repetition"},
         {{"-t", "a.so", "--web-port", "70000"}, "web-port"},
         {{"-t", "a.so", "--output-type", "xml"}, "unknown output type 'xml'"},
-        {{"-t", "a.so", "-o", "tap:out.tap"}, "not available in this build"},
+        {{"-t", "a.so", "-o", "yaml:out.yaml"}, "(expected text, junit, tap, json or html)"},
         {{"-t", "a.so", "-o", "junit:"}, "no file name"},
         {{"-t", "a.so", "--isolation", "thread"}, "isolation"},
         {{"-t", "a.so", "--timeout", "-1"}, "timeout"},

@@ -1,0 +1,182 @@
+#include "json_reporter.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+
+#include "text_safety.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+// CTRF's five statuses; the state itself is kept in extra.rtf.state.
+const char* ctrfStatus(TestStatus status) {
+    switch (status) {
+        case TestStatus::Passed:
+            return "passed";
+        case TestStatus::Skipped:
+            return "skipped";
+        case TestStatus::Interrupted:
+            return "other";
+        default:
+            return "failed";
+    }
+}
+
+long long milliseconds(double seconds) {
+    return std::llround(seconds * 1000.0);
+}
+
+std::string rfc3339(long long epochMs) {
+    const std::time_t seconds = static_cast<std::time_t>(epochMs / 1000);
+    std::tm utc{};
+    gmtime_r(&seconds, &utc);
+    char text[96];
+    std::snprintf(text, sizeof(text), "%04d-%02d-%02dT%02d:%02d:%02d.%03dZ", utc.tm_year + 1900,
+                  utc.tm_mon + 1, utc.tm_mday, utc.tm_hour, utc.tm_min, utc.tm_sec,
+                  static_cast<int>(epochMs % 1000));
+    return text;
+}
+
+std::string lines(const std::string& text) {
+    std::string out = "[";
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        out += (begin == 0 ? "" : ",") + jsonString(text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    return out + "]";
+}
+
+// Every problem of a test, one per line: what CTRF calls the trace.
+std::string problems(const std::vector<ResultEvent>& events) {
+    std::string out;
+    for (const ResultEvent& event : events) {
+        if (isFailure(stateOf(event.kind))) {
+            out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
+        }
+    }
+    return out;
+}
+
+void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& suite,
+                long long origin, bool verbose) {
+    const long long start = origin + milliseconds(test.start);
+    out += "{\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
+    out += ",\"status\":\"" + std::string(ctrfStatus(test.status)) + "\"";
+    out += ",\"duration\":" + std::to_string(milliseconds(test.duration));
+    out += ",\"start\":" + std::to_string(start);
+    out += ",\"stop\":" + std::to_string(start + milliseconds(test.duration));
+    out += ",\"rawStatus\":" + jsonString(toString(test.status));
+    if (!suite.name.empty()) {
+        out += ",\"suite\":[" + jsonString(suite.name) + "]";
+    }
+    if (const ResultEvent* reason = test.reason()) {
+        out += ",\"message\":" + jsonString(reason->message.toString());
+        const std::string trace = problems(test.events);
+        if (!trace.empty()) {
+            out += ",\"trace\":" + jsonString(trace);
+        }
+        if (!reason->message.getSourceFileName().empty()) {
+            out += ",\"filePath\":" + jsonString(reason->message.getSourceFileName());
+            out += ",\"line\":" + std::to_string(reason->message.getSourceLineNumber());
+        }
+    }
+    if (!test.output.empty()) {
+        out += ",\"stdout\":" + lines(test.output);
+    }
+    out += ",\"retries\":0,\"flaky\":false";
+    out += ",\"extra\":{\"rtf\":{\"state\":" + jsonString(toString(test.status));
+    if (!test.description.empty()) {
+        out += ",\"description\":" + jsonString(test.description);
+    }
+    if (test.status == TestStatus::Error || test.status == TestStatus::Crashed) {
+        out += ",\"error\":true";
+    }
+    if (const ResultEvent* reason = test.reason()) {
+        if (test.status == TestStatus::Crashed) {
+            out += ",\"crash\":" + jsonString(reason->message.toString());
+        } else if (test.status == TestStatus::TimedOut) {
+            out += ",\"timeout\":" + jsonString(reason->message.toString());
+        }
+    }
+    if (verbose) {
+        std::string reports;
+        for (const ResultEvent& event : test.events) {
+            if (event.kind == Kind::Report || event.kind == Kind::Check) {
+                reports +=
+                    (reports.empty() ? "" : ",") +
+                    jsonString(std::string(toString(event.kind)) + ": " + event.message.toString());
+            }
+        }
+        out += ",\"reports\":[" + reports + "]";
+    }
+    out += "}}}";
+}
+
+}  // namespace
+
+// Written into one string, front to back: a run of 10 000 tests holds one copy of its report.
+std::string JsonReporter::document() {
+    const long long origin = std::chrono::duration_cast<std::chrono::milliseconds>(
+                                 collector_.startedAt().time_since_epoch())
+                                 .count();
+    const long long stop = origin + milliseconds(collector_.duration());
+    const std::size_t other = collector_.countOf(TestStatus::Interrupted);
+    std::string out;
+    out += "{\"reportFormat\":\"CTRF\",\"specVersion\":\"0.0.0\"";
+    out += ",\"timestamp\":\"" + rfc3339(origin) + "\"";
+    out += ",\"generatedBy\":\"robottestingframework-testrunner\"";
+    out += ",\"results\":{\"tool\":{\"name\":\"robottestingframework-testrunner\"}";
+    out += ",\"summary\":{\"tests\":" + std::to_string(collector_.testCount());
+    out += ",\"passed\":" + std::to_string(collector_.passedCount());
+    out += ",\"failed\":" + std::to_string(collector_.failedCount() - other);
+    out += ",\"skipped\":" + std::to_string(collector_.skippedCount());
+    out += ",\"pending\":0,\"other\":" + std::to_string(other);
+    out += ",\"suites\":" + std::to_string(collector_.suiteCount());
+    out += ",\"start\":" + std::to_string(origin) + ",\"stop\":" + std::to_string(stop);
+    out += ",\"duration\":" + std::to_string(stop - origin);
+    out += ",\"extra\":{\"rtf\":{";
+    for (TestStatus status : {TestStatus::Failed, TestStatus::Error, TestStatus::Crashed,
+                              TestStatus::TimedOut, TestStatus::Interrupted}) {
+        out += (status == TestStatus::Failed ? "" : ",") + jsonString(toString(status)) + ":" +
+               std::to_string(collector_.countOf(status));
+    }
+    out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount()) + "}}}";
+    out += ",\"tests\":[";
+    bool first = true;
+    std::string fixtures;
+    for (const SuiteRecord& suite : collector_.suites()) {
+        for (const TestRecord& test : suite.tests) {
+            out += first ? "\n" : ",\n";
+            first = false;
+            appendTest(out, test, suite, origin, settings_.verbose);
+        }
+        if (suite.fixtureFailed) {
+            fixtures += std::string(fixtures.empty() ? "" : ",") +
+                        "{\"suite\":" + jsonString(suite.name) +
+                        ",\"problems\":" + jsonString(problems(suite.events));
+            if (!suite.output.empty()) {
+                fixtures += ",\"stdout\":" + lines(suite.output);
+            }
+            fixtures += "}";
+        }
+    }
+    out += "]";
+    // A fixture that failed is the suite's, not a test's: kept where CTRF leaves room for it.
+    out += ",\"extra\":{\"rtf\":{\"fixtureFailures\":[" + fixtures + "]}}";
+    out += "}}\n";
+    return out;
+}
+
+}  // namespace reporters
+}  // namespace robottestingframework

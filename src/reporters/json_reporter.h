@@ -1,0 +1,18 @@
+// The JSON output in CTRF, the Common Test Report Format (https://ctrf.io): a summary and one
+// entry per test; what CTRF has no word for (error vs failure, crash, timeout, fixtures) sits
+// under "extra" -> "rtf". The mapping is in docs/ctrf.md.
+#pragma once
+
+#include "reporter.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+class JsonReporter : public CumulativeReporter {
+public:
+    using CumulativeReporter::CumulativeReporter;
+    std::string document() override;
+};
+
+}  // namespace reporters
+}  // namespace robottestingframework

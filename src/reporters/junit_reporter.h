@@ -1,0 +1,17 @@
+// The JUnit XML output (the schema Jenkins, GitLab and GitHub read, schemas/junit.xsd): one
+// testsuite per suite, one testcase per test.
+#pragma once
+
+#include "reporter.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+class JUnitReporter : public CumulativeReporter {
+public:
+    using CumulativeReporter::CumulativeReporter;
+    std::string document() override;
+};
+
+}  // namespace reporters
+}  // namespace robottestingframework

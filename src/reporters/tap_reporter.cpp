@@ -1,0 +1,233 @@
+#include "tap_reporter.h"
+
+#include <algorithm>
+
+#include <robottestingframework/Test.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "text_safety.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+// A description: one line, with "#" and "\" escaped so no directive is read into it.
+std::string description(const std::string& text) {
+    std::string out;
+    for (const char c : validUtf8(text)) {
+        if (c == '\\' || c == '#') {
+            out += '\\';
+            out += c;
+        } else if (c == '\n' || c == '\r') {
+            out += ' ';
+        } else {
+            out += c;
+        }
+    }
+    return out;
+}
+
+// A directive's reason runs to the end of the line.
+std::string oneLine(const std::string& text) {
+    std::string out = validUtf8(text);
+    std::replace(out.begin(), out.end(), '\n', ' ');
+    std::replace(out.begin(), out.end(), '\r', ' ');
+    return out;
+}
+
+const char* severity(TestStatus status) {
+    switch (status) {
+        case TestStatus::Failed:
+            return "fail";
+        case TestStatus::Error:
+            return "error";
+        case TestStatus::Crashed:
+            return "crash";
+        case TestStatus::TimedOut:
+            return "timeout";
+        case TestStatus::Interrupted:
+            return "interrupted";
+        default:
+            return "comment";
+    }
+}
+
+// YAML diagnostics for a failed point; strings as JSON literals, which YAML reads as they are.
+std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output) {
+    std::string text = "  ---\n";
+    text += "  message: " + jsonString(reason.getMessage()) + "\n";
+    text += std::string("  severity: ") + severity(status) + "\n";
+    if (!reason.getDetail().empty()) {
+        text += "  data:\n    detail: " + jsonString(reason.getDetail()) + "\n";
+    }
+    if (!reason.getSourceFileName().empty()) {
+        text += "  at:\n    file: " + jsonString(reason.getSourceFileName()) +
+                "\n    line: " + std::to_string(reason.getSourceLineNumber()) + "\n";
+    }
+    if (!output.empty()) {
+        text += "  output: " + jsonString(output) + "\n";
+    }
+    text += "  ...\n";
+    return text;
+}
+
+std::string indented(const std::string& text) {
+    std::string out;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        end = end == std::string::npos ? text.size() : end + 1;
+        out += "    ";
+        out.append(text, begin, end - begin);
+        begin = end;
+    }
+    return out;
+}
+
+}  // namespace
+
+void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
+    Block& block = blocks.back();
+    const std::string number = std::to_string(++block.points);
+    const std::string name = description(test.name.empty() ? "unnamed test" : test.name);
+    if (!isFailure(test.status)) {
+        block.body += "ok " + number + " - " + name;
+        if (test.status == TestStatus::Skipped) {
+            block.body += " # SKIP " + oneLine(test.reason.toString());
+        }
+        block.body += "\n";
+        return;
+    }
+    block.failed = true;
+    block.body += "not ok " + number + " - " + name + "\n" +
+                  diagnostics(test.status, test.reason, test.output);
+}
+
+void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts) {
+    Block suite = std::move(blocks.back());
+    blocks.pop_back();
+    Block& parent = blocks.back();
+    const std::string name = description(suite.name.empty() ? "unnamed suite" : suite.name);
+    parent.body += "# Subtest: " + name + "\n" + indented(suite.body) + "    1.." +
+                   std::to_string(suite.points) + "\n";
+    const std::string number = std::to_string(++parent.points);
+    if (suite.fixtureProblems.empty() && !suite.failed) {
+        parent.body += "ok " + number + " - " + name + "\n";
+        return;
+    }
+    parent.failed = true;
+    parent.body += "not ok " + number + " - " + name + "\n";
+    if (!suite.fixtureProblems.empty()) {
+        const TestMessage& first = suite.fixtureProblems.front();
+        parent.body += diagnostics(TestStatus::Error, first, "");
+        bailOuts.push_back(oneLine("fixture of " + suite.name + " failed: " + first.toString()));
+    }
+}
+
+std::string TapReporter::document() {
+    // Whatever is still open (a run cut short) is closed on copies: events may follow.
+    std::vector<Block> blocks = blocks_;
+    std::vector<std::string> bailOuts = bailOuts_;
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+        OpenTest test = *it;
+        if (!isFailure(test.status)) {
+            test.status = TestStatus::Interrupted;
+            test.reason = TestMessage("interrupted: the run ended before the test did");
+        }
+        closeTest(blocks, test);
+    }
+    while (blocks.size() > 1) {
+        closeSuite(blocks, bailOuts);
+    }
+    std::string out = "TAP version 14\n1.." + std::to_string(blocks.front().points) + "\n";
+    out += blocks.front().body;
+    // After every result, so none is lost: a consumer stops reading at a bail-out.
+    if (!bailOuts.empty()) {
+        out += "Bail out! " + bailOuts.front() + "\n";
+    }
+    return out;
+}
+
+void TapReporter::startTestSuite(const TestSuite* suite) {
+    Block block;
+    block.name = suite != nullptr ? suite->getName() : "";
+    blocks_.push_back(std::move(block));
+}
+
+void TapReporter::endTestSuite(const TestSuite* /*suite*/) {
+    if (blocks_.size() > 1) {
+        closeSuite(blocks_, bailOuts_);
+    }
+}
+
+void TapReporter::startTest(const Test* test) {
+    OpenTest open{test, test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}};
+    open_.push_back(std::move(open));
+}
+
+void TapReporter::endTest(const Test* test) {
+    for (std::size_t i = open_.size(); i > 0; --i) {
+        if (open_[i - 1].test == test) {
+            OpenTest done = std::move(open_[i - 1]);
+            open_.erase(open_.begin() + static_cast<std::ptrdiff_t>(i - 1));
+            if (test != nullptr) {
+                done.name = test->getName();  // a test may rename itself while it runs
+            }
+            closeTest(blocks_, done);
+            return;
+        }
+    }
+}
+
+void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg) {
+    const TestStatus state = stateOf(kind);
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+        if (it->test == test) {
+            if (state > it->status) {
+                it->status = state;
+                it->reason = msg;
+            }
+            return;
+        }
+    }
+    // Not a test's own: a fixture's, as the collector counts it.
+    if (isFailure(state) && blocks_.size() > 1) {
+        blocks_.back().fixtureProblems.push_back(msg);
+    }
+}
+
+void TapReporter::addReport(const Test* test, TestMessage msg) {
+    note(Kind::Report, test, msg);
+}
+void TapReporter::addError(const Test* test, TestMessage msg) {
+    note(Kind::Error, test, msg);
+}
+void TapReporter::addFailure(const Test* test, TestMessage msg) {
+    note(Kind::Failure, test, msg);
+}
+void TapReporter::addSkipped(const Test* test, TestMessage reason) {
+    note(Kind::Skipped, test, reason);
+}
+void TapReporter::addCrash(const Test* test, TestMessage msg) {
+    note(Kind::Crash, test, msg);
+}
+void TapReporter::addTimeout(const Test* test, TestMessage msg) {
+    note(Kind::Timeout, test, msg);
+}
+void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
+    note(Kind::Interrupted, test, msg);
+}
+void TapReporter::addOutput(const Test* test, const std::string& text) {
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+        if (it->test == test) {
+            it->output += text;
+            return;
+        }
+    }
+}
+
+}  // namespace reporters
+}  // namespace robottestingframework

@@ -1,0 +1,63 @@
+// The TAP version 14 output (https://testanything.org/tap-version-14-specification.html): each
+// suite a subtest, a test point per test, YAML diagnostics for failures, "# SKIP" with the
+// reason, and "Bail out!" when a suite's fixture failed.
+#pragma once
+
+#include <vector>
+
+#include <robottestingframework/ResultEvent.h>
+
+#include "reporter.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+class TapReporter : public StreamingReporter {
+public:
+    TapReporter(const TestResultCollector& /*collector*/, ReporterSettings settings)
+        : settings_(settings) {}
+    std::string document() override;
+
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+
+private:
+    // A suite being written: its test points so far (unindented; indented when it closes).
+    struct Block {
+        std::string name;
+        std::string body;
+        std::size_t points = 0;
+        bool failed = false;
+        std::vector<TestMessage> fixtureProblems;
+    };
+    // A test between its start and end, found by the Test it is about, not by order.
+    struct OpenTest {
+        const Test* test;
+        std::string name;
+        TestStatus status = TestStatus::Passed;
+        TestMessage reason;  // the first message of the state it has now
+        std::string output;
+    };
+
+    void note(ResultEvent::Kind kind, const Test* test, const TestMessage& msg);
+    static void closeTest(std::vector<Block>& blocks, const OpenTest& test);
+    static void closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts);
+
+    ReporterSettings settings_;
+    std::vector<Block> blocks_{Block{}};  // the top level first, the innermost suite last
+    std::vector<OpenTest> open_;
+    std::vector<std::string> bailOuts_;
+};
+
+}  // namespace reporters
+}  // namespace robottestingframework

@@ -1,0 +1,86 @@
+#include "text_reporter.h"
+
+#include <cstdio>
+
+#include "summary.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+namespace {
+
+void appendEvents(std::string& out, const std::vector<ResultEvent>& events, bool verbose,
+                  const char* indent) {
+    using Kind = ResultEvent::Kind;
+    for (const ResultEvent& event : events) {
+        if (!verbose && (event.kind == Kind::Report || event.kind == Kind::Check)) {
+            continue;
+        }
+        out += indent + eventLabel(event.kind, event.passed) + ": " + messageText(event.message) +
+               "\n";
+    }
+}
+
+void appendOutput(std::string& out, const std::string& output, const char* indent) {
+    if (output.empty()) {
+        return;
+    }
+    out += indent;
+    out += "output:\n";
+    std::size_t begin = 0;
+    while (begin < output.size()) {
+        std::size_t end = output.find('\n', begin);
+        if (end == std::string::npos) {
+            end = output.size();
+        }
+        out += indent;
+        out += "  | " + output.substr(begin, end - begin) + "\n";
+        begin = end + 1;
+    }
+}
+
+}  // namespace
+
+std::string TextReporter::document() {
+    const bool summary = settings_.summary;
+    const bool verbose = settings_.verbose;
+    std::string out = "Robot Testing Framework results\n";
+    for (const SuiteRecord& suite : collector_.suites()) {
+        out += "\n";
+        if (suite.name.empty()) {
+            out += "Tests outside any suite\n";
+        } else {
+            out += "Suite " + suite.name + ": " + (suite.succeeded() ? "passed" : "FAILED") +
+                   "  (" + seconds(suite.duration) + ")\n";
+            if (!suite.description.empty()) {
+                out += "  " + suite.description + "\n";
+            }
+        }
+        appendEvents(out, suite.events, verbose, "  ");
+        if (verbose) {
+            appendOutput(out, suite.output, "  ");
+        }
+        for (const TestRecord& test : suite.tests) {
+            char word[16];
+            std::snprintf(word, sizeof(word), "%-11s", statusWord(test.status));
+            out +=
+                "  " + std::string(word) + " " + test.name + "  (" + seconds(test.duration) + ")\n";
+            appendEvents(out, test.events, verbose, "      ");
+            if (verbose) {
+                appendOutput(out, test.output, "      ");
+            }
+        }
+    }
+    if (summary) {
+        out += "\nSummary\n";
+        for (const std::string& line : summaryLines(collector_)) {
+            out += line + "\n";
+        }
+        out += closingLine(collector_) + "\n";
+    }
+    return out;
+}
+
+}  // namespace reporters
+
+}  // namespace robottestingframework

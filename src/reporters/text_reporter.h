@@ -1,0 +1,16 @@
+// The text output: suites, each test's state and messages, and the run's summary.
+#pragma once
+
+#include "reporter.h"
+
+namespace robottestingframework {
+namespace reporters {
+
+class TextReporter : public CumulativeReporter {
+public:
+    using CumulativeReporter::CumulativeReporter;
+    std::string document() override;
+};
+
+}  // namespace reporters
+}  // namespace robottestingframework

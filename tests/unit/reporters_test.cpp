@@ -1,0 +1,124 @@
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include <robottestingframework/TestAssert.h>
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "core_test_helpers.h"
+#include "reporter_registry.h"
+#include "tap_reporter.h"
+#include "text_safety.h"
+
+using namespace rtf_test;
+using namespace robottestingframework::reporters;
+
+namespace {
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(ReporterRegistry, OneRowPerFormatReadByNameWithTheListForMessages) {
+    std::vector<std::string> names;
+    TestResultCollector collector;
+    for (const ReporterType& type : reporterTypes()) {
+        names.push_back(type.name);
+        EXPECT_EQ(findReporterType(type.name), &type);
+        EXPECT_NE(type.make(collector, ReporterSettings{}), nullptr) << type.name;
+        EXPECT_EQ(type.defaultFile.rfind("result.", 0), 0u) << type.defaultFile;
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"text", "junit", "tap", "json", "html"}));
+    EXPECT_EQ(reporterTypeList(), "text, junit, tap, json or html");
+    EXPECT_EQ(findReporterType("xml"), nullptr);
+}
+
+TEST(StateTable, EachEventKindGivesOneState) {
+    using Kind = ResultEvent::Kind;
+    EXPECT_EQ(stateOf(Kind::Failure), TestStatus::Failed);
+    EXPECT_EQ(stateOf(Kind::Error), TestStatus::Error);
+    EXPECT_EQ(stateOf(Kind::Crash), TestStatus::Crashed);
+    EXPECT_EQ(stateOf(Kind::Timeout), TestStatus::TimedOut);
+    EXPECT_EQ(stateOf(Kind::Interrupted), TestStatus::Interrupted);
+    EXPECT_EQ(stateOf(Kind::Skipped), TestStatus::Skipped);
+    for (Kind kind : {Kind::Report, Kind::Check, Kind::Output, Kind::StartTest, Kind::EndTest}) {
+        EXPECT_EQ(stateOf(kind), TestStatus::Passed) << toString(kind);
+    }
+}
+
+TEST(TapReporter, EventsGoToTheTestTheyNameNotTheLastStarted) {
+    TestResultCollector collector;
+    TapReporter tap(collector, ReporterSettings{});
+    LambdaTest a("a");
+    LambdaTest b("b");
+    tap.startTest(&a);
+    tap.startTest(&b);
+    tap.addFailure(&a, TestMessage("a went wrong"));
+    tap.endTest(&b);
+    tap.endTest(&a);
+    const std::string text = tap.document();
+    EXPECT_EQ(text.rfind("TAP version 14\n1..2\nok 1 - b\nnot ok 2 - a\n", 0), 0u) << text;
+    EXPECT_TRUE(has(text, "message: \"a went wrong\"")) << text;
+}
+
+TEST(TapReporter, WhatIsStillOpenIsInterruptedAndEventsMayFollow) {
+    TestResultCollector collector;
+    TapReporter tap(collector, ReporterSettings{});
+    TestSuite suite("s");
+    LambdaTest a("a");
+    tap.startTestSuite(&suite);
+    tap.startTest(&a);
+    const std::string cut = tap.document();
+    EXPECT_TRUE(has(cut, "# Subtest: s\n    not ok 1 - a\n")) << cut;
+    EXPECT_TRUE(has(cut, "severity: interrupted")) << cut;
+    tap.endTest(&a);
+    tap.endTestSuite(&suite);
+    EXPECT_TRUE(has(tap.document(), "    ok 1 - a\n    1..1\nok 1 - s\n")) << tap.document();
+}
+
+TEST(TapReporter, SeveralRunsAtOnceInOneProcessStayApart) {
+    auto run = [](const std::string& name, std::string& out) {
+        TestResultCollector collector;
+        TapReporter tap(collector, ReporterSettings{});
+        TestResult result;
+        result.addListener(&tap);
+        std::vector<std::unique_ptr<LambdaTest>> tests;
+        TestSuite suite(name);
+        for (int i = 0; i < 50; ++i) {
+            tests.push_back(std::make_unique<LambdaTest>(name + std::to_string(i), [i] {
+                ROBOTTESTINGFRAMEWORK_TEST_CHECK(i % 2 == 0, "even");
+            }));
+            suite.addTest(tests.back().get());
+        }
+        result.startTestRunner();
+        suite.run(result);
+        result.endTestRunner();
+        out = tap.document();
+    };
+    std::string first;
+    std::string second;
+    std::thread one(run, "left", std::ref(first));
+    std::thread two(run, "right", std::ref(second));
+    one.join();
+    two.join();
+    for (const std::string* text : {&first, &second}) {
+        EXPECT_TRUE(has(*text, "    1..50\n")) << *text;
+        EXPECT_EQ(text->find(text == &first ? "right" : "left"), std::string::npos) << *text;
+    }
+    EXPECT_TRUE(has(first, "    not ok 2 - left1\n"));
+    EXPECT_TRUE(has(second, "    ok 1 - right0\n"));
+}
+
+TEST(TextSafety, InvalidUtf8IsReplacedAndJsonStaysInertInHtml) {
+    EXPECT_EQ(validUtf8("a\xff"
+                        "b\xc3"),
+              "a\xEF\xBF\xBD"
+              "b\xEF\xBF\xBD");
+    EXPECT_EQ(validUtf8("caf\xC3\xA9"), "caf\xC3\xA9");
+    EXPECT_EQ(jsonString("</script>\n\"\\\x01"), "\"\\u003c/script\\u003e\\n\\\"\\\\\\u0001\"");
+}
