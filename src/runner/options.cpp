@@ -1,6 +1,7 @@
 #include "options.h"
 
 #include "numbers.h"
+#include "variables.h"
 
 #include <cstring>
 
@@ -152,8 +153,20 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                                              std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
-    takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
+    takeAll(app.add_option("--var", variables,
+                           "Set the variable NAME, used as ${NAME} in suites, test files and "
+                           "world files; wins over --var-file and the files' own (repeatable)")
                 ->type_name("NAME=VALUE"));
+    takeAll(app.add_option("--var-file", options.variableFiles,
+                           "Read variables from FILE, NAME=VALUE per line, # comments; a later "
+                           "file wins (repeatable)")
+                ->type_name("FILE"));
+    app.add_flag("--list", options.list,
+                 "Print what would run (suite, test, type, plug-in, param, tags, timeout) and "
+                 "exit without loading or starting anything; --output json:FILE writes it as "
+                 "JSON");
+    app.add_flag("--list-vars", options.listVariables,
+                 "Print each suite's variables, their values and where they come from, and exit");
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -210,7 +223,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         std::size_t colon = output.find(':');
         if (colon != std::string::npos && isTypeWord(output.substr(0, colon))) {
             std::string type = output.substr(0, colon);
-            problem = checkOutputType(type);
+            // --list writes JSON of its own (listing.h), whatever outputs the run has.
+            problem = options.list && type == "json" ? std::string() : checkOutputType(type);
             if (!problem.empty()) {
                 return usageError("--output " + output + ": " + problem +
                                   "; a file whose name has a colon is written as text:" + output +
@@ -233,11 +247,13 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     }
 
     for (const auto& variable : variables) {
-        std::size_t equal = variable.find('=');
-        if (equal == std::string::npos || equal == 0) {
-            return usageError("--var " + variable + ": expected NAME=VALUE");
+        std::string name;
+        std::string value;
+        std::string error;
+        if (!variables::parseAssignment(variable, name, value, error)) {
+            return usageError("--var " + variable + ": " + error);
         }
-        options.variables.emplace_back(variable.substr(0, equal), variable.substr(equal + 1));
+        options.variables.emplace_back(name, value);
     }
 
     if (options.nothingToRun()) {

@@ -14,6 +14,13 @@ struct SourceLocation {
     std::string toString() const;
 };
 
+// A variable of a suite once every source is applied (for --list-vars).
+struct VariableValue {
+    std::string name;
+    std::string value;   // expanded
+    std::string origin;  // "--var", "vars.env:3", "suite.xml:4"
+};
+
 struct TestSpec {
     std::string plugin;  // as written: a path or a bare name
     std::string path;    // resolved file; empty when it could not be found
@@ -43,6 +50,8 @@ struct SuiteSpec {
     double timeout = 0;
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
+    std::vector<VariableValue> variables;    // by name
+    std::vector<std::string> variablesUsed;  // the names its ${...} looked up
     SourceLocation where;
 };
 
