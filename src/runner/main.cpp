@@ -183,6 +183,12 @@ int main(int argc, char** argv) {
         }
     }
 
+    if (!options.selection.empty()) {
+        applySelection(suites, options.selection);
+        if (suites.empty()) {
+            std::fprintf(stderr, "%s: warning: no test is selected\n", program);
+        }
+    }
     if (options.list || options.listVariables) {
         // What would run, and nothing run: no plug-in is loaded, no fixture started.
         for (auto& suite : suites) {

@@ -167,6 +167,22 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                  "JSON");
     app.add_flag("--list-vars", options.listVariables,
                  "Print each suite's variables, their values and where they come from, and exit");
+    std::vector<std::string> tags;
+    std::vector<std::string> excludedTags;
+    std::vector<std::string> filters;
+    takeAll(app.add_option("--tag", tags,
+                           "Run only the tests whose tags match EXPR: a tag or pattern (*, ?), "
+                           "with AND, OR, NOT (e.g. armANDslow, 'arm OR leg', 'NOT slow'); "
+                           "repeatable, any may match")
+                ->type_name("EXPR"));
+    takeAll(app.add_option("--exclude-tag", excludedTags,
+                           "Leave out the tests whose tags match EXPR (repeatable)")
+                ->type_name("EXPR"));
+    takeAll(app.add_option("--filter", filters,
+                           "Run only the tests whose suite/test name matches: patterns with * "
+                           "and ?, separated by ':', negative ones after '-' (e.g. "
+                           "'arm/*-*slow*')")
+                ->type_name("PATTERN"));
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -254,6 +270,27 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
             return usageError("--var " + variable + ": " + error);
         }
         options.variables.emplace_back(name, value);
+    }
+
+    for (const auto& group :
+         {std::make_pair("--tag", &tags), std::make_pair("--exclude-tag", &excludedTags)}) {
+        for (const auto& text : *group.second) {
+            TagExpression expression;
+            std::string error;
+            if (!TagExpression::parse(text, expression, error)) {
+                return usageError(std::string(group.first) + " " + text + ": " + error);
+            }
+            (group.second == &tags ? options.selection.include : options.selection.exclude)
+                .push_back(std::move(expression));
+        }
+    }
+    for (const auto& text : filters) {
+        NameFilter filter;
+        std::string error;
+        if (!NameFilter::parse(text, filter, error)) {
+            return usageError("--filter " + text + ": " + error);
+        }
+        options.selection.filters.push_back(std::move(filter));
     }
 
     if (options.nothingToRun()) {

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "selection.h"
+
 namespace robottestingframework {
 namespace runner {
 
@@ -38,6 +40,7 @@ struct Options {
     std::vector<std::string> variableFiles;                      // --var-file FILE
     bool list = false;                                           // --list: print, run nothing
     bool listVariables = false;                                  // --list-vars
+    Selection selection;                                         // --tag, --exclude-tag, --filter
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();

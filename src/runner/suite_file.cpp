@@ -268,7 +268,7 @@ public:
         } else if (rootName != "suite") {
             fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
         }
-        checkAttributes(root, {"name"});
+        checkAttributes(root, {"name", "tags"});
 
         SuiteSpec suite;
         suite.where = where(root);
@@ -293,6 +293,7 @@ public:
             defineVariable(node, variables::Source::Suite, declared);
         }
         checkVariables(declared);
+        suite.tags = splitList(expand(root, root.attribute("tags").value()));
 
         // One allocation of the right size: growing (or shrinking) a vector of 10 000 specs
         // holds two copies at once, the largest moment of a big run.
@@ -330,6 +331,12 @@ public:
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
                                           : readTest(node, expand(node, pluginOf(node))));
+                TestSpec& added = suite.tests.back();
+                for (const auto& tag : suite.tags) {
+                    if (std::find(added.tags.begin(), added.tags.end(), tag) == added.tags.end()) {
+                        added.tags.push_back(tag);
+                    }
+                }
             } else {
                 fail(node, "unknown element <" + name +
                                "> (expected description, environment, timeout, variable, "

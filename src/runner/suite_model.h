@@ -31,7 +31,8 @@ struct TestSpec {
     unsigned int repetition = 1;  // 0 in a suite file without one: --repetition, else 1
     double timeout = 0;           // seconds; 0: none (issue 3 fills the precedence)
     std::vector<std::string> depends;
-    std::vector<std::string> tags;
+    std::vector<std::string> tags;  // its own and its suite's
+    std::string skipReason;         // non-empty: skipped with this reason, never run
     SourceLocation where;
 };
 
@@ -48,6 +49,7 @@ struct SuiteSpec {
     std::string description;
     std::string environment;
     double timeout = 0;
+    std::vector<std::string> tags;  // tags="..." of the suite: given to each of its tests
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
     std::vector<VariableValue> variables;    // by name
