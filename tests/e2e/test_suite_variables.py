@@ -238,3 +238,16 @@ def test_an_undefined_variable_in_a_test_file_names_both_files(tmp_path):
     assert run.returncode == 2, run
     assert f"{suite}:2: in the test file named here: {tmp_path}/tests/left_arm.xml:1: " \
            "undefined variable ${robot}" in run.stderr, run
+
+
+def test_a_var_read_only_by_a_test_file_is_not_called_unused(tmp_path):
+    left_arm(tmp_path)
+    suite = write(tmp_path / "suite.xml", '<suite name="s">\n  <variable name="robot">r'
+                                          '</variable>\n  <test file="tests/left_arm.xml"/>\n'
+                                          '</suite>\n')
+    run = run_runner("--suite", suite, "--var", "part=wrist", "--var", "nobody=1", "--list",
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    assert "param --expect-param r --part wrist\n" in run.stdout, run
+    assert "--var part=wrist is not used" not in run.stderr, run
+    assert "--var nobody=1 is not used" in run.stderr, run
