@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
     build-essential cmake ninja-build pkg-config
     libgtest-dev libgmock-dev libpugixml-dev libcli11-dev
-    libxml2-utils clang-format
+    libxml2-utils clang-format nlohmann-json3-dev
     python3 python3-dev python3-pytest python3-venv pybind11-dev
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs

@@ -17,6 +17,7 @@
 
 #include "in_process_executor.h"
 #include "isolated_executor.h"
+#include "listing.h"
 #include "options.h"
 #include "output_capture.h"
 #include "output_paths.h"
@@ -193,6 +194,31 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s: %s\n", program, problem.c_str());
             return configurationError;
         }
+    }
+
+    if (!options.selection.empty()) {
+        applySelection(suites, options.selection);
+        if (suites.empty()) {
+            std::fprintf(stderr, "%s: warning: no test is selected\n", program);
+        }
+    }
+    if (options.list || options.listVariables) {
+        // What would run, and nothing run: no plug-in is loaded, no fixture started.
+        for (auto& suite : suites) {
+            applyOverrides(suite, overrides);
+        }
+        std::fputs((options.listVariables ? listVariablesText(suites) : listText(suites)).c_str(),
+                   stdout);
+        for (const auto& output : options.outputs) {
+            std::string error;
+            if (options.list && output.type == "json" &&
+                !writeListJson(output.file, suites, error)) {
+                std::fprintf(stderr, "%s: cannot write the list %s: %s\n", program,
+                             output.file.c_str(), error.c_str());
+                return configurationError;
+            }
+        }
+        return allPassed;
     }
 
     // The fork server is started here, on the main thread, which lives for the whole run: the

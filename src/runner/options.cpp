@@ -2,6 +2,7 @@
 
 #include "numbers.h"
 #include "reporter_registry.h"
+#include "variables.h"
 
 #include <cstring>
 
@@ -145,8 +146,36 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                                              std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
-    takeAll(app.add_option("--var", variables, "Set the suite variable NAME (repeatable)")
+    takeAll(app.add_option("--var", variables,
+                           "Set the variable NAME, used as ${NAME} in suites, test files and "
+                           "world files; wins over --var-file and the files' own (repeatable)")
                 ->type_name("NAME=VALUE"));
+    takeAll(app.add_option("--var-file", options.variableFiles,
+                           "Read variables from FILE, NAME=VALUE per line, # comments; a later "
+                           "file wins (repeatable)")
+                ->type_name("FILE"));
+    app.add_flag("--list", options.list,
+                 "Print what would run (suite, test, type, plug-in, param, tags, timeout) and "
+                 "exit without loading or starting anything; --output json:FILE writes it as "
+                 "JSON");
+    app.add_flag("--list-vars", options.listVariables,
+                 "Print each suite's variables, their values and where they come from, and exit");
+    std::vector<std::string> tags;
+    std::vector<std::string> excludedTags;
+    std::vector<std::string> filters;
+    takeAll(app.add_option("--tag", tags,
+                           "Run only the tests whose tags match EXPR: a tag or pattern (*, ?), "
+                           "with AND, OR, NOT (e.g. armANDslow, 'arm OR leg', 'NOT slow'); "
+                           "repeatable, any may match")
+                ->type_name("EXPR"));
+    takeAll(app.add_option("--exclude-tag", excludedTags,
+                           "Leave out the tests whose tags match EXPR (repeatable)")
+                ->type_name("EXPR"));
+    takeAll(app.add_option("--filter", filters,
+                           "Run only the tests whose suite/test name matches: patterns with * "
+                           "and ?, separated by ':', negative ones after '-' (e.g. "
+                           "'arm/*-*slow*')")
+                ->type_name("PATTERN"));
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -226,11 +255,34 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     }
 
     for (const auto& variable : variables) {
-        std::size_t equal = variable.find('=');
-        if (equal == std::string::npos || equal == 0) {
-            return usageError("--var " + variable + ": expected NAME=VALUE");
+        std::string name;
+        std::string value;
+        std::string error;
+        if (!variables::parseAssignment(variable, name, value, error)) {
+            return usageError("--var " + variable + ": " + error);
         }
-        options.variables.emplace_back(variable.substr(0, equal), variable.substr(equal + 1));
+        options.variables.emplace_back(name, value);
+    }
+
+    for (const auto& group :
+         {std::make_pair("--tag", &tags), std::make_pair("--exclude-tag", &excludedTags)}) {
+        for (const auto& text : *group.second) {
+            TagExpression expression;
+            std::string error;
+            if (!TagExpression::parse(text, expression, error)) {
+                return usageError(std::string(group.first) + " " + text + ": " + error);
+            }
+            (group.second == &tags ? options.selection.include : options.selection.exclude)
+                .push_back(std::move(expression));
+        }
+    }
+    for (const auto& text : filters) {
+        NameFilter filter;
+        std::string error;
+        if (!NameFilter::parse(text, filter, error)) {
+            return usageError("--filter " + text + ": " + error);
+        }
+        options.selection.filters.push_back(std::move(filter));
     }
 
     if (options.nothingToRun()) {

@@ -5,6 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "selection.h"
+
 namespace robottestingframework {
 namespace runner {
 
@@ -35,6 +37,10 @@ struct Options {
     double timeout = 0;                 // --timeout SECONDS for every test; 0: none
     bool failFast = false;              // --fail-fast: the first failure stops the run
     std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
+    std::vector<std::string> variableFiles;                      // --var-file FILE
+    bool list = false;                                           // --list: print, run nothing
+    bool listVariables = false;                                  // --list-vars
+    Selection selection;                                         // --tag, --exclude-tag, --filter
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();

@@ -33,6 +33,10 @@ bool names(const std::string& dependency, const TestSpec& spec) {
 
 }  // namespace
 
+bool dependencyNames(const std::string& dependency, const TestSpec& spec) {
+    return names(dependency, spec);
+}
+
 std::string findUnknownDependency(const std::vector<SuiteSpec>& suites) {
     for (const auto& suite : suites) {
         for (const auto& test : suite.tests) {
@@ -164,6 +168,10 @@ bool RunGate::skip(const Test* test, TestMessage& reason) {
     const auto* self = dynamic_cast<const PluginTest*>(test);
     if (self == nullptr) {
         return false;  // a suite
+    }
+    if (!self->spec().skipReason.empty()) {
+        reason = TestMessage(self->spec().skipReason);  // decided before the run (selection)
+        return true;
     }
     for (const auto& dependency : self->spec().depends) {
         bool ran = false;

@@ -16,6 +16,10 @@
 namespace robottestingframework {
 namespace runner {
 
+// Whether depends="`dependency`" names `spec`: its name="...", or its plug-in as written, with
+// or without folder, lib prefix and suffix.
+bool dependencyNames(const std::string& dependency, const TestSpec& spec);
+
 // Empty when every depends="..." of `suites` names a test of the run (its name="..." or its
 // plug-in as written, with or without folder, lib prefix and suffix); else
 // "suite.xml:12: unknown dependency 'x' ...". The name a test reports is only known once it

@@ -1,5 +1,6 @@
 #include "run_plan.h"
 
+#include <algorithm>
 #include <fstream>
 #include <stdexcept>
 
@@ -24,15 +25,6 @@ public:
 private:
     std::string reason_;
 };
-
-// One word for the fixture's param, as a shell would quote it.
-std::string quoted(const std::string& word) {
-    std::string text = "'";
-    for (char c : word) {
-        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    }
-    return text + "'";
-}
 
 bool isProcessFixture(const FixtureSpec& fixture) {
     return fixture.type == "process" && !fixture.path.empty();
@@ -67,27 +59,24 @@ std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
     for (const auto& variable : overrides.variables) {
         const std::string use = "${" + variable.first + "}";
         bool read = false;
+        for (const auto& suite : suites) {
+            const auto& used = suite.variablesUsed;
+            read = read || std::find(used.begin(), used.end(), variable.first) != used.end();
+        }
         for (const auto& world : worlds) {
             read = read || world.find(use) != std::string::npos;
         }
         if (!read) {
             warnings.push_back("warning: --var " + variable.first + "=" + variable.second +
-                               " is not used: no world file of a process fixture in this run "
-                               "reads " +
-                               use + " (suite variables are not supported yet)");
+                               " is not used: no suite, test file or world file of a process "
+                               "fixture in this run reads " +
+                               use);
         }
     }
     return warnings;
 }
 
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides) {
-    for (auto& fixture : suite.fixtures) {
-        if (isProcessFixture(fixture)) {
-            for (const auto& variable : overrides.variables) {
-                append(fixture.param, "--var " + quoted(variable.first + "=" + variable.second));
-            }
-        }
-    }
     for (auto& test : suite.tests) {
         if (test.param.empty()) {
             test.param = overrides.param;

@@ -26,8 +26,8 @@ struct Overrides {
     std::string environment;      // appended to the suite's and the test's
     unsigned int repetition = 0;  // for tests without a repetition of their own; 0: once
     double timeout = 0;           // --timeout: for tests whose suite and own give none
-    // --var NAME=VALUE: suite variables are not read yet; the process fixtures' world files
-    // read them, after the fixture's own --var (so the command line wins).
+    // --var NAME=VALUE: already applied when the suites were read (suite_file.h); kept to
+    // warn about the ones nothing reads.
     std::vector<std::pair<std::string, std::string>> variables;
 };
 
@@ -35,8 +35,9 @@ struct Overrides {
 // is the most specific given: the test's, the suite's <timeout>, then --timeout (0: none).
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides);
 
-// A warning for each --var that no world file of the run's process fixtures names as ${NAME}:
-// nothing would read it, and a value silently ignored is a test run against the wrong thing.
+// A warning for each --var that no suite or test file of the run used and no world file of its
+// process fixtures names as ${NAME}: nothing would read it, and a value silently ignored is a test
+// run against the wrong thing.
 std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
                                          const Overrides& overrides);
 

@@ -67,6 +67,15 @@ std::vector<std::string> splitList(const std::string& text) {
     return items;
 }
 
+// One word for a param, as a shell would quote it.
+std::string quoted(const std::string& word) {
+    std::string text = "'";
+    for (char c : word) {
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return text + "'";
+}
+
 template <std::size_t N>
 std::string listOf(const char* const (&names)[N]) {
     std::string text;
@@ -82,42 +91,66 @@ bool isOneOf(const std::string& value, const char* const (&names)[N]) {
                        [&value](const char* name) { return value == name; });
 }
 
+// A regular file of at most maxSuiteFileBytes; `what` names it in messages ("suite file").
+std::string readBoundedFile(const std::string& path, const std::string& what) {
+    // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
+    // runs out: only a regular file of a bounded size is read.
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
+                             ")");
+    }
+    if (S_ISDIR(info.st_mode)) {
+        throw SuiteFileError(path + ": is a folder, not a " + what + "");
+    }
+    if (!S_ISREG(info.st_mode)) {
+        const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO (named pipe)"
+                           : S_ISCHR(info.st_mode)  ? "a character device"
+                           : S_ISBLK(info.st_mode)  ? "a block device"
+                           : S_ISSOCK(info.st_mode) ? "a socket"
+                                                    : "not a regular file";
+        throw SuiteFileError(path + ": is " + std::string(kind) + ", not a " + what + " (a " +
+                             what + " is a regular file)");
+    }
+    const std::string tooLarge = path + ": the " + what + " is larger than " +
+                                 std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
+                                 " MiB, the limit of a " + what;
+    if (static_cast<unsigned long long>(info.st_size) > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
+                             ")");
+    }
+    // Up to one byte past the limit: a file can grow after stat().
+    std::string content;
+    content.reserve(static_cast<std::size_t>(info.st_size));
+    char chunk[65536];
+    while (in && content.size() <= maxSuiteFileBytes) {
+        in.read(chunk, sizeof chunk);
+        content.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
+    if (in.bad()) {
+        throw SuiteFileError(path + ": cannot read the " + what + "");
+    }
+    if (content.size() > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
+    }
+    return content;
+}
+
 // Reads one suite document; every error names the file and the line of the offending element.
 class SuiteReader {
 public:
     SuiteReader(const std::string& text, const std::string& path,
-                std::vector<std::string>& warnings)
-        : text_(text), path_(path), folder_(folderOf(path)), warnings_(warnings) {
+                std::vector<std::string>& warnings, variables::VariableTable& table)
+        : text_(text), path_(path), folder_(folderOf(path)), warnings_(warnings), table_(table) {
         for (std::size_t i = 0; i < text_.size(); ++i) {
             if (text_[i] == '\n') {
                 newlines_.push_back(i);
             }
         }
-    }
-
-    SuiteSpec read() {
-        pugi::xml_document document;
-        pugi::xml_parse_result parsed = document.load_buffer(
-            text_.data(), text_.size(), pugi::parse_default, pugi::encoding_auto);
-        if (!parsed) {
-            fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
-        }
-        pugi::xml_node root;
-        for (pugi::xml_node node : document.children()) {
-            if (node.type() == pugi::node_element) {
-                if (root) {
-                    fail(node, "a second root element <" + std::string(node.name()) +
-                                   ">; a suite file holds one <suite>");
-                }
-                root = node;
-            } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
-                fail(node, "text outside the <suite> element");
-            }
-        }
-        if (!root) {
-            fail(text_.size(), "no root element; expected <suite name=\"...\">");
-        }
-        return readSuite(root);
     }
 
 private:
@@ -184,12 +217,11 @@ private:
         return plugin;
     }
 
-    unsigned int repetitionOf(pugi::xml_node node, pugi::xml_attribute attribute) const {
+    unsigned int repetitionOf(pugi::xml_node node, const std::string& text) const {
         unsigned int runs = 0;
-        const std::string problem = checkRepetition(attribute.value(), runs);
+        const std::string problem = checkRepetition(text, runs);
         if (!problem.empty()) {
-            fail(node, "repetition=\"" + std::string(attribute.value()) + "\" " + problem +
-                           " (e.g. repetition=\"3\")");
+            fail(node, "repetition=\"" + text + "\" " + problem + " (e.g. repetition=\"3\")");
         }
         return runs;
     }
@@ -226,6 +258,7 @@ private:
         return resolved_[plugin] = plugin::findPlugin(plugin, folder_);
     }
 
+public:
     SuiteSpec readSuite(pugi::xml_node root) {
         std::string rootName = root.name();
         if (rootName == "suit") {
@@ -235,7 +268,7 @@ private:
         } else if (rootName != "suite") {
             fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
         }
-        checkAttributes(root, {"name"});
+        checkAttributes(root, {"name", "tags"});
 
         SuiteSpec suite;
         suite.where = where(root);
@@ -252,6 +285,15 @@ private:
             }
             seen = true;
         };
+
+        // Variables first: they may be used anywhere in the suite, before or after them.
+        std::vector<pugi::xml_node> declared;
+        for (pugi::xml_node node = root.child("variable"); node;
+             node = node.next_sibling("variable")) {
+            defineVariable(node, variables::Source::Suite, declared);
+        }
+        checkVariables(declared);
+        suite.tags = splitList(expand(root, root.attribute("tags").value()));
 
         // One allocation of the right size: growing (or shrinking) a vector of 10 000 specs
         // holds two copies at once, the largest moment of a big run.
@@ -276,119 +318,289 @@ private:
             } else if (name == "environment") {
                 once(node, haveEnvironment);
                 checkAttributes(node, {});
-                suite.environment = textOf(node);
+                suite.environment = expand(node, textOf(node));
             } else if (name == "timeout") {
                 once(node, haveTimeout);
                 checkAttributes(node, {});
-                suite.timeout = secondsOf(node, textOf(node), "<timeout>");
+                suite.timeout = secondsOf(node, expand(node, textOf(node)), "<timeout>");
+            } else if (name == "variable") {
+                continue;  // read above
             } else if (name == "fixture") {
                 suite.fixtures.push_back(readFixture(node));
             } else if (name == "test") {
-                suite.tests.push_back(readTest(node));
+                suite.tests.push_back(node.attribute("file")
+                                          ? readTestFile(node)
+                                          : readTest(node, expand(node, pluginOf(node))));
+                TestSpec& added = suite.tests.back();
+                for (const auto& tag : suite.tags) {
+                    if (std::find(added.tags.begin(), added.tags.end(), tag) == added.tags.end()) {
+                        added.tags.push_back(tag);
+                    }
+                }
             } else {
                 fail(node, "unknown element <" + name +
-                               "> (expected description, environment, timeout, fixture or "
-                               "test)");
+                               "> (expected description, environment, timeout, variable, "
+                               "fixture or test)");
+            }
+        }
+        for (const auto& variable : table_.all()) {
+            suite.variables.push_back(
+                {variable.first, valueOf(root, variable.first), variable.second.origin});
+        }
+        suite.variablesUsed = table_.used();
+        for (const auto& name : usedInTestFiles_) {
+            if (std::find(suite.variablesUsed.begin(), suite.variablesUsed.end(), name) ==
+                suite.variablesUsed.end()) {
+                suite.variablesUsed.push_back(name);
             }
         }
         return suite;
     }
 
-    FixtureSpec readFixture(pugi::xml_node node) const {
+    // A test file: one <test> as in a suite, with <variable> defaults of its own; the
+    // attributes of the suite's <test file="..."> (`overrides`) win over the file's.
+    TestSpec readTestDocument(pugi::xml_node root, pugi::xml_node overrides) {
+        if (std::string(root.name()) != "test") {
+            fail(root, "the root element is <" + std::string(root.name()) +
+                           ">; a test file holds one <test> written as in a suite");
+        }
+        checkAttributes(root, {"type", "param", "environment", "repetition", "name", "timeout",
+                               "depends", "tags"});
+        std::vector<pugi::xml_node> declared;
+        std::string plugin;
+        for (pugi::xml_node child : root.children()) {
+            if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+                plugin += child.value();
+            } else if (child.type() == pugi::node_element &&
+                       std::string(child.name()) == "variable") {
+                defineVariable(child, variables::Source::TestFile, declared);
+            } else if (child.type() == pugi::node_element) {
+                fail(child, "<" + std::string(child.name()) +
+                                "> inside <test>; a test file's <test> holds its plug-in as "
+                                "text and <variable> defaults");
+            }
+        }
+        checkVariables(declared);
+        plugin = trim(plugin);
+        if (plugin.empty()) {
+            fail(root, "<test> without a plug-in; write its file name as the element's text");
+        }
+        return readTest(root, expand(root, plugin), overrides);
+    }
+
+    const variables::VariableTable& table() const { return table_; }
+
+private:
+    void defineVariable(pugi::xml_node node, variables::Source source,
+                        std::vector<pugi::xml_node>& declared) {
+        checkAttributes(node, {"name"});
+        const std::string name = trim(node.attribute("name").value());
+        if (!variables::isVariableName(name)) {
+            fail(node, "<variable name=\"" + name +
+                           "\">: a name is letters, digits, _, - and ., not starting with a "
+                           "digit (e.g. <variable name=\"robot\">icubSim</variable>)");
+        }
+        for (const pugi::xml_node& other : declared) {
+            if (name == trim(other.attribute("name").value())) {
+                fail(node, "<variable name=\"" + name + "\"> given twice (first at line " +
+                               std::to_string(where(other).line) + ")");
+            }
+        }
+        declared.push_back(node);
+        table_.define({name, textOf(node), source, where(node).toString()});
+    }
+
+    // Each variable is expanded once at its own line: a wrong one is reported there.
+    void checkVariables(const std::vector<pugi::xml_node>& declared) {
+        for (const pugi::xml_node& node : declared) {
+            valueOf(node, trim(node.attribute("name").value()));
+        }
+    }
+
+    std::string valueOf(pugi::xml_node node, const std::string& name) {
+        return guarded(node, [&] { return table_.valueOf(name); });
+    }
+
+    // ${...} in `text` of `node`; an error names this file and the node's line.
+    std::string expand(pugi::xml_node node, const std::string& text) {
+        return guarded(node, [&] { return table_.expand(text); });
+    }
+
+    template <typename Expansion>
+    std::string guarded(pugi::xml_node node, Expansion expansion) {
+        try {
+            return expansion();
+        } catch (const variables::ExpandError& e) {
+            std::string message = e.message;
+            if (e.kind == variables::ExpandError::Kind::Undefined) {
+                message += " (define it with <variable name=\"" + e.name +
+                           "\">VALUE</variable> in the suite, or pass --var " + e.name + "=VALUE";
+                std::string defined;
+                for (const auto& variable : table_.all()) {
+                    defined += (defined.empty() ? "" : ", ") + variable.first;
+                }
+                message +=
+                    defined.empty() ? "; no variable is defined)" : "; defined: " + defined + ")";
+            }
+            fail(node, message);
+        }
+    }
+
+    FixtureSpec readFixture(pugi::xml_node node) {
         checkAttributes(node, {"param", "type"});
         FixtureSpec fixture;
         fixture.where = where(node);
-        fixture.plugin = pluginOf(node);
+        fixture.plugin = expand(node, pluginOf(node));
         fixture.type =
             typeOf(node, std::begin(fixtureTypes), std::end(fixtureTypes), listOf(fixtureTypes));
-        fixture.param = node.attribute("param").value();
+        fixture.param = expand(node, node.attribute("param").value());
+        if (fixture.type == "process") {
+            // Every variable reaches the world file: the suite's under the fixture's own
+            // --var, the command line's over it.
+            std::string before;
+            std::string after;
+            for (const auto& variable : table_.all()) {
+                const std::string word =
+                    "--var " +
+                    quoted(variable.first + "=" + variables::escape(valueOf(node, variable.first)));
+                std::string& side =
+                    variable.second.source >= variables::Source::VarFile ? after : before;
+                side += (side.empty() ? "" : " ") + word;
+            }
+            for (const std::string* part : {&fixture.param, &after}) {
+                if (!part->empty()) {
+                    before += (before.empty() ? "" : " ") + *part;
+                }
+            }
+            fixture.param = before;
+        }
         fixture.path = resolve(fixture.plugin);
         return fixture;
     }
 
-    TestSpec readTest(pugi::xml_node node) const {
-        checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
-                               "depends", "tags"});
+    TestSpec readTest(pugi::xml_node node, const std::string& plugin,
+                      pugi::xml_node overrides = pugi::xml_node()) {
+        if (!overrides) {
+            checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
+                                   "depends", "tags"});
+        }
+        auto attribute = [&](const char* name) {
+            pugi::xml_attribute given = overrides.attribute(name);
+            return given ? given : node.attribute(name);
+        };
+        auto value = [&](const char* name) { return expand(node, attribute(name).value()); };
         TestSpec test;
         test.where = where(node);
-        test.plugin = pluginOf(node);
-        test.type = typeOf(node, std::begin(testTypes), std::end(testTypes), listOf(testTypes));
-        test.param = node.attribute("param").value();
-        test.environment = node.attribute("environment").value();
-        test.name = trim(node.attribute("name").value());
-        if (pugi::xml_attribute repetition = node.attribute("repetition")) {
-            test.repetition = repetitionOf(node, repetition);
+        test.plugin = plugin;
+        pugi::xml_node typed = overrides.attribute("type") ? overrides : node;
+        test.type = typeOf(typed, std::begin(testTypes), std::end(testTypes), listOf(testTypes));
+        test.param = value("param");
+        test.environment = value("environment");
+        test.name = trim(value("name"));
+        if (attribute("repetition")) {
+            test.repetition = repetitionOf(node, value("repetition"));
         } else {
             test.repetition = 0;  // not given: the command line or the default decides
         }
-        if (pugi::xml_attribute timeout = node.attribute("timeout")) {
-            test.timeout = secondsOf(node, timeout.value(), "timeout");
+        if (attribute("timeout")) {
+            test.timeout = secondsOf(node, value("timeout"), "timeout");
         }
-        test.depends = splitList(node.attribute("depends").value());
-        test.tags = splitList(node.attribute("tags").value());
+        test.depends = splitList(value("depends"));
+        test.tags = splitList(value("tags"));
         test.path = resolve(test.plugin);
         return test;
     }
 
+    // <test file="tests/left_arm.xml" .../>: the file is found from this suite's folder and
+    // read with this suite's variables over its own defaults.
+    TestSpec readTestFile(pugi::xml_node node) {
+        checkAttributes(node, {"file", "type", "param", "environment", "repetition", "name",
+                               "timeout", "depends", "tags"});
+        if (!textOf(node).empty()) {
+            fail(node,
+                 "<test file=\"...\"> with a plug-in as text; the test file names the "
+                 "plug-in, write <test file=\"...\"/>");
+        }
+        const std::string file = trim(expand(node, node.attribute("file").value()));
+        if (file.empty()) {
+            fail(node, "<test file=\"\"> names no file; expected the path of a test file");
+        }
+        const std::string path = file[0] == '/' ? file : folder_ + "/" + file;
+        std::string text;
+        try {
+            text = readBoundedFile(path, "test file");
+        } catch (const SuiteFileError& e) {
+            fail(node, "<test file=\"" + file + "\">: " + e.what());
+        }
+        variables::VariableTable table = table_;  // the suite's and the command line's
+        table.resetTotal();
+        SuiteReader reader(text, path, warnings_, table);
+        try {
+            pugi::xml_document document;
+            TestSpec test = reader.readTestDocument(reader.parseRoot(document, "<test>"), node);
+            for (const auto& name : table.used()) {
+                usedInTestFiles_.push_back(name);
+            }
+            return test;
+        } catch (const SuiteFileError& e) {
+            fail(node, "in the test file named here: " + std::string(e.what()));
+        }
+    }
+
+public:
+    // The one root element of the document, parsed into `document`; `expected` names it.
+    pugi::xml_node parseRoot(pugi::xml_document& document, const std::string& expected) {
+        pugi::xml_parse_result parsed = document.load_buffer(
+            text_.data(), text_.size(), pugi::parse_default, pugi::encoding_auto);
+        if (!parsed) {
+            fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
+        }
+        pugi::xml_node root;
+        for (pugi::xml_node node : document.children()) {
+            if (node.type() == pugi::node_element) {
+                if (root) {
+                    fail(node, "a second root element <" + std::string(node.name()) +
+                                   ">; the file holds one " + expected);
+                }
+                root = node;
+            } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+                fail(node, "text outside the " + expected + " element");
+            }
+        }
+        if (!root) {
+            fail(text_.size(), "no root element; expected " + expected);
+        }
+        return root;
+    }
+
+private:
     const std::string& text_;
     std::string path_;
     std::string folder_;
     std::vector<std::string>& warnings_;
+    variables::VariableTable& table_;
     std::vector<std::size_t> newlines_;
+    std::vector<std::string> usedInTestFiles_;
     mutable std::unordered_map<std::string, std::string> resolved_;
 };
 
 }  // namespace
 
 SuiteSpec parseSuite(const std::string& text, const std::string& path,
-                     std::vector<std::string>& warnings) {
-    return SuiteReader(text, path, warnings).read();
+                     std::vector<std::string>& warnings,
+                     const std::vector<variables::Variable>& commandLine) {
+    variables::VariableTable table;
+    for (const auto& variable : commandLine) {
+        table.define(variable);
+    }
+    SuiteReader reader(text, path, warnings, table);
+    pugi::xml_document document;
+    return reader.readSuite(reader.parseRoot(document, "<suite name=\"...\">"));
 }
 
-SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings) {
-    // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
-    // runs out: only a regular file of a bounded size is read.
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) {
-        throw SuiteFileError(path + ": cannot read the suite file (" + std::strerror(errno) + ")");
-    }
-    if (S_ISDIR(info.st_mode)) {
-        throw SuiteFileError(path + ": is a folder, not a suite file (use --suites for folders)");
-    }
-    if (!S_ISREG(info.st_mode)) {
-        const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO (named pipe)"
-                           : S_ISCHR(info.st_mode)  ? "a character device"
-                           : S_ISBLK(info.st_mode)  ? "a block device"
-                           : S_ISSOCK(info.st_mode) ? "a socket"
-                                                    : "not a regular file";
-        throw SuiteFileError(path + ": is " + std::string(kind) +
-                             ", not a suite file (a suite file is a regular file)");
-    }
-    const std::string tooLarge = path + ": the suite file is larger than " +
-                                 std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
-                                 " MiB, the limit of a suite file";
-    if (static_cast<unsigned long long>(info.st_size) > maxSuiteFileBytes) {
-        throw SuiteFileError(tooLarge);
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw SuiteFileError(path + ": cannot read the suite file (" + std::strerror(errno) + ")");
-    }
-    // Up to one byte past the limit: a file can grow after stat().
-    std::string content;
-    content.reserve(static_cast<std::size_t>(info.st_size));
-    char chunk[65536];
-    while (in && content.size() <= maxSuiteFileBytes) {
-        in.read(chunk, sizeof chunk);
-        content.append(chunk, static_cast<std::size_t>(in.gcount()));
-    }
-    if (in.bad()) {
-        throw SuiteFileError(path + ": cannot read the suite file");
-    }
-    if (content.size() > maxSuiteFileBytes) {
-        throw SuiteFileError(tooLarge);
-    }
-    return parseSuite(content, path, warnings);
+SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings,
+                        const std::vector<variables::Variable>& commandLine) {
+    return parseSuite(readBoundedFile(path, "suite file"), path, warnings, commandLine);
 }
 
 }  // namespace runner

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "suite_model.h"
+#include "variables.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -24,13 +25,17 @@ constexpr std::size_t maxSuiteFileBytes = 16 * 1024 * 1024;
 // Reads and checks `path`, a regular file of at most maxSuiteFileBytes. Plug-in names are resolved
 // next to the suite file, then on the library search path (TestSpec::path stays empty when not
 // found: the test then fails to load). Non-fatal remarks (the old `suit` root) are appended to
-// `warnings`.
-SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings);
+// `warnings`. ${...} is expanded with `commandLine` (--var, --var-file) over the suite's own
+// <variable>s; a <test file="..."> is read in and expanded with the suite's variables over its
+// own defaults. Process fixtures get every variable in their param (--var NAME=VALUE).
+SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings,
+                        const std::vector<variables::Variable>& commandLine = {});
 
 // The same from text already read; `path` names it in messages and gives the folder plug-ins
 // are looked for in.
 SuiteSpec parseSuite(const std::string& text, const std::string& path,
-                     std::vector<std::string>& warnings);
+                     std::vector<std::string>& warnings,
+                     const std::vector<variables::Variable>& commandLine = {});
 
 }  // namespace runner
 }  // namespace robottestingframework

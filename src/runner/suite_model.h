@@ -14,6 +14,13 @@ struct SourceLocation {
     std::string toString() const;
 };
 
+// A variable of a suite once every source is applied (for --list-vars).
+struct VariableValue {
+    std::string name;
+    std::string value;   // expanded
+    std::string origin;  // "--var", "vars.env:3", "suite.xml:4"
+};
+
 struct TestSpec {
     std::string plugin;  // as written: a path or a bare name
     std::string path;    // resolved file; empty when it could not be found
@@ -24,7 +31,8 @@ struct TestSpec {
     unsigned int repetition = 1;  // 0 in a suite file without one: --repetition, else 1
     double timeout = 0;           // seconds; 0: none (issue 3 fills the precedence)
     std::vector<std::string> depends;
-    std::vector<std::string> tags;
+    std::vector<std::string> tags;  // its own and its suite's
+    std::string skipReason;         // non-empty: skipped with this reason, never run
     SourceLocation where;
 };
 
@@ -41,8 +49,11 @@ struct SuiteSpec {
     std::string description;
     std::string environment;
     double timeout = 0;
+    std::vector<std::string> tags;  // tags="..." of the suite: given to each of its tests
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
+    std::vector<VariableValue> variables;    // by name
+    std::vector<std::string> variablesUsed;  // the names its ${...} looked up
     SourceLocation where;
 };
 

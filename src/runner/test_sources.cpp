@@ -78,8 +78,24 @@ std::vector<std::string> listFolder(const std::string& folder, bool recursive,
     return files;
 }
 
+std::vector<variables::Variable> commandLineVariables(const Options& options) {
+    std::vector<variables::Variable> found;
+    for (const auto& file : options.variableFiles) {
+        std::string error;
+        if (!variables::readVariableFile(file, found, error)) {
+            throw std::runtime_error("--var-file " + error);
+        }
+    }
+    for (const auto& variable : options.variables) {
+        found.push_back({variable.first, variable.second, variables::Source::CommandLine, "--var"});
+    }
+    return found;
+}
+
 std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::string>& warnings) {
     std::vector<SuiteSpec> suites;
+    // First: a bad --var-file is an error even when no suite reads it.
+    const std::vector<variables::Variable> variables = commandLineVariables(options);
 
     SuiteSpec commandLine;
     commandLine.name = commandLineSuiteName;
@@ -108,7 +124,7 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
         suiteFiles.insert(suiteFiles.end(), files.begin(), files.end());
     }
     for (const auto& file : suiteFiles) {
-        suites.push_back(readSuiteFile(file, warnings));
+        suites.push_back(readSuiteFile(file, warnings, variables));
     }
     return suites;
 }

@@ -7,6 +7,7 @@
 
 #include "options.h"
 #include "suite_model.h"
+#include "variables.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -17,6 +18,10 @@ extern const char* const commandLineSuiteName;
 // Throws std::runtime_error (SuiteFileError for a suite file) on a configuration error: a
 // folder that is not one, an unreadable or malformed suite. Remarks go to `warnings`.
 std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::string>& warnings);
+
+// --var-file (in order: a later file wins) then --var. Throws std::runtime_error naming the
+// file and line of a bad --var-file.
+std::vector<variables::Variable> commandLineVariables(const Options& options);
 
 // Files of `folder` (and its sub-folders when `recursive`) that `keep` accepts, sorted.
 std::vector<std::string> listFolder(const std::string& folder, bool recursive,

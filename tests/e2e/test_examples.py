@@ -5,6 +5,7 @@ Every run is marked with an environment variable its processes inherit, so a pro
 behind (the MQTT broker, the simulated robot) is found by its mark."""
 import os
 import re
+import socket
 import subprocess
 import time
 import uuid
@@ -86,6 +87,26 @@ def test_example_suite_passes(tmp_path, mark, suite, isolation):
                      "--output", f"junit:{junit}", cwd=tmp_path, timeout=60,
                      env={"RTF_E2E_MARK": mark})
     check_passed(run, junit, SUITES[suite])
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.mark.parametrize("isolation", ["none", "process"])
+def test_the_robot_example_takes_its_ports_from_variables(tmp_path, mark, isolation):
+    broker, robot = free_port(), free_port()
+    junit = tmp_path / "junit.xml"
+    run = run_runner("--suite", EXAMPLES / "robot" / "robot.xml", "--isolation", isolation,
+                     "--verbose", "--var", f"robot_port={robot}", "--var",
+                     f"broker_port={broker}", "--output", f"junit:{junit}", cwd=tmp_path,
+                     timeout=60, env={"RTF_E2E_MARK": mark})
+    check_passed(run, junit, SUITES["robot/robot.xml"])
+    assert f"TCP port 127.0.0.1:{robot}" in run.output, run
+    assert f"TCP port 127.0.0.1:{broker}" in run.output, run
+    assert "not used" not in run.stderr, run
 
 
 def test_the_quick_start_example_run(tmp_path, mark):

@@ -355,8 +355,8 @@ def test_tests_not_run_because_ctrl_c_hit_a_fixture_set_up_are_interrupted(tmp_p
 def test_a_variable_nothing_reads_is_named_in_a_warning(tmp_path):
     run = run_runner("--test", PASSING, "--var", "robot=icub", "--no-output", cwd=tmp_path)
     assert run.returncode == 0, run
-    assert ("warning: --var robot=icub is not used: no world file of a process fixture in this "
-            "run reads ${robot}") in run.stderr, run
+    assert ("warning: --var robot=icub is not used: no suite, test file or world file of a "
+            "process fixture in this run reads ${robot}") in run.stderr, run
 
 
 def test_a_variable_reaches_the_world_files_of_process_fixtures(tmp_path):

@@ -102,6 +102,7 @@ def test_web_reporter_is_accepted_with_a_warning(tmp_path):
     assert "web reporter is not built yet" in run.stderr, run
 
 
-def test_var_is_accepted(tmp_path):
+def test_var_is_accepted_and_one_nothing_reads_is_a_warning(tmp_path):
     run = run_runner("-t", plugin("passing_test"), "--var", "robot=icub", cwd=tmp_path)
     assert run.returncode == 0, run
+    assert "warning: --var robot=icub is not used" in run.stderr, run

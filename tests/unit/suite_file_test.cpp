@@ -191,3 +191,37 @@ TEST(SuiteFile, OnlyARegularFileIsReadAsASuite) {
                   "regular file)");
     }
 }
+
+TEST(SuiteFile, GivesProcessFixturesEveryVariableAroundTheirOwnParam) {
+    std::vector<std::string> warnings;
+    using robottestingframework::variables::Source;
+    SuiteSpec suite = parseSuite(R"(<suite name="s">
+  <variable name="robot">icubSim</variable>
+  <variable name="text">it's $${literal}</variable>
+  <fixture type="process" param="--var robot=mine">world.xml</fixture>
+  <fixture param="--robot ${robot}">libplain.so</fixture>
+</suite>)",
+                                 "/nowhere/suite.xml", warnings,
+                                 {{"port", "10001", Source::CommandLine, "--var"}});
+    ASSERT_EQ(suite.fixtures.size(), 2u);
+    // The suite's under the fixture's own --var, the command line's over it; values escaped
+    // so the world file's expander gives them back as they are.
+    EXPECT_EQ(suite.fixtures[0].param,
+              "--var 'robot=icubSim' --var 'text=it'\\''s $${literal}' --var robot=mine "
+              "--var 'port=10001'");
+    EXPECT_EQ(suite.fixtures[1].param, "--robot icubSim");
+    ASSERT_EQ(suite.variables.size(), 3u);
+    EXPECT_EQ(suite.variables[1].name, "robot");
+    EXPECT_EQ(suite.variables[1].origin, "/nowhere/suite.xml:2");
+    EXPECT_EQ(suite.variables[2].value, "it's ${literal}");
+}
+
+TEST(SuiteFile, AVariableNameMustBeAName) {
+    EXPECT_NE(errorOf("<suite>\n<variable name=\"1 a\">x</variable></suite>")
+                  .find("/nowhere/suite.xml:2: <variable name=\"1 a\">: a name is letters"),
+              std::string::npos);
+    EXPECT_NE(errorOf("<suite>\n<variable name=\"a\">x</variable>\n<variable name=\"a\">y"
+                      "</variable></suite>")
+                  .find(":3: <variable name=\"a\"> given twice (first at line 2)"),
+              std::string::npos);
+}

@@ -1,0 +1,132 @@
+#include "listing.h"
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+
+#include "atomic_file.h"
+#include "plugin_test.h"
+#include "test_loader.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// The type a test would be loaded as: its own, else the file's (empty: it would not load).
+std::string typeOf(const TestSpec& test) {
+    if (!test.type.empty() || test.path.empty()) {
+        return test.type;
+    }
+    return languages::typeFromFile(test.path);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+    std::string text;
+    for (const auto& item : items) {
+        text += (text.empty() ? "" : ",") + item;
+    }
+    return text;
+}
+
+// "suite/test": the id --filter matches.
+std::string idOf(const SuiteSpec& suite, const TestSpec& test) {
+    return suite.name + "/" + PluginTest::displayName(test);
+}
+
+std::string seconds(double value) {
+    std::ostringstream text;
+    text << value << "s";
+    return text.str();
+}
+
+}  // namespace
+
+std::string listText(const std::vector<SuiteSpec>& suites) {
+    std::string text;
+    std::size_t count = 0;
+    for (const auto& suite : suites) {
+        text += "suite " + suite.name +
+                (suite.where.file.empty() ? std::string() : " (" + suite.where.file + ")") + "\n";
+        for (const auto& test : suite.tests) {
+            ++count;
+            text += "  " + idOf(suite, test) + "\n";
+            const std::string type = typeOf(test);
+            text += "      type " + (type.empty() ? std::string("(unknown)") : type) +
+                    ", plug-in " + (test.path.empty() ? test.plugin + " (not found)" : test.path) +
+                    "\n";
+            if (!test.param.empty()) {
+                text += "      param " + test.param + "\n";
+            }
+            if (!test.tags.empty()) {
+                text += "      tags " + joined(test.tags) + "\n";
+            }
+            if (test.timeout > 0) {
+                text += "      timeout " + seconds(test.timeout) + "\n";
+            }
+            if (test.repetition > 1) {
+                text += "      repetition " + std::to_string(test.repetition) + "\n";
+            }
+        }
+    }
+    text += std::to_string(count) + (count == 1 ? " test" : " tests") + " in " +
+            std::to_string(suites.size()) + (suites.size() == 1 ? " suite" : " suites") + "\n";
+    return text;
+}
+
+std::string listJson(const std::vector<SuiteSpec>& suites) {
+    nlohmann::json list = {{"suites", nlohmann::json::array()}};
+    for (const auto& suite : suites) {
+        nlohmann::json fixtures = nlohmann::json::array();
+        for (const auto& fixture : suite.fixtures) {
+            fixtures.push_back({{"plugin", fixture.plugin},
+                                {"path", fixture.path},
+                                {"type", fixture.type},
+                                {"param", fixture.param}});
+        }
+        nlohmann::json tests = nlohmann::json::array();
+        for (const auto& test : suite.tests) {
+            tests.push_back({{"id", idOf(suite, test)},
+                             {"name", PluginTest::displayName(test)},
+                             {"type", typeOf(test)},
+                             {"plugin", test.plugin},
+                             {"path", test.path},
+                             {"param", test.param},
+                             {"environment", test.environment},
+                             {"tags", test.tags},
+                             {"timeout", test.timeout},
+                             {"repetition", test.repetition},
+                             {"depends", test.depends},
+                             {"where", test.where.toString()}});
+        }
+        list["suites"].push_back({{"name", suite.name},
+                                  {"file", suite.where.file},
+                                  {"fixtures", fixtures},
+                                  {"tests", tests}});
+    }
+    // Invalid UTF-8 in a param is replaced, not a reason to write nothing.
+    return list.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+}
+
+bool writeListJson(const std::string& file, const std::vector<SuiteSpec>& suites,
+                   std::string& error) {
+    return reporters::writeFileAtomically(file, listJson(suites), error);
+}
+
+std::string listVariablesText(const std::vector<SuiteSpec>& suites) {
+    std::string text;
+    for (const auto& suite : suites) {
+        text += "suite " + suite.name +
+                (suite.where.file.empty() ? std::string() : " (" + suite.where.file + ")") + "\n";
+        if (suite.variables.empty()) {
+            text += "  (no variables)\n";
+        }
+        for (const auto& variable : suite.variables) {
+            text += "  " + variable.name + " = " + variable.value + "  (" + variable.origin + ")\n";
+        }
+    }
+    return text;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework
