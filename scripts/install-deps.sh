@@ -10,6 +10,7 @@ packages=(
     python3 python3-dev python3-pytest python3-venv pybind11-dev
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs
+    libcpp-httplib-dev nlohmann-json3-dev chromium chromium-driver python3-selenium
 )
 
 missing=()

@@ -16,6 +16,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TextOutputter.h>
+#include <robottestingframework/WebProgressListener.h>
 
 #include "in_process_executor.h"
 #include "isolated_executor.h"
@@ -139,6 +140,15 @@ bool anythingFailed(const TestResultCollector& collector) {
     return false;
 }
 
+// Keeps serving the final page for `seconds`, or until Ctrl-C or SIGTERM.
+void lingerOn(const WebProgressListener& web, double seconds) {
+    std::fprintf(stdout, "%s: the final page stays at %s for %g s (Ctrl-C to quit)\n", program,
+                 web.url().c_str(), seconds);
+    std::fflush(stdout);
+    platform::SignalPipe signals({SIGINT, SIGTERM});
+    signals.wait(static_cast<int>(seconds * 1000));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -148,13 +158,6 @@ int main(int argc, char** argv) {
         std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
         return parsed.status;
     }
-    if (options.webReporter) {
-        std::fprintf(stderr,
-                     "%s: warning: the web reporter is not built yet; --web-reporter and "
-                     "--web-port are ignored\n",
-                     program);
-    }
-
     std::vector<std::string> warnings;
     std::vector<SuiteSpec> suites;
     try {
@@ -205,6 +208,26 @@ int main(int argc, char** argv) {
     }
     suites.clear();
 
+    // The page is served from before the first test until the run ends (and --web-linger).
+    std::unique_ptr<WebProgressListener> web;
+    if (options.webReporter) {
+        if (options.webHost != "127.0.0.1") {
+            std::fprintf(stderr,
+                         "%s: warning: --web-host %s: the page of the run is served beyond "
+                         "this machine's loopback address\n",
+                         program, options.webHost.c_str());
+        }
+        web = std::make_unique<WebProgressListener>(
+            options.webHost, static_cast<unsigned int>(options.webPort), options.verbose);
+        if (!web->isListening()) {
+            std::fprintf(stderr, "%s: --web-port %d: %s\n", program, options.webPort,
+                         web->error().c_str());
+            return configurationError;
+        }
+        std::fprintf(stdout, "%s: live web page at %s\n", program, web->url().c_str());
+        std::fflush(stdout);
+    }
+
     const bool colours = wantColours();
     TestResult result;
     OutputCapture capture;
@@ -232,6 +255,9 @@ int main(int argc, char** argv) {
     result.addListener(&console);
     result.addListener(&collector);
     result.addListener(&plan.gate());
+    if (web) {
+        result.addListener(web.get());
+    }
 
     int interrupted = 0;
     {
@@ -254,6 +280,9 @@ int main(int argc, char** argv) {
     }
     if (!writeOutputs(options, collector, stderr)) {
         status = configurationError;
+    }
+    if (web && options.webLinger > 0 && interrupted == 0) {
+        lingerOn(*web, options.webLinger);
     }
     return status;
 }

@@ -1,0 +1,158 @@
+// The live page: a snapshot of the run, then its changes as Server-Sent Events. Everything a
+// test says is put in the page as text (textContent), never as HTML.
+"use strict";
+
+const run = { state: "waiting", tests: 0, passed: 0, failed: 0, skipped: 0, duration: 0 };
+const suites = [];
+let lastSeq = 0;
+let source = null;
+let drawPending = false;
+
+function element(tag, className, text) {
+  const node = document.createElement(tag);
+  if (className) node.className = className;
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
+
+function stateClass(state) {
+  return "state state-" + String(state).replace(/ /g, "-");
+}
+
+function seconds(value) {
+  return (Number(value) || 0).toFixed(3) + " s";
+}
+
+function messagesList(messages) {
+  const list = element("ul", "messages");
+  for (const message of messages || []) {
+    const item = element("li");
+    item.appendChild(element("span", "kind", message.kind + ":"));
+    item.appendChild(document.createTextNode(message.text));
+    if (message.where) item.appendChild(element("span", "where", "[" + message.where + "]"));
+    list.appendChild(item);
+  }
+  return list;
+}
+
+function testRow(test) {
+  const row = element("tr", "test");
+  row.dataset.state = test.state;
+  row.appendChild(element("td", stateClass(test.state), test.state));
+  const name = element("td", "name");
+  name.appendChild(element("span", "test-name", test.name));
+  if (test.messages && test.messages.length) name.appendChild(messagesList(test.messages));
+  if (test.output) name.appendChild(element("pre", "output", test.output));
+  row.appendChild(name);
+  const running = test.state === "running" || test.state === "not run";
+  row.appendChild(element("td", "duration", running ? "" : seconds(test.duration)));
+  return row;
+}
+
+function suiteSection(suite) {
+  const section = element("section", "suite");
+  section.dataset.state = suite.state;
+  const title = element("h2");
+  title.appendChild(element("span", stateClass(suite.state), suite.state));
+  title.appendChild(document.createTextNode(" "));
+  title.appendChild(element("span", "suite-name", suite.name));
+  if (suite.state !== "running") title.appendChild(element("span", "where", seconds(suite.duration)));
+  section.appendChild(title);
+  if (suite.messages && suite.messages.length) section.appendChild(messagesList(suite.messages));
+  const table = element("table");
+  for (const test of suite.tests || []) table.appendChild(testRow(test));
+  section.appendChild(table);
+  return section;
+}
+
+function drawSummary() {
+  const summary = document.getElementById("summary");
+  const counts = run.passed + " passed, " + run.failed + " failed, " + run.skipped +
+      " skipped of " + run.tests;
+  if (run.state === "finished") {
+    summary.textContent = "Finished: " + counts + " in " + seconds(run.duration);
+    summary.className = "summary finished " + (run.failed > 0 ? "state-failed" : "state-passed");
+  } else if (run.state === "running") {
+    summary.textContent = "Running: " + counts;
+    summary.className = "summary running state-running";
+  } else {
+    summary.textContent = "Waiting for the run…";
+    summary.className = "summary waiting";
+  }
+  const total = Math.max(run.tests, 1);
+  document.getElementById("bar-passed").style.width = (100 * run.passed / total) + "%";
+  document.getElementById("bar-failed").style.width = (100 * run.failed / total) + "%";
+  document.getElementById("bar-skipped").style.width = (100 * run.skipped / total) + "%";
+}
+
+function draw() {
+  drawPending = false;
+  drawSummary();
+  const main = document.getElementById("suites");
+  main.replaceChildren(...suites.map(suiteSection));
+}
+
+function scheduleDraw() {
+  if (!drawPending) {
+    drawPending = true;
+    window.requestAnimationFrame(draw);
+  }
+}
+
+function apply(change) {
+  if (change.type === "run") {
+    Object.assign(run, change.run);
+  } else if (change.type === "suite") {
+    suites[change.index] = change.suite;
+  } else if (change.type === "test") {
+    const suite = suites[change.suite];
+    if (suite) suite.tests[change.index] = change.test;
+  }
+  if (typeof change.seq === "number") lastSeq = Math.max(lastSeq, change.seq);
+}
+
+function setConnection(text) {
+  document.getElementById("connection").textContent = text;
+}
+
+function listen() {
+  source = new EventSource("/events?since=" + lastSeq);
+  source.onopen = () => setConnection("live");
+  source.onmessage = (event) => {
+    apply(JSON.parse(event.data));
+    scheduleDraw();
+    if (run.state === "finished") {
+      source.close();  // the final result stays on the page
+      setConnection("the run has ended");
+    }
+  };
+  source.onerror = () => {
+    if (run.state === "finished") {
+      source.close();
+      setConnection("the run has ended");
+    } else {
+      setConnection("connection lost; retrying…");
+    }
+  };
+}
+
+async function start() {
+  try {
+    const response = await fetch("/snapshot", { cache: "no-store" });
+    const snapshot = await response.json();
+    Object.assign(run, snapshot.run);
+    suites.length = 0;
+    suites.push(...snapshot.suites);
+    lastSeq = snapshot.seq;
+  } catch (error) {
+    setConnection("cannot read the run: " + error);
+  }
+  draw();
+  if (run.state === "finished") {
+    setConnection("the run has ended");
+  } else {
+    listen();
+  }
+}
+
+start();
