@@ -184,6 +184,19 @@ def test_a_port_in_use_exits_2_naming_it(tmp_path):
     assert "1 passed" not in r.stdout, r
 
 
+def test_a_second_runner_on_the_same_port_exits_2(tmp_path, suite_file):
+    suite, go = blocked_suite(tmp_path, suite_file)
+    first = WebRun("-s", suite, cwd=tmp_path)
+    try:
+        r = run_runner("-w", "--web-port", first.port, "--no-output", "-t",
+                       quick_test(tmp_path, "t"), cwd=tmp_path, timeout=60)
+        assert r.returncode == 2, r
+        assert f"--web-port {first.port}" in r.stderr, r
+    finally:
+        go.touch()
+    assert first.wait() == 0
+
+
 def test_another_host_is_served_with_a_warning(tmp_path):
     port = free_port()
     r = run_runner("-w", "--web-port", port, "--web-host", "127.0.0.2", "--no-output", "-t",
