@@ -27,12 +27,16 @@ def browser(tmp_path):
     options = webdriver.ChromeOptions()
     for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
                      "--window-size=1100,760", f"--user-data-dir={tmp_path / 'chromium'}",
-                     "--no-first-run", "--disable-extensions"):
+                     "--no-first-run", "--disable-extensions", "--disable-crash-reporter",
+                     "--disable-breakpad"):
         options.add_argument(argument)
     options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    service = Service(executable_path=CHROMEDRIVER, log_output=os.devnull) \
-        if "log_output" in Service.__init__.__code__.co_varnames \
-        else Service(executable_path=CHROMEDRIVER, log_path=os.devnull)
+    # Chromium's profile, caches and crash reports stay in the test's folder, not in ~.
+    home = tmp_path / "home"
+    home.mkdir()
+    env = dict(os.environ, HOME=str(home), XDG_CONFIG_HOME=str(home / ".config"),
+               XDG_CACHE_HOME=str(home / ".cache"))
+    service = Service(executable_path=CHROMEDRIVER, log_path=os.devnull, env=env)
     driver = webdriver.Chrome(service=service, options=options)
     driver.set_page_load_timeout(30)
     yield driver
