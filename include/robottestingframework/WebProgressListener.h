@@ -20,9 +20,10 @@ namespace robottestingframework {
 class WebProgressListener : public TestListener {
 public:
     // Listens on 127.0.0.1:port; port 0 picks a free one (see port()). `verbose` also shows
-    // what the tests print.
+    // what the tests print. When it cannot listen, it says so on stderr (and isListening()).
     WebProgressListener(unsigned int port = 8080, bool verbose = false);
-    // Listens on `host` ("127.0.0.1", "::1", "0.0.0.0", ...) instead.
+    // Listens on `host` ("127.0.0.1", "::1", "0.0.0.0", ...) instead; a failure to listen is
+    // only told by isListening() and error(), for the caller to report.
     WebProgressListener(const std::string& host, unsigned int port, bool verbose = false);
     ~WebProgressListener() override;
 

@@ -42,7 +42,12 @@ struct WebProgressListener::State {
 };
 
 WebProgressListener::WebProgressListener(unsigned int port, bool verbose)
-    : WebProgressListener("127.0.0.1", port, verbose) {}
+    : WebProgressListener("127.0.0.1", port, verbose) {
+    // RTF 2.x's programs do not ask isListening(): say it rather than serve nothing silently.
+    if (!state_->listening) {
+        std::fprintf(stderr, "WebProgressListener: %s\n", state_->error.c_str());
+    }
+}
 
 WebProgressListener::WebProgressListener(const std::string& host, unsigned int port, bool verbose)
     : state_(new State(host, port, verbose)) {}
