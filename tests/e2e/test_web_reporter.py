@@ -4,7 +4,7 @@ import json
 import socket
 import time
 
-from conftest import run_runner
+from conftest import plugin, run_runner
 from web_run import WebRun, free_port, poll, quick_test, request, waiting_test
 
 
@@ -210,3 +210,40 @@ def test_web_port_out_of_range_is_a_usage_error(tmp_path):
     r = run_runner("-w", "--web-port", "70000", "-t", quick_test(tmp_path, "t"), cwd=tmp_path)
     assert r.returncode == 2, r
     assert "--web-port" in r.stderr, r
+
+
+def test_a_failing_fixture_fails_the_suite_on_the_page(tmp_path, suite_file):
+    log = tmp_path / "fixtures.log"
+    suite = suite_file(f"""<suite name="broken world">
+  <fixture param="--log {log} --name B --fail-setup">{plugin("order_fixture")}</fixture>
+  <test>{plugin("passing_test")}</test>
+</suite>""")
+    run = WebRun("-s", suite, "--web-linger", "60", cwd=tmp_path)
+    try:
+        run.wait_for_line("final page stays")
+        snapshot = json.loads(request(run.port, "/snapshot")[2])
+        assert snapshot["run"]["state"] == "finished"
+        broken = snapshot["suites"][0]
+        assert broken["name"] == "broken world" and broken["state"] == "failed", broken
+        said = [m["text"] for m in broken["messages"]]
+        assert any("setup returned false" in text for text in said), broken
+        assert [t["state"] for t in broken["tests"]] == ["skipped"], broken
+        run.proc.send_signal(2)
+        assert run.wait(timeout=10) == 1, run.output()
+    finally:
+        run.kill()
+
+
+def test_verbose_shows_what_the_tests_print(tmp_path):
+    test = quick_test(tmp_path, "talker", "echo 'arm moved to 90 deg'\n")
+    run = WebRun("-v", "-t", test, "--web-linger", "60", cwd=tmp_path)
+    try:
+        run.wait_for_line("final page stays")
+        snapshot = json.loads(request(run.port, "/snapshot")[2])
+        talker = snapshot["suites"][0]["tests"][0]
+        assert talker["state"] == "passed", snapshot
+        assert "arm moved to 90 deg" in talker["output"], snapshot
+        run.proc.send_signal(2)
+        assert run.wait(timeout=10) == 0, run.output()
+    finally:
+        run.kill()
