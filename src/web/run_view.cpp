@@ -9,8 +9,21 @@ namespace {
 
 using Json = nlohmann::json;
 
-// What a test printed is capped: the page is for reading, not for archiving.
+// What a test printed and its reports are capped: the page is for reading, not for archiving
+// (the result files keep everything), and each change re-sends the test's messages.
 const std::size_t maxOutput = 64 * 1024;
+const std::size_t maxMessages = 200;
+
+// Failures, errors, ... are always kept; reports beyond the cap are only counted.
+bool keep(const RunView::Message& message, std::vector<RunView::Message>& messages,
+          std::size_t& hidden) {
+    if (message.kind == "report" && messages.size() >= maxMessages) {
+        ++hidden;
+        return false;
+    }
+    messages.push_back(message);
+    return true;
+}
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -212,16 +225,18 @@ void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& m
         if (isFailure(status)) {
             suite.failed = true;
         }
-        suite.messages.push_back(std::move(message));
-        publishSuite(openSuite_);
+        if (keep(message, suite.messages, suite.hiddenReports)) {
+            publishSuite(openSuite_);
+        }
         return;
     }
     TestView& test = suites_[openSuite_].tests[openTest_];
     if (status > test.worst) {
         test.worst = status;
     }
-    test.messages.push_back(std::move(message));
-    publishTest(openSuite_, openTest_);
+    if (keep(message, test.messages, test.hiddenReports)) {
+        publishTest(openSuite_, openTest_);
+    }
 }
 
 void RunView::addOutput(const std::string& text) {
@@ -287,12 +302,14 @@ void RunView::publishSuite(std::size_t index) {
                    {"state", suite.state},
                    {"duration", suite.duration},
                    {"messages", toJson(suite.messages)},
+                   {"hiddenReports", suite.hiddenReports},
                    {"tests", Json::array()}}}};
     for (const auto& test : suite.tests) {
         json["suite"]["tests"].push_back({{"name", test.name},
                                           {"state", test.state},
                                           {"duration", test.duration},
                                           {"messages", toJson(test.messages)},
+                                          {"hiddenReports", test.hiddenReports},
                                           {"output", test.output}});
     }
     publish(dump(json));
@@ -308,6 +325,7 @@ void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
                    {"state", test.state},
                    {"duration", test.duration},
                    {"messages", toJson(test.messages)},
+                   {"hiddenReports", test.hiddenReports},
                    {"output", test.output}}}};
     publish(dump(json));
 }
@@ -332,12 +350,14 @@ std::string RunView::snapshotJson() const {
                              {"state", test.state},
                              {"duration", test.duration},
                              {"messages", toJson(test.messages)},
+                             {"hiddenReports", test.hiddenReports},
                              {"output", test.output}});
         }
         suites.push_back({{"name", suite.name},
                           {"state", suite.state},
                           {"duration", suite.duration},
                           {"messages", toJson(suite.messages)},
+                          {"hiddenReports", suite.hiddenReports},
                           {"tests", std::move(tests)}});
     }
     Json snapshot = {

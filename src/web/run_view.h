@@ -61,6 +61,7 @@ private:
         std::chrono::steady_clock::time_point started;
         double duration = 0;
         std::vector<Message> messages;
+        std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
         std::string output;
     };
     struct SuiteView {
@@ -70,6 +71,7 @@ private:
         std::chrono::steady_clock::time_point started;
         double duration = 0;
         std::vector<Message> messages;
+        std::size_t hiddenReports = 0;
         std::vector<TestView> tests;
     };
     static constexpr std::size_t none = static_cast<std::size_t>(-1);

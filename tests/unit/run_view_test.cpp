@@ -111,3 +111,25 @@ TEST(RunView, CloseEndsAWaitingReader) {
     EXPECT_TRUE(closed);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(5));
 }
+
+TEST(RunView, ReportsBeyondTheCapAreCountedButFailuresAlwaysKept) {
+    RunView view(false);
+    view.startSuite("s", {"chatty"});
+    view.startTest("chatty");
+    for (int i = 0; i < 1000; ++i) {
+        view.addMessage(false, "report", TestMessage("step " + std::to_string(i)),
+                        TestStatus::Passed);
+    }
+    std::uint64_t before = 0;
+    changesAfter(view, 0, &before);
+    view.addMessage(false, "failure", TestMessage("dropped the cup"), TestStatus::Failed);
+    view.endTest();
+    view.endSuite();
+    auto chatty = nlohmann::json::parse(view.snapshotJson())["suites"][0]["tests"][0];
+    EXPECT_EQ(chatty["messages"].size(), 201u);
+    EXPECT_EQ(chatty["hiddenReports"], 800);
+    EXPECT_EQ(chatty["messages"].back()["text"], "dropped the cup");
+    EXPECT_EQ(chatty["state"], "failed");
+    // Only the kept reports were changes of their own.
+    EXPECT_LT(before, 220u);
+}

@@ -23,7 +23,7 @@ function seconds(value) {
   return (Number(value) || 0).toFixed(3) + " s";
 }
 
-function messagesList(messages) {
+function messagesList(messages, hidden) {
   const list = element("ul", "messages");
   for (const message of messages || []) {
     const item = element("li");
@@ -31,6 +31,9 @@ function messagesList(messages) {
     item.appendChild(document.createTextNode(message.text));
     if (message.where) item.appendChild(element("span", "where", "[" + message.where + "]"));
     list.appendChild(item);
+  }
+  if (hidden > 0) {
+    list.appendChild(element("li", "hidden", "… " + hidden + " more reports (the result files have them)"));
   }
   return list;
 }
@@ -41,7 +44,9 @@ function testRow(test) {
   row.appendChild(element("td", stateClass(test.state), test.state));
   const name = element("td", "name");
   name.appendChild(element("span", "test-name", test.name));
-  if (test.messages && test.messages.length) name.appendChild(messagesList(test.messages));
+  if ((test.messages && test.messages.length) || test.hiddenReports > 0) {
+    name.appendChild(messagesList(test.messages, test.hiddenReports));
+  }
   if (test.output) name.appendChild(element("pre", "output", test.output));
   row.appendChild(name);
   const running = test.state === "running" || test.state === "not run";
@@ -58,7 +63,9 @@ function suiteSection(suite) {
   title.appendChild(element("span", "suite-name", suite.name));
   if (suite.state !== "running") title.appendChild(element("span", "where", seconds(suite.duration)));
   section.appendChild(title);
-  if (suite.messages && suite.messages.length) section.appendChild(messagesList(suite.messages));
+  if ((suite.messages && suite.messages.length) || suite.hiddenReports > 0) {
+    section.appendChild(messagesList(suite.messages, suite.hiddenReports));
+  }
   const table = element("table");
   for (const test of suite.tests || []) table.appendChild(testRow(test));
   section.appendChild(table);
