@@ -92,11 +92,50 @@ function drawSummary() {
   document.getElementById("bar-skipped").style.width = (100 * run.skipped / total) + "%";
 }
 
+// What changed since the last drawing: only that is drawn again, so a long run stays cheap.
+const dirty = { all: true, suites: new Set(), tests: [] };
+const sections = [];
+
+function placeSection(main, index) {
+  const node = suiteSection(suites[index]);
+  if (sections[index]) {
+    sections[index].replaceWith(node);
+  } else {
+    main.appendChild(node);
+  }
+  sections[index] = node;
+}
+
+function placeRow(suiteIndex, index) {
+  const section = sections[suiteIndex];
+  const test = suites[suiteIndex] && suites[suiteIndex].tests[index];
+  if (!section || !test) return;
+  const table = section.querySelector("table");
+  const row = testRow(test);
+  if (table.rows[index]) {
+    table.rows[index].replaceWith(row);
+  } else {
+    table.appendChild(row);
+  }
+}
+
 function draw() {
   drawPending = false;
   drawSummary();
   const main = document.getElementById("suites");
-  main.replaceChildren(...suites.map(suiteSection));
+  if (dirty.all) {
+    sections.length = 0;
+    main.replaceChildren();
+    suites.forEach((suite, index) => { if (suite) placeSection(main, index); });
+  } else {
+    for (const index of [...dirty.suites].sort((a, b) => a - b)) placeSection(main, index);
+    for (const [suiteIndex, index] of dirty.tests) {
+      if (!dirty.suites.has(suiteIndex)) placeRow(suiteIndex, index);
+    }
+  }
+  dirty.all = false;
+  dirty.suites.clear();
+  dirty.tests.length = 0;
 }
 
 function scheduleDraw() {
@@ -111,9 +150,13 @@ function apply(change) {
     Object.assign(run, change.run);
   } else if (change.type === "suite") {
     suites[change.index] = change.suite;
+    dirty.suites.add(change.index);
   } else if (change.type === "test") {
     const suite = suites[change.suite];
-    if (suite) suite.tests[change.index] = change.test;
+    if (suite) {
+      suite.tests[change.index] = change.test;
+      dirty.tests.push([change.suite, change.index]);
+    }
   }
   if (typeof change.seq === "number") lastSeq = Math.max(lastSeq, change.seq);
 }
@@ -151,6 +194,7 @@ async function start() {
     suites.length = 0;
     suites.push(...snapshot.suites);
     lastSeq = snapshot.seq;
+    dirty.all = true;
   } catch (error) {
     setConnection("cannot read the run: " + error);
   }
