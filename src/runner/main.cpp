@@ -55,13 +55,21 @@ public:
         : signals_({SIGINT, SIGTERM}),
           quit_(std::move(quit)),
           thread_([this, &plan, console] { watch(plan, console); }) {}
-    ~InterruptWatcher() {
-        done_ = true;
-        signals_.wake();  // or the run would end up to one poll period (200 ms) late
-        thread_.join();
+    ~InterruptWatcher() { stop(); }
+    // Stops watching and returns the first signal received, 0 when none. A signal that came
+    // as the run ended counts too (or it would be lost, e.g. during --web-linger).
+    int stop() {
+        if (thread_.joinable()) {
+            done_ = true;
+            signals_.wake();  // or the run would end up to one poll period (200 ms) late
+            thread_.join();
+            // The pipe may hold the wake-up byte (0) before the signal.
+            for (int i = 0; i < 3 && received_ == 0; ++i) {
+                received_ = signals_.take();
+            }
+        }
+        return received_;
     }
-    // The first signal received, 0 when none.
-    int received() const { return received_; }
 
 private:
     void watch(RunPlan& plan, std::FILE* console) {
@@ -270,7 +278,7 @@ int main(int argc, char** argv) {
         };
         InterruptWatcher watcher(plan, capture.console(), quit);
         plan.runner().run(result);
-        interrupted = watcher.received();
+        interrupted = watcher.stop();
     }
     capture.stop();
 

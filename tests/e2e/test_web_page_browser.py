@@ -92,6 +92,7 @@ def test_page_follows_the_run_and_shows_hostile_names_as_text(tmp_path, suite_fi
         ARTIFACTS.mkdir(parents=True, exist_ok=True)
         assert browser.save_screenshot(str(ARTIFACTS / "web_page.png"))
         assert (ARTIFACTS / "web_page.png").stat().st_size > 1000
+        run.wait_for_line("final page stays")
     finally:
         go.touch()
         if run.proc.poll() is None:

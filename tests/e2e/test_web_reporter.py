@@ -102,6 +102,7 @@ def test_snapshot_and_event_stream_replay_from_last_event_id(tmp_path, suite_fil
         replay_ids = [int(line[4:]) for line in got.decode().splitlines()
                       if line.startswith("id: ")]
         assert replay_ids[:2] == [last - 1, last], got
+        run.wait_for_line("final page stays")
         run.proc.send_signal(2)
         assert run.wait(timeout=10) == 0
     finally:
