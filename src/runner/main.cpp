@@ -150,10 +150,10 @@ bool anythingFailed(const TestResultCollector& collector) {
 
 // Keeps serving the final page for `seconds`, or until Ctrl-C or SIGTERM.
 void lingerOn(const WebProgressListener& web, double seconds) {
+    platform::SignalPipe signals({SIGINT, SIGTERM});  // before saying Ctrl-C works
     std::fprintf(stdout, "%s: the final page stays at %s for %g s (Ctrl-C to quit)\n", program,
                  web.url().c_str(), seconds);
     std::fflush(stdout);
-    platform::SignalPipe signals({SIGINT, SIGTERM});
     signals.wait(static_cast<int>(seconds * 1000));
 }
 
