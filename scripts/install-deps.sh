@@ -10,7 +10,7 @@ packages=(
     python3 python3-dev python3-pytest python3-venv pybind11-dev
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs
-    chromium chromium-driver python3-selenium
+    libcpp-httplib-dev chromium chromium-driver python3-selenium
 )
 
 missing=()

@@ -14,6 +14,7 @@
 #include <robottestingframework/ConsoleListener.h>
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/WebProgressListener.h>
 
 #include "in_process_executor.h"
 #include "isolated_executor.h"
@@ -55,13 +56,21 @@ public:
         : signals_({SIGINT, SIGTERM}),
           quit_(std::move(quit)),
           thread_([this, &plan, console] { watch(plan, console); }) {}
-    ~InterruptWatcher() {
-        done_ = true;
-        signals_.wake();  // or the run would end up to one poll period (200 ms) late
-        thread_.join();
+    ~InterruptWatcher() { stop(); }
+    // Stops watching and returns the first signal received, 0 when none. A signal that came
+    // as the run ended counts too (or it would be lost, e.g. during --web-linger).
+    int stop() {
+        if (thread_.joinable()) {
+            done_ = true;
+            signals_.wake();  // or the run would end up to one poll period (200 ms) late
+            thread_.join();
+            // The pipe may hold the wake-up byte (0) before the signal.
+            for (int i = 0; i < 3 && received_ == 0; ++i) {
+                received_ = signals_.take();
+            }
+        }
+        return received_;
     }
-    // The first signal received, 0 when none.
-    int received() const { return received_; }
 
 private:
     void watch(RunPlan& plan, std::FILE* console) {
@@ -153,6 +162,15 @@ bool anythingFailed(const TestResultCollector& collector) {
     return false;
 }
 
+// Keeps serving the final page for `seconds`, or until Ctrl-C or SIGTERM.
+void lingerOn(const WebProgressListener& web, double seconds) {
+    platform::SignalPipe signals({SIGINT, SIGTERM});  // before saying Ctrl-C works
+    std::fprintf(stdout, "%s: the final page stays at %s for %g s (Ctrl-C to quit)\n", program,
+                 web.url().c_str(), seconds);
+    std::fflush(stdout);
+    signals.wait(static_cast<int>(seconds * 1000));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -162,13 +180,6 @@ int main(int argc, char** argv) {
         std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
         return parsed.status;
     }
-    if (options.webReporter) {
-        std::fprintf(stderr,
-                     "%s: warning: the web reporter is not built yet; --web-reporter and "
-                     "--web-port are ignored\n",
-                     program);
-    }
-
     std::vector<std::string> warnings;
     std::vector<SuiteSpec> suites;
     try {
@@ -250,6 +261,26 @@ int main(int argc, char** argv) {
     }
     suites.clear();
 
+    // The page is served from before the first test until the run ends (and --web-linger).
+    std::unique_ptr<WebProgressListener> web;
+    if (options.webReporter) {
+        if (options.webHost != "127.0.0.1") {
+            std::fprintf(stderr,
+                         "%s: warning: --web-host %s: the page of the run is served beyond "
+                         "this machine's loopback address\n",
+                         program, options.webHost.c_str());
+        }
+        web = std::make_unique<WebProgressListener>(
+            options.webHost, static_cast<unsigned int>(options.webPort), options.verbose);
+        if (!web->isListening()) {
+            std::fprintf(stderr, "%s: --web-port %d: %s\n", program, options.webPort,
+                         web->error().c_str());
+            return configurationError;
+        }
+        std::fprintf(stdout, "%s: live web page at %s\n", program, web->url().c_str());
+        std::fflush(stdout);
+    }
+
     const bool colours = wantColours();
     TestResult result;
     OutputCapture capture;
@@ -281,6 +312,9 @@ int main(int argc, char** argv) {
     for (const auto& output : outputs) {
         result.addListener(output.reporter.get());
     }
+    if (web) {
+        result.addListener(web.get());
+    }
 
     int interrupted = 0;
     {
@@ -296,7 +330,7 @@ int main(int argc, char** argv) {
         };
         InterruptWatcher watcher(plan, capture.console(), quit);
         plan.runner().run(result);
-        interrupted = watcher.received();
+        interrupted = watcher.stop();
     }
     capture.stop();
     if (options.isolation == "none") {
@@ -309,6 +343,9 @@ int main(int argc, char** argv) {
     }
     if (!writeOutputs(outputs, stderr)) {
         status = configurationError;
+    }
+    if (web && options.webLinger > 0 && interrupted == 0) {
+        lingerOn(*web, options.webLinger);
     }
     return status;
 }

@@ -127,9 +127,19 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_flag("--no-summary", options.noSummary,
                  "Leave the summary out of the console and the text output");
     app.add_flag("-w,--web-reporter", options.webReporter, "Show the run live in a web page");
-    app.add_option("--web-port", options.webPort, "Port of the web reporter (default 8080)")
+    app.add_option("--web-port", options.webPort,
+                   "Port of the web reporter (default 8080; 0 picks a free one)")
         ->type_name("N")
-        ->check(CLI::Range(1, 65535));
+        ->check(CLI::Range(0, 65535));
+    app.add_option("--web-host", options.webHost,
+                   "Address the web reporter listens on (default 127.0.0.1, this machine only)")
+        ->type_name("ADDRESS");
+    app.add_option("--web-linger", options.webLinger,
+                   "Keep serving the final web page this long after the run (default 0: exit "
+                   "when the run ends)")
+        ->type_name("SECONDS")
+        ->check(numberRule(checkSeconds,
+                           "from 0 to " + std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("-d,--detail", options.detail, "Show every check on the console");
     app.add_flag("-v,--verbose", options.verbose,
                  "Show the tests' reports and what they print on the console");

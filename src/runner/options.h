@@ -30,7 +30,9 @@ struct Options {
     bool noOutput = false;
     bool noSummary = false;
     bool webReporter = false;           // --web-reporter/-w
-    int webPort = 8080;                 // --web-port N
+    int webPort = 8080;                 // --web-port N; 0: a free port
+    std::string webHost = "127.0.0.1";  // --web-host ADDRESS
+    double webLinger = 0;               // --web-linger SECONDS: serve the final page that long
     bool detail = false;                // --detail/-d: every check on the console
     bool verbose = false;               // --verbose/-v: reports and output on the console
     std::string isolation = "process";  // --isolation process|none

@@ -82,6 +82,9 @@ def run_external(build, runner):
 
     own = run([build / "own_main"], 60)
     assert own.returncode == 0, own.stdout + own.stderr
+    web = run([build / "web_main"], 60)
+    assert web.returncode == 0, web.stdout + web.stderr
+    assert web.stdout.count("http://127.0.0.1:") == 2, web.stdout
 
     tests = check(["ctest", "--test-dir", build, "--output-on-failure", "--timeout", "120",
                    "-C", "Debug"], timeout=300)

@@ -75,7 +75,7 @@ def test_help_lists_every_option(tmp_path):
     for option in ("-t,--test", "--tests", "-s,--suite", "--suites", "-r,--recursive",
                    "-p,--param", "-e,--environment", "--repetition", "-o,--output",
                    "--output-type", "--no-output", "--no-summary", "-w,--web-reporter",
-                   "--web-port", "-d,--detail", "-v,--verbose", "--version", "--isolation",
+                   "--web-port", "--web-host", "--web-linger", "-d,--detail", "-v,--verbose", "--version", "--isolation",
                    "--timeout", "--fail-fast"):
         assert option in run.stdout, (option, run)
 
@@ -96,10 +96,12 @@ def test_usage_errors_exit_two(tmp_path, args, says):
     assert "--help" in run.stderr, run
 
 
-def test_web_reporter_is_accepted_with_a_warning(tmp_path):
-    run = run_runner("-t", plugin("passing_test"), "-w", "--web-port", "8123", cwd=tmp_path)
+def test_web_reporter_serves_the_run_and_exits_with_it(tmp_path):
+    run = run_runner("-t", plugin("passing_test"), "-w", "--web-port", "0", cwd=tmp_path,
+                     timeout=60)
     assert run.returncode == 0, run
-    assert "web reporter is not built yet" in run.stderr, run
+    assert "live web page at http://127.0.0.1:" in run.stdout, run
+    assert "not built yet" not in run.stderr, run
 
 
 def test_var_is_accepted_and_one_nothing_reads_is_a_warning(tmp_path):

@@ -90,6 +90,22 @@ TEST(Options, LongForms) {
     EXPECT_EQ(options.variables[0].second, "icub");
 }
 
+TEST(Options, WebReporterDefaultsAndItsOwnOptions) {
+    Options defaults;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "-w"}, defaults)));
+    EXPECT_EQ(defaults.webPort, 8080);
+    EXPECT_EQ(defaults.webHost, "127.0.0.1");
+    EXPECT_EQ(defaults.webLinger, 0);
+    Options options;
+    ParseResult result =
+        parse({"-t", "a.so", "-w", "--web-port", "0", "--web-host", "::1", "--web-linger", "2.5"},
+              options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(options.webPort, 0);
+    EXPECT_EQ(options.webHost, "::1");
+    EXPECT_EQ(options.webLinger, 2.5);
+}
+
 TEST(Options, ParamThatLooksLikeAnOptionIsAValue) {
     Options options;
     ParseResult result = parse({"-t", "a.so", "-p", "--verbose", "-e", "-x"}, options);
@@ -133,6 +149,7 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "--repetition", "0"}, "repetition"},
         {{"-t", "a.so", "--repetition", "abc"}, "repetition"},
         {{"-t", "a.so", "--web-port", "70000"}, "web-port"},
+        {{"-t", "a.so", "--web-linger", "-1"}, "web-linger"},
         {{"-t", "a.so", "--output-type", "xml"}, "unknown output type 'xml'"},
         {{"-t", "a.so", "-o", "yaml:out.yaml"}, "(expected text, junit, tap, json or html)"},
         {{"-t", "a.so", "-o", "junit:"}, "no file name"},

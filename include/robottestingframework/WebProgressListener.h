@@ -1,0 +1,64 @@
+// A live web page of a run: add the listener to a TestResult and open its url() in a browser.
+// The page shows every suite and test as it happens (state, duration, messages) and updates
+// itself; it is served from construction until destruction, so also after run() returns.
+//
+// Link RobotTestingFramework::RTF_web. Each listener has its own server: several listeners on
+// different ports work side by side.
+//
+// Endpoints: "/" (the page), "/snapshot" (the whole run as JSON), "/events" (Server-Sent Events,
+// replayed from Last-Event-ID or ?since=N), and RTF 2.x's "/status" and "/update".
+// Only GET is answered, and only when the Host header names the bound address or localhost.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include <robottestingframework/TestListener.h>
+
+namespace robottestingframework {
+
+class WebProgressListener : public TestListener {
+public:
+    // Listens on 127.0.0.1:port; port 0 picks a free one (see port()). `verbose` also shows
+    // what the tests print. When it cannot listen, it says so on stderr (and isListening()).
+    WebProgressListener(unsigned int port = 8080, bool verbose = false);
+    // Listens on `host` ("127.0.0.1", "::1", "0.0.0.0", ...) instead; a failure to listen is
+    // only told by isListening() and error(), for the caller to report.
+    WebProgressListener(const std::string& host, unsigned int port, bool verbose = false);
+    ~WebProgressListener() override;
+
+    WebProgressListener(const WebProgressListener&) = delete;
+    WebProgressListener& operator=(const WebProgressListener&) = delete;
+
+    // False when the server could not start (the port is in use, ...); error() says why.
+    bool isListening() const;
+    std::string error() const;
+    // The port served (the one picked when 0 was asked), 0 when not listening.
+    unsigned int port() const;
+    // "http://127.0.0.1:8080/".
+    std::string url() const;
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTestSuite(const Test* suite) override;
+    void endTestSuite(const Test* suite) override;
+    void startTestRunner() override;
+    void endTestRunner() override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+
+private:
+    struct State;
+    std::unique_ptr<State> state_;
+};
+
+}  // namespace robottestingframework

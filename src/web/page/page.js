@@ -1,0 +1,209 @@
+// The live page: a snapshot of the run, then its changes as Server-Sent Events. Everything a
+// test says is put in the page as text (textContent), never as HTML.
+"use strict";
+
+const run = { state: "waiting", tests: 0, passed: 0, failed: 0, skipped: 0, duration: 0 };
+const suites = [];
+let lastSeq = 0;
+let source = null;
+let drawPending = false;
+
+function element(tag, className, text) {
+  const node = document.createElement(tag);
+  if (className) node.className = className;
+  if (text !== undefined) node.textContent = text;
+  return node;
+}
+
+function stateClass(state) {
+  return "state state-" + String(state).replace(/ /g, "-");
+}
+
+function seconds(value) {
+  return (Number(value) || 0).toFixed(3) + " s";
+}
+
+function messagesList(messages, hidden) {
+  const list = element("ul", "messages");
+  for (const message of messages || []) {
+    const item = element("li");
+    item.appendChild(element("span", "kind", message.kind + ":"));
+    item.appendChild(document.createTextNode(message.text));
+    if (message.where) item.appendChild(element("span", "where", "[" + message.where + "]"));
+    list.appendChild(item);
+  }
+  if (hidden > 0) {
+    list.appendChild(element("li", "hidden", "… " + hidden + " more reports (the result files have them)"));
+  }
+  return list;
+}
+
+function testRow(test) {
+  const row = element("tr", "test");
+  row.dataset.state = test.state;
+  row.appendChild(element("td", stateClass(test.state), test.state));
+  const name = element("td", "name");
+  name.appendChild(element("span", "test-name", test.name));
+  if ((test.messages && test.messages.length) || test.hiddenReports > 0) {
+    name.appendChild(messagesList(test.messages, test.hiddenReports));
+  }
+  if (test.output) name.appendChild(element("pre", "output", test.output));
+  row.appendChild(name);
+  const running = test.state === "running" || test.state === "not run";
+  row.appendChild(element("td", "duration", running ? "" : seconds(test.duration)));
+  return row;
+}
+
+function suiteSection(suite) {
+  const section = element("section", "suite");
+  section.dataset.state = suite.state;
+  const title = element("h2");
+  title.appendChild(element("span", stateClass(suite.state), suite.state));
+  title.appendChild(document.createTextNode(" "));
+  title.appendChild(element("span", "suite-name", suite.name));
+  if (suite.state !== "running") title.appendChild(element("span", "where", seconds(suite.duration)));
+  section.appendChild(title);
+  if ((suite.messages && suite.messages.length) || suite.hiddenReports > 0) {
+    section.appendChild(messagesList(suite.messages, suite.hiddenReports));
+  }
+  const table = element("table");
+  for (const test of suite.tests || []) table.appendChild(testRow(test));
+  section.appendChild(table);
+  return section;
+}
+
+function drawSummary() {
+  const summary = document.getElementById("summary");
+  const counts = run.passed + " passed, " + run.failed + " failed, " + run.skipped +
+      " skipped of " + run.tests;
+  if (run.state === "finished") {
+    summary.textContent = "Finished: " + counts + " in " + seconds(run.duration);
+    summary.className = "summary finished " + (run.failed > 0 ? "state-failed" : "state-passed");
+  } else if (run.state === "running") {
+    summary.textContent = "Running: " + counts;
+    summary.className = "summary running state-running";
+  } else {
+    summary.textContent = "Waiting for the run…";
+    summary.className = "summary waiting";
+  }
+  const total = Math.max(run.tests, 1);
+  document.getElementById("bar-passed").style.width = (100 * run.passed / total) + "%";
+  document.getElementById("bar-failed").style.width = (100 * run.failed / total) + "%";
+  document.getElementById("bar-skipped").style.width = (100 * run.skipped / total) + "%";
+}
+
+// What changed since the last drawing: only that is drawn again, so a long run stays cheap.
+const dirty = { all: true, suites: new Set(), tests: [] };
+const sections = [];
+
+function placeSection(main, index) {
+  const node = suiteSection(suites[index]);
+  if (sections[index]) {
+    sections[index].replaceWith(node);
+  } else {
+    main.appendChild(node);
+  }
+  sections[index] = node;
+}
+
+function placeRow(suiteIndex, index) {
+  const section = sections[suiteIndex];
+  const test = suites[suiteIndex] && suites[suiteIndex].tests[index];
+  if (!section || !test) return;
+  const table = section.querySelector("table");
+  const row = testRow(test);
+  if (table.rows[index]) {
+    table.rows[index].replaceWith(row);
+  } else {
+    table.appendChild(row);
+  }
+}
+
+function draw() {
+  drawPending = false;
+  drawSummary();
+  const main = document.getElementById("suites");
+  if (dirty.all) {
+    sections.length = 0;
+    main.replaceChildren();
+    suites.forEach((suite, index) => { if (suite) placeSection(main, index); });
+  } else {
+    for (const index of [...dirty.suites].sort((a, b) => a - b)) placeSection(main, index);
+    for (const [suiteIndex, index] of dirty.tests) {
+      if (!dirty.suites.has(suiteIndex)) placeRow(suiteIndex, index);
+    }
+  }
+  dirty.all = false;
+  dirty.suites.clear();
+  dirty.tests.length = 0;
+}
+
+function scheduleDraw() {
+  if (!drawPending) {
+    drawPending = true;
+    window.requestAnimationFrame(draw);
+  }
+}
+
+function apply(change) {
+  if (change.type === "run") {
+    Object.assign(run, change.run);
+  } else if (change.type === "suite") {
+    suites[change.index] = change.suite;
+    dirty.suites.add(change.index);
+  } else if (change.type === "test") {
+    const suite = suites[change.suite];
+    if (suite) {
+      suite.tests[change.index] = change.test;
+      dirty.tests.push([change.suite, change.index]);
+    }
+  }
+  if (typeof change.seq === "number") lastSeq = Math.max(lastSeq, change.seq);
+}
+
+function setConnection(text) {
+  document.getElementById("connection").textContent = text;
+}
+
+function listen() {
+  source = new EventSource("/events?since=" + lastSeq);
+  source.onopen = () => setConnection("live");
+  source.onmessage = (event) => {
+    apply(JSON.parse(event.data));
+    scheduleDraw();
+    if (run.state === "finished") {
+      source.close();  // the final result stays on the page
+      setConnection("the run has ended");
+    }
+  };
+  source.onerror = () => {
+    if (run.state === "finished") {
+      source.close();
+      setConnection("the run has ended");
+    } else {
+      setConnection("connection lost; retrying…");
+    }
+  };
+}
+
+async function start() {
+  try {
+    const response = await fetch("/snapshot", { cache: "no-store" });
+    const snapshot = await response.json();
+    Object.assign(run, snapshot.run);
+    suites.length = 0;
+    suites.push(...snapshot.suites);
+    lastSeq = snapshot.seq;
+    dirty.all = true;
+  } catch (error) {
+    setConnection("cannot read the run: " + error);
+  }
+  draw();
+  if (run.state === "finished") {
+    setConnection("the run has ended");
+  } else {
+    listen();
+  }
+}
+
+start();

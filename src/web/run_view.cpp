@@ -1,0 +1,403 @@
+#include "run_view.h"
+
+#include <nlohmann/json.hpp>
+
+namespace robottestingframework {
+namespace web {
+
+namespace {
+
+using Json = nlohmann::json;
+
+// What a test printed and its reports are capped: the page is for reading, not for archiving
+// (the result files keep everything), and each change re-sends the test's messages.
+const std::size_t maxOutput = 64 * 1024;
+const std::size_t maxMessages = 200;
+
+// Failures, errors, ... are always kept; reports beyond the cap are only counted.
+bool keep(const RunView::Message& message, std::vector<RunView::Message>& messages,
+          std::size_t& hidden) {
+    if (message.kind == "report" && messages.size() >= maxMessages) {
+        ++hidden;
+        return false;
+    }
+    messages.push_back(message);
+    return true;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Test output may hold anything; invalid UTF-8 becomes U+FFFD instead of an exception.
+std::string dump(const Json& json) {
+    return json.dump(-1, ' ', false, Json::error_handler_t::replace);
+}
+
+std::string escapeHtml(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += "&quot;";
+                break;
+            case '\'':
+                out += "&#39;";
+                break;
+            default:
+                out += c;
+        }
+    }
+    return out;
+}
+
+// RTF 2.x's /status codes.
+int statusCode(const std::string& state) {
+    if (state == "running") {
+        return 1;
+    }
+    if (state == "passed") {
+        return 3;
+    }
+    if (state == "not run" || state == "skipped") {
+        return 0;
+    }
+    return 2;
+}
+
+}  // namespace
+
+RunView::RunView(bool verbose) : verbose_(verbose) {}
+
+RunView::SuiteView& RunView::openSuite() {
+    if (openSuite_ == none) {
+        // Tests run outside any suite get one of their own.
+        SuiteView loose;
+        loose.name = "(no suite)";
+        loose.started = std::chrono::steady_clock::now();
+        suites_.push_back(std::move(loose));
+        openSuite_ = suites_.size() - 1;
+        publishSuite(openSuite_);
+    }
+    return suites_[openSuite_];
+}
+
+void RunView::startRun() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    runState_ = "running";
+    runStarted_ = std::chrono::steady_clock::now();
+    log("run started");
+    publishRun();
+}
+
+void RunView::endRun() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    runState_ = "finished";
+    runDuration_ = secondsSince(runStarted_);
+    if (openSuite_ != none && openSuites_.empty()) {
+        SuiteView& loose = suites_[openSuite_];
+        loose.state = loose.failed ? "failed" : "passed";
+        loose.duration = secondsSince(loose.started);
+        publishSuite(openSuite_);
+        openSuite_ = none;
+    }
+    log("run finished: " + std::to_string(counts_[0]) + " passed, " + std::to_string(counts_[1]) +
+        " failed, " + std::to_string(counts_[2]) + " skipped");
+    publishRun();
+}
+
+void RunView::startSuite(const std::string& name, const std::vector<std::string>& tests) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (runState_ == "waiting") {
+        // A suite run on its own, without a runner.
+        runState_ = "running";
+        runStarted_ = std::chrono::steady_clock::now();
+    }
+    SuiteView suite;
+    suite.name = name;
+    suite.started = std::chrono::steady_clock::now();
+    for (const auto& test : tests) {
+        TestView view;
+        view.name = test;
+        suite.tests.push_back(std::move(view));
+    }
+    suites_.push_back(std::move(suite));
+    openSuites_.push_back(suites_.size() - 1);
+    openSuite_ = suites_.size() - 1;
+    log("suite " + name + " started");
+    publishSuite(openSuite_);
+    publishRun();
+}
+
+void RunView::endSuite() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (openSuites_.empty()) {
+        return;
+    }
+    std::size_t index = openSuites_.back();
+    openSuites_.pop_back();
+    SuiteView& suite = suites_[index];
+    suite.state = suite.failed ? "failed" : "passed";
+    suite.duration = secondsSince(suite.started);
+    openSuite_ = openSuites_.empty() ? none : openSuites_.back();
+    if (openSuite_ != none && suite.failed) {
+        suites_[openSuite_].failed = true;
+    }
+    log("suite " + suite.name + " " + suite.state);
+    publishSuite(index);
+    publishRun();
+}
+
+void RunView::startTest(const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    SuiteView& suite = openSuite();
+    openTest_ = none;
+    for (std::size_t i = 0; i < suite.tests.size(); ++i) {
+        if (suite.tests[i].name == name && suite.tests[i].state == "not run") {
+            openTest_ = i;
+            break;
+        }
+    }
+    if (openTest_ == none) {
+        // Not planned (a repetition, or a suite that did not list it).
+        TestView view;
+        view.name = name;
+        suite.tests.push_back(std::move(view));
+        openTest_ = suite.tests.size() - 1;
+    }
+    TestView& test = suite.tests[openTest_];
+    test.state = "running";
+    test.started = std::chrono::steady_clock::now();
+    log("test " + name + " started");
+    publishTest(openSuite_, openTest_);
+}
+
+void RunView::endTest() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (openSuite_ == none || openTest_ == none) {
+        return;
+    }
+    TestView& test = suites_[openSuite_].tests[openTest_];
+    test.state = toString(test.worst);
+    test.duration = secondsSince(test.started);
+    if (test.worst == TestStatus::Passed) {
+        ++counts_[0];
+    } else if (test.worst == TestStatus::Skipped) {
+        ++counts_[2];
+    } else {
+        ++counts_[1];
+        suites_[openSuite_].failed = true;
+    }
+    log("test " + test.name + " " + test.state);
+    publishTest(openSuite_, openTest_);
+    openTest_ = none;
+    publishRun();
+}
+
+void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& msg,
+                         TestStatus status) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Message message;
+    message.kind = kind;
+    message.text = msg.getMessage();
+    if (!msg.getDetail().empty()) {
+        message.text += message.text.empty() ? msg.getDetail() : ": " + msg.getDetail();
+    }
+    if (!msg.getSourceFileName().empty()) {
+        message.where = msg.getSourceFileName();
+        if (msg.getSourceLineNumber() > 0) {
+            message.where += ":" + std::to_string(msg.getSourceLineNumber());
+        }
+    }
+    log("[" + message.kind + "] " + message.text);
+    if (aboutSuite || openTest_ == none) {
+        SuiteView& suite = openSuite();
+        if (isFailure(status)) {
+            suite.failed = true;
+        }
+        if (keep(message, suite.messages, suite.hiddenReports)) {
+            publishSuite(openSuite_);
+        }
+        return;
+    }
+    TestView& test = suites_[openSuite_].tests[openTest_];
+    if (status > test.worst) {
+        test.worst = status;
+    }
+    if (keep(message, test.messages, test.hiddenReports)) {
+        publishTest(openSuite_, openTest_);
+    }
+}
+
+void RunView::addOutput(const std::string& text) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!verbose_ || openSuite_ == none || openTest_ == none) {
+        return;
+    }
+    TestView& test = suites_[openSuite_].tests[openTest_];
+    if (test.output.size() >= maxOutput) {
+        return;
+    }
+    test.output += text.substr(0, maxOutput - test.output.size());
+    if (test.output.size() >= maxOutput) {
+        test.output += "\n[output cut at 64 KiB]\n";
+    }
+    publishTest(openSuite_, openTest_);
+}
+
+void RunView::close() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    closed_ = true;
+    changed_.notify_all();
+}
+
+std::string RunView::runJson() const {
+    std::size_t planned = 0;
+    for (const auto& suite : suites_) {
+        planned += suite.tests.size();
+    }
+    Json run = {{"state", runState_},
+                {"tests", planned},
+                {"passed", counts_[0]},
+                {"failed", counts_[1]},
+                {"skipped", counts_[2]},
+                {"duration", runState_ == "finished"  ? runDuration_
+                             : runState_ == "running" ? secondsSince(runStarted_)
+                                                      : 0.0}};
+    return dump(run);
+}
+
+namespace {
+
+Json toJson(const std::vector<RunView::Message>& messages) {
+    Json list = Json::array();
+    for (const auto& message : messages) {
+        list.push_back({{"kind", message.kind}, {"text", message.text}, {"where", message.where}});
+    }
+    return list;
+}
+
+}  // namespace
+
+void RunView::publishRun() {
+    publish("{\"type\":\"run\",\"run\":" + runJson() + "}");
+}
+
+void RunView::publishSuite(std::size_t index) {
+    const SuiteView& suite = suites_[index];
+    Json json = {{"type", "suite"},
+                 {"index", index},
+                 {"suite",
+                  {{"name", suite.name},
+                   {"state", suite.state},
+                   {"duration", suite.duration},
+                   {"messages", toJson(suite.messages)},
+                   {"hiddenReports", suite.hiddenReports},
+                   {"tests", Json::array()}}}};
+    for (const auto& test : suite.tests) {
+        json["suite"]["tests"].push_back({{"name", test.name},
+                                          {"state", test.state},
+                                          {"duration", test.duration},
+                                          {"messages", toJson(test.messages)},
+                                          {"hiddenReports", test.hiddenReports},
+                                          {"output", test.output}});
+    }
+    publish(dump(json));
+}
+
+void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
+    const TestView& test = suites_[suiteIndex].tests[index];
+    Json json = {{"type", "test"},
+                 {"suite", suiteIndex},
+                 {"index", index},
+                 {"test",
+                  {{"name", test.name},
+                   {"state", test.state},
+                   {"duration", test.duration},
+                   {"messages", toJson(test.messages)},
+                   {"hiddenReports", test.hiddenReports},
+                   {"output", test.output}}}};
+    publish(dump(json));
+}
+
+void RunView::publish(std::string json) {
+    changes_.push_back(std::move(json));
+    changed_.notify_all();
+}
+
+void RunView::log(const std::string& line) {
+    log_ += line;
+    log_ += '\n';
+}
+
+std::string RunView::snapshotJson() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Json suites = Json::array();
+    for (const auto& suite : suites_) {
+        Json tests = Json::array();
+        for (const auto& test : suite.tests) {
+            tests.push_back({{"name", test.name},
+                             {"state", test.state},
+                             {"duration", test.duration},
+                             {"messages", toJson(test.messages)},
+                             {"hiddenReports", test.hiddenReports},
+                             {"output", test.output}});
+        }
+        suites.push_back({{"name", suite.name},
+                          {"state", suite.state},
+                          {"duration", suite.duration},
+                          {"messages", toJson(suite.messages)},
+                          {"hiddenReports", suite.hiddenReports},
+                          {"tests", std::move(tests)}});
+    }
+    Json snapshot = {
+        {"seq", changes_.size()}, {"run", Json::parse(runJson())}, {"suites", std::move(suites)}};
+    return dump(snapshot);
+}
+
+std::string RunView::statusJson() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    Json status = {{"name", ""}, {"testStatus", Json::array()}};
+    std::size_t shown = openSuite_ != none ? openSuite_ : suites_.size() - 1;
+    if (shown < suites_.size()) {
+        status["name"] = suites_[shown].name;
+        for (const auto& test : suites_[shown].tests) {
+            status["testStatus"].push_back(statusCode(test.state));
+        }
+    }
+    return dump(status);
+}
+
+std::string RunView::logText() const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return escapeHtml(log_);
+}
+
+std::uint64_t RunView::waitForChanges(std::uint64_t since, std::chrono::milliseconds timeout,
+                                      std::string& out, bool& closed) const {
+    std::unique_lock<std::mutex> lock(mutex_);
+    if (since > changes_.size()) {
+        since = 0;  // a number from another run (the page outlived its runner): all again
+    }
+    changed_.wait_for(lock, timeout, [&] { return closed_ || changes_.size() > since; });
+    closed = closed_;
+    std::uint64_t last = since;
+    for (; last < changes_.size(); ++last) {
+        out += "id: " + std::to_string(last + 1) + "\ndata: {\"seq\":" + std::to_string(last + 1) +
+               "," + changes_[last].substr(1) + "\n\n";
+    }
+    return last;
+}
+
+}  // namespace web
+}  // namespace robottestingframework

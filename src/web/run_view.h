@@ -1,0 +1,105 @@
+// The run as the web page shows it: suites, their tests (planned ones too), states, durations
+// and messages, plus the numbered list of changes the page follows. Thread-safe: the run's
+// thread writes, the server's threads read.
+//
+// Tests are found by position in their suite (the first planned one of that name not run yet),
+// so the model can switch to event ids without changing the page.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestStatus.h>
+
+namespace robottestingframework {
+namespace web {
+
+class RunView {
+public:
+    explicit RunView(bool verbose);
+
+    // What the listener feeds in.
+    void startRun();
+    void endRun();
+    void startSuite(const std::string& name, const std::vector<std::string>& tests);
+    void endSuite();
+    void startTest(const std::string& name);
+    void endTest();
+    // A message about the open test (`aboutSuite` false) or the open suite. `status` is the
+    // state it gives (Passed for none).
+    void addMessage(bool aboutSuite, const char* kind, const TestMessage& msg, TestStatus status);
+    void addOutput(const std::string& text);
+    // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
+    void close();
+
+    // What the server reads.
+    std::string snapshotJson() const;  // {"seq":N,"run":{...},"suites":[...]}
+    std::string statusJson() const;    // RTF 2.x: {"name":"<suite>","testStatus":[0..3,...]}
+    std::string logText() const;       // RTF 2.x: the log, HTML-escaped
+    // Appends the changes after `since` to `out` as Server-Sent Events, waiting up to
+    // `timeout` for one. Returns the number of the last change written (`since` when none);
+    // `closed` tells the stream to end.
+    std::uint64_t waitForChanges(std::uint64_t since, std::chrono::milliseconds timeout,
+                                 std::string& out, bool& closed) const;
+
+    struct Message {
+        std::string kind;  // "failure", "error", "report", ...
+        std::string text;
+        std::string where;  // "file:line" when known
+    };
+
+private:
+    struct TestView {
+        std::string name;
+        std::string state = "not run";  // "not run", "running", or toString(TestStatus)
+        TestStatus worst = TestStatus::Passed;
+        std::chrono::steady_clock::time_point started;
+        double duration = 0;
+        std::vector<Message> messages;
+        std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
+        std::string output;
+    };
+    struct SuiteView {
+        std::string name;
+        std::string state = "running";  // "running", "passed", "failed"
+        bool failed = false;
+        std::chrono::steady_clock::time_point started;
+        double duration = 0;
+        std::vector<Message> messages;
+        std::size_t hiddenReports = 0;
+        std::vector<TestView> tests;
+    };
+    static constexpr std::size_t none = static_cast<std::size_t>(-1);
+
+    // All below with mutex_ held.
+    SuiteView& openSuite();
+    void publishRun();
+    void publishSuite(std::size_t suite);
+    void publishTest(std::size_t suite, std::size_t test);
+    void publish(std::string json);
+    void log(const std::string& line);
+    std::string runJson() const;
+
+    const bool verbose_;
+    mutable std::mutex mutex_;
+    mutable std::condition_variable changed_;
+    bool closed_ = false;
+    std::string runState_ = "waiting";  // "waiting", "running", "finished"
+    std::chrono::steady_clock::time_point runStarted_;
+    double runDuration_ = 0;
+    std::size_t counts_[3] = {};  // passed, failed, skipped
+    std::vector<SuiteView> suites_;
+    std::vector<std::size_t> openSuites_;  // innermost last
+    std::size_t openSuite_ = none;         // where tests go: the innermost open suite
+    std::size_t openTest_ = none;
+    std::vector<std::string> changes_;  // change N is changes_[N - 1], as JSON
+    std::string log_;
+};
+
+}  // namespace web
+}  // namespace robottestingframework

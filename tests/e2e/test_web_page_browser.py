@@ -1,0 +1,118 @@
+"""The live web page in a real browser (Debian's headless Chromium through Selenium): a test
+moves from running to passed without a reload, the final summary shows, and test names and
+messages that look like HTML stay text."""
+import os
+import shutil
+import signal
+from xml.sax.saxutils import escape
+
+import pytest
+from selenium import webdriver
+from selenium.common.exceptions import NoAlertPresentException
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
+
+from conftest import BUILD_DIR
+from web_run import WebRun, quick_test, waiting_test
+
+ARTIFACTS = BUILD_DIR / "tests" / "e2e" / "artifacts"
+CHROMEDRIVER = shutil.which("chromedriver") or "/usr/bin/chromedriver"
+PROBE_NAME = "<img src=x onerror=alert(1)>"
+PROBE_SUITE = "arm </script><img src=x onerror=alert(3)>"
+
+
+@pytest.fixture
+def browser(tmp_path):
+    options = webdriver.ChromeOptions()
+    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                     "--window-size=1100,760", f"--user-data-dir={tmp_path / 'chromium'}",
+                     "--no-first-run", "--disable-extensions", "--disable-crash-reporter",
+                     "--disable-breakpad"):
+        options.add_argument(argument)
+    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
+    # Chromium's profile, caches and crash reports stay in the test's folder, not in ~.
+    home = tmp_path / "home"
+    home.mkdir()
+    env = dict(os.environ, HOME=str(home), XDG_CONFIG_HOME=str(home / ".config"),
+               XDG_CACHE_HOME=str(home / ".cache"))
+    service = Service(executable_path=CHROMEDRIVER, log_path=os.devnull, env=env)
+    driver = webdriver.Chrome(service=service, options=options)
+    driver.set_page_load_timeout(30)
+    yield driver
+    driver.quit()
+
+
+def row_state(driver, name_part):
+    return driver.execute_script(
+        "for (const row of document.querySelectorAll('tr.test')) {"
+        "  if (row.querySelector('.test-name').textContent.includes(arguments[0]))"
+        "    return row.dataset.state; }"
+        "return null;", name_part)
+
+
+def test_page_follows_the_run_and_shows_hostile_names_as_text(tmp_path, suite_file, browser):
+    go = tmp_path / "go"
+    waiting = waiting_test(tmp_path, "move arm", go, body="echo 'arm moved'\n")
+    probe = quick_test(tmp_path, PROBE_NAME,
+                       "echo '</script><script>alert(2)</script><b>bold</b>' >&2\nexit 1\n")
+    skipped = quick_test(tmp_path, "needs robot", "echo 'no robot attached' >&2\nexit 77\n")
+    suite = suite_file(f"""<suite name="{escape(PROBE_SUITE)}">
+  <test type="exec">{escape(str(waiting))}</test>
+  <test type="exec">{escape(str(probe))}</test>
+  <test type="exec">{escape(str(skipped))}</test>
+</suite>""")
+    run = WebRun("-s", suite, "--web-linger", "120", cwd=tmp_path)
+    try:
+        browser.get(run.url)
+        wait = WebDriverWait(browser, 30, poll_frequency=0.05)
+        wait.until(lambda d: row_state(d, "move arm") == "running")
+        assert row_state(browser, PROBE_NAME) == "not run"
+        browser.execute_script("window.rtfSamePage = true;")  # gone if the page reloads
+
+        go.touch()
+        wait.until(lambda d: row_state(d, "move arm") == "passed")
+        wait.until(lambda d: d.find_element(By.ID, "summary").text.startswith("Finished"))
+        assert browser.execute_script("return window.rtfSamePage === true;"), "page reloaded"
+        summary = browser.find_element(By.ID, "summary").text
+        assert "1 passed, 1 failed, 1 skipped of 3" in summary, summary
+        assert row_state(browser, PROBE_NAME) == "failed"
+        assert row_state(browser, "needs robot") == "skipped"
+
+        # The probes are text on the page, not elements.
+        body = browser.find_element(By.TAG_NAME, "body").text
+        assert PROBE_NAME in body and PROBE_SUITE in body, body
+        assert "</script><script>alert(2)</script><b>bold</b>" in body, body
+        assert browser.execute_script("return document.images.length;") == 0
+        assert browser.execute_script("return document.scripts.length;") == 1
+        assert browser.execute_script("return document.querySelectorAll('b').length;") == 0
+        with pytest.raises(NoAlertPresentException):
+            browser.switch_to.alert.text
+
+        ARTIFACTS.mkdir(parents=True, exist_ok=True)
+        assert browser.save_screenshot(str(ARTIFACTS / "web_page.png"))
+        assert (ARTIFACTS / "web_page.png").stat().st_size > 1000
+        run.wait_for_line("final page stays")
+    finally:
+        go.touch()
+        if run.proc.poll() is None:
+            run.proc.send_signal(signal.SIGINT)
+        status = run.wait(timeout=20)
+    assert status == 1, run.output()  # the probe test failed
+
+
+def test_page_opened_after_the_run_shows_the_final_result(tmp_path, browser):
+    test = quick_test(tmp_path, "quick one")
+    run = WebRun("-t", test, "--web-linger", "120", cwd=tmp_path)
+    try:
+        run.wait_for_line("final page stays")
+        browser.get(run.url)
+        wait = WebDriverWait(browser, 30, poll_frequency=0.05)
+        wait.until(lambda d: d.find_element(By.ID, "summary").text.startswith("Finished"))
+        assert row_state(browser, "quick one") == "passed"
+        assert "the run has ended" in browser.find_element(By.ID, "connection").text
+    finally:
+        if run.proc.poll() is None:
+            run.proc.send_signal(signal.SIGINT)
+        status = run.wait(timeout=20)
+    assert status == 0, run.output()
