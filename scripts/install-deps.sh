@@ -20,6 +20,12 @@ for package in "${packages[@]}"; do
         missing+=("$package")
     fi
 done
+# npm installs the report checkers into the build tree (scripts/node-tools.sh). Debian's nodejs
+# comes without it (the npm package); other nodejs builds (NodeSource) bring their own, which
+# Debian's npm package would conflict with.
+if ! command -v npm >/dev/null; then
+    missing+=(npm)
+fi
 
 if ((${#missing[@]} == 0)); then
     echo "install-deps: all ${#packages[@]} packages are installed"
