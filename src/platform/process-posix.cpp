@@ -288,6 +288,17 @@ bool setParentDeathSignal(int signal) {
 #endif
 }
 
+std::size_t threadCount() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.compare(0, 8, "Threads:") == 0) {
+            return static_cast<std::size_t>(std::strtoul(line.c_str() + 8, nullptr, 10));
+        }
+    }
+    return 0;
+}
+
 std::string executablePath() {
     char buffer[PATH_MAX];
     ssize_t n = ::readlink("/proc/self/exe", buffer, sizeof(buffer) - 1);

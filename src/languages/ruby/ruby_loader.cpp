@@ -359,10 +359,24 @@ std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& e
 }  // namespace languages
 }  // namespace robottestingframework
 
+namespace robottestingframework {
+namespace languages {
+
+// Not pre-started: the VM lives on a thread of its own (ruby_vm.h) and Ruby runs its timer
+// thread, and a fork keeps only the calling thread. Its workers start it, as before.
+bool refuseRubyPrestart(std::string& error) {
+    error = "Ruby's VM runs on a thread of its own, and a fork keeps only the calling thread";
+    return false;
+}
+
+}  // namespace languages
+}  // namespace robottestingframework
+
 // The module's entry point: what test_loader.cpp finds with dlsym.
 const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
-        robottestingframework::languages::loadRubyTest, nullptr};
+        robottestingframework::languages::loadRubyTest, nullptr,
+        robottestingframework::languages::refuseRubyPrestart, nullptr};
     return &module;
 }
