@@ -317,6 +317,14 @@ void ensureInterpreter() {
 bool prestartInterpreter(std::string& error) {
     try {
         ensureInterpreter();
+        // What the interpreter made so far is shared by every fork: the collector leaves it
+        // alone, so a test's first collection does not copy every page of it.
+        py::gil_scoped_acquire gil;
+        // A rehearsal on an empty script: what loading one does the first time (lazy imports,
+        // caches) is done once here instead of in every test.
+        std::string ignored;
+        ScriptModule::load("/dev/null", ignored);
+        py::module_::import("gc").attr("freeze")();
         return true;
     } catch (const std::exception& e) {
         error = e.what();
