@@ -7,6 +7,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -30,6 +31,26 @@ namespace isolation {
 namespace {
 
 using platform::FileDescriptor;
+
+// The descriptors a pre-started runtime opened (Ruby's internal pipes): its workers keep them.
+std::vector<int> g_runtimeDescriptors;
+
+// Closes every descriptor from `first` on, except the runtime's and `except`.
+void closeFrom(int first, int except = -1) {
+    std::vector<int> keep = g_runtimeDescriptors;
+    if (except >= 0) {
+        keep.push_back(except);
+    }
+    std::sort(keep.begin(), keep.end());
+    int next = first;
+    for (int fd : keep) {
+        for (; next < fd; ++next) {
+            ::close(next);
+        }
+        next = std::max(next, fd + 1);
+    }
+    platform::closeDescriptorsFrom(next);
+}
 
 // In a freshly forked child: the state every worker starts from. Returns in the child.
 void prepareChild(pid_t server) {
@@ -55,7 +76,11 @@ void prepareChild(pid_t server) {
     ::dup2(out, 1);
     ::dup2(out, 2);
     ::dup3(high, 3, O_CLOEXEC);  // a program the test runs must not write on our channel
-    platform::closeDescriptorsFrom(4);
+    if (g_runtimeDescriptors.empty()) {
+        platform::closeDescriptorsFrom(4);
+    } else {
+        closeFrom(4);
+    }
     // Line-buffered, so what a test printed just before it crashed still reaches the report.
     ::setvbuf(stdout, nullptr, _IOLBF, 0);
 
@@ -70,13 +95,18 @@ void prepareChild(pid_t server) {
 // on `link` for its request and the two descriptors, then becomes that worker.
 [[noreturn]] void waitAsSpare(int link, pid_t server) {
     prepareChild(server);
-    ::dup2(link, 4);
-    platform::closeDescriptorsFrom(5);
+    if (g_runtimeDescriptors.empty()) {
+        ::dup2(link, 4);
+        platform::closeDescriptorsFrom(5);
+        link = 4;
+    } else {
+        closeFrom(4, link);
+    }
     ::close(3);
     std::string packet;
     std::vector<FileDescriptor> fds;
     WorkRequest request;
-    if (!platform::receiveWithFds(4, packet, fds) || fds.size() != 2 ||
+    if (!platform::receiveWithFds(link, packet, fds) || fds.size() != 2 ||
         !decodeRequest(packet, request)) {
         ::_exit(0);  // the server is gone or shutting down
     }
@@ -170,18 +200,42 @@ int serve(int control, const std::string& language, bool verbose);
     } catch (const std::exception& e) {
         error = e.what();
     }
-    // A fork keeps only the calling thread: a thread started with the runtime (or by what it
-    // imported) would be missing in every test, holding whatever lock it held.
-    std::size_t threads = platform::threadCount();
-    if (ready && threads != 1) {
-        ready = false;
-        error = std::to_string(threads) + " threads run once it started, and a fork keeps one";
-    }
-    std::string answer = ready ? "ready" : "refused: " + error;
-    if (!platform::sendWithFds(3, answer, {}) || !ready) {
+    if (!ready) {
+        platform::sendWithFds(3, "refused: " + error, {});
         ::_exit(0);
     }
-    ::_exit(serve(3, language, false));
+    for (int fd : platform::openDescriptors()) {
+        if (fd > 3) {
+            g_runtimeDescriptors.push_back(fd);
+        }
+    }
+    struct Context {
+        std::string language;
+        std::size_t threads;
+        bool hosted;
+    } context{language, platform::threadCount(), false};
+    int code = languages::hostLanguage(
+        language,
+        [](void* opaque) {
+            auto* context = static_cast<Context*>(opaque);
+            // A fork keeps only the calling thread: a thread started with the runtime (or by
+            // what it imported) would be missing in every test, holding whatever lock it held.
+            // A runtime with a thread of its own forks from that thread, and the thread that
+            // waits for it is not needed in a test.
+            if (context->threads != (context->hosted ? 2u : 1u)) {
+                platform::sendWithFds(3,
+                                      "refused: " + std::to_string(context->threads) +
+                                          " threads run once it started, and a fork keeps one",
+                                      {});
+                return 0;
+            }
+            if (!platform::sendWithFds(3, "ready", {})) {
+                return 0;
+            }
+            return serve(3, context->language, false);
+        },
+        &context, context.hosted);
+    ::_exit(code);
 }
 
 // Starts the language server of `language` and waits (bounded) until it is ready.

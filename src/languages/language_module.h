@@ -23,6 +23,9 @@ using FixtureLoaderFunction = std::unique_ptr<LoadedFixture> (*)(const std::stri
 using PrestartFunction = bool (*)(std::string& error);
 // fork() as the runtime needs it done once prestart() succeeded (its own before/after hooks).
 using ForkFunction = pid_t (*)();
+// Runs `serve(context)` on the thread that may call the runtime and fork it, and returns what
+// it returned (a runtime that must be called from one thread of its own).
+using HostFunction = int (*)(int (*serve)(void*), void* context);
 
 // Changes whenever LanguageModule or Loaded<> changes: a module built for another layout is
 // refused instead of crashing.
@@ -34,6 +37,7 @@ struct LanguageModule {
     FixtureLoaderFunction loadFixture;  // nullptr: the language has no fixture managers
     PrestartFunction prestart;          // nullptr: every worker starts the runtime itself
     ForkFunction fork;                  // nullptr: plain fork()
+    HostFunction host;                  // nullptr: any thread (the process's only one)
 };
 
 }  // namespace languages

@@ -134,6 +134,13 @@ pid_t forkLanguage(const std::string& type) {
     return module != nullptr && module->fork != nullptr ? module->fork() : ::fork();
 }
 
+int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted) {
+    std::string error;
+    const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;
+    hosted = module != nullptr && module->host != nullptr;
+    return hosted ? module->host(serve, context) : serve(context);
+}
+
 std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
                                            std::string& error) {
     if (type == "dll") {

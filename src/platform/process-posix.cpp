@@ -1,5 +1,6 @@
 #include "process.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -10,6 +11,7 @@
 #include <sys/prctl.h>
 #endif
 
+#include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
@@ -297,6 +299,25 @@ std::size_t threadCount() {
         }
     }
     return 0;
+}
+
+std::vector<int> openDescriptors() {
+    std::vector<int> found;
+    DIR* folder = ::opendir("/proc/self/fd");
+    if (folder == nullptr) {
+        return found;
+    }
+    int own = ::dirfd(folder);
+    while (dirent* entry = ::readdir(folder)) {
+        char* end = nullptr;
+        long fd = std::strtol(entry->d_name, &end, 10);
+        if (end != entry->d_name && *end == '\0' && fd != own) {
+            found.push_back(static_cast<int>(fd));
+        }
+    }
+    ::closedir(folder);
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 std::string executablePath() {

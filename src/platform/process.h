@@ -53,6 +53,8 @@ bool setParentDeathSignal(int signal);
 // How many threads this process has (/proc/self/task); 0 when unknown. A fork keeps only the
 // calling one.
 std::size_t threadCount();
+// The descriptors this process has open (/proc/self/fd), in increasing order.
+std::vector<int> openDescriptors();
 
 // The path of the running program (/proc/self/exe), empty when unknown.
 std::string executablePath();

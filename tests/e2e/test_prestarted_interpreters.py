@@ -182,15 +182,72 @@ end
 }
 
 
-def test_ruby_falls_back_to_an_interpreter_per_test_and_says_why_in_verbose(tmp_path):
+def test_ruby_tests_run_in_forks_of_a_prestarted_vm_and_share_nothing(tmp_path):
     r, junit = run_suite(tmp_path, RUBY_LEAKS)
     if "is not supported by this build" in r.output or "not available" in r.output:
         pytest.skip("this build leaves Ruby out")
     assert junit["a_test.rb"].get("status") == "passed", r
     assert junit["b_test.rb"].get("status") == "failed", r
     assert "the real testCheck still fails" in message(junit["b_test.rb"]), r
-    assert "no pre-started ruby interpreter (Ruby's VM runs on a thread of its own" in r.stderr, r
-    assert not PRESTARTED.search(r.stderr), r
+    assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["ruby"], r
+
+
+RUBY_HOSTILE = {
+    # Forked from the VM's thread: threads, their switching and Process.pid still work.
+    "threads_test.rb": ("""class TestCase
+  def run
+    RobotTestingFramework::testCheck(Thread.new { 6 * 7 }.value == 42, "a thread runs")
+    Thread.new { loop { } }
+    queue = Queue.new
+    Thread.new { queue << Process.pid }
+    RobotTestingFramework::testCheck(queue.pop == $$, "threads switch while one spins")
+    Thread.new { sleep }
+  end
+end
+""", "passed", ""),
+    "exit_test.rb": ("""class TestCase
+  def run
+    exit!(0)
+  end
+end
+""", "error", "would end the test runner's process"),
+    "segv_test.rb": ("""class TestCase
+  def run
+    Process.kill(:SEGV, Process.pid)
+    sleep 5
+  end
+end
+""", "crashed", "SIGSEGV"),
+    "hang_test.rb": ("""class TestCase
+  def run
+    sleep
+  end
+end
+""", "timed out", "timed out after 1 s"),
+    "syntax_test.rb": ("""class TestCase
+  def run(
+end
+""", "failed", "syntax_test.rb:"),
+    "after_test.rb": ("""class TestCase
+  def run
+    RobotTestingFramework::testCheck(true, "the next test still runs")
+  end
+end
+""", "passed", ""),
+}
+
+
+def test_ruby_threads_exit_crash_hang_and_bad_files_in_forks(tmp_path, marker):
+    tests = {name: text for name, (text, _, _) in RUBY_HOSTILE.items()}
+    r, junit = run_suite(tmp_path, tests, "--timeout", "1", env=marked(marker))
+    if "is not supported by this build" in r.output or "not available" in r.output:
+        pytest.skip("this build leaves Ruby out")
+    assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["ruby"], r
+    for name, (_, status, words) in RUBY_HOSTILE.items():
+        case = junit[name]
+        assert case.get("status") == status, (name, r)
+        assert words in message(case) + "".join(case.itertext()), (name, message(case), r)
+    assert leftover_processes(marker) == []
 
 
 HOSTILE = {

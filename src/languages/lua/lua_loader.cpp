@@ -308,7 +308,10 @@ bool prestartLua(std::string& error) {
 const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
-        robottestingframework::languages::loadLuaTest, nullptr,
-        robottestingframework::languages::prestartLua, nullptr};
+        robottestingframework::languages::loadLuaTest,
+        nullptr,
+        robottestingframework::languages::prestartLua,
+        nullptr,
+        nullptr};
     return &module;
 }

@@ -249,6 +249,7 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
         robottestingframework::languages::loadPythonTest,
         robottestingframework::languages::loadPythonFixture,
         robottestingframework::languages::python::prestartInterpreter,
-        robottestingframework::languages::python::forkInterpreter};
+        robottestingframework::languages::python::forkInterpreter,
+        nullptr};
     return &module;
 }

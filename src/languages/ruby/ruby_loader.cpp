@@ -362,11 +362,38 @@ std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& e
 namespace robottestingframework {
 namespace languages {
 
-// Not pre-started: the VM lives on a thread of its own (ruby_vm.h) and Ruby runs its timer
-// thread, and a fork keeps only the calling thread. Its workers start it, as before.
-bool refuseRubyPrestart(std::string& error) {
-    error = "Ruby's VM runs on a thread of its own, and a fork keeps only the calling thread";
-    return false;
+// The pre-started VM: its thread (ruby_vm.h) runs the fork server's loop and forks each
+// worker, so a worker's only thread is the one Ruby knows. The process's first thread only
+// waits for it, and is not in any worker.
+bool prestartRuby(std::string& error) {
+    try {
+        RubyVm::start();
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+pid_t forkRuby() {
+    pid_t pid = RubyVm::fork();
+    if (pid == 0) {
+        // A worker is the process exit! must not end (see the guard above).
+        RubyVm::run([] {
+            int state = 0;
+            rb_eval_string_protect(
+                "RobotTestingFramework.send(:remove_const, :PROCESS_ID)\n"
+                "RobotTestingFramework.const_set(:PROCESS_ID, Process.pid)\n",
+                &state);
+        });
+    }
+    return pid;
+}
+
+int hostRuby(int (*serve)(void*), void* context) {
+    int code = 0;
+    RubyVm::run([&] { code = serve(context); });
+    return code;
 }
 
 }  // namespace languages
@@ -376,7 +403,10 @@ bool refuseRubyPrestart(std::string& error) {
 const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
-        robottestingframework::languages::loadRubyTest, nullptr,
-        robottestingframework::languages::refuseRubyPrestart, nullptr};
+        robottestingframework::languages::loadRubyTest,
+        nullptr,
+        robottestingframework::languages::prestartRuby,
+        robottestingframework::languages::forkRuby,
+        robottestingframework::languages::hostRuby};
     return &module;
 }
