@@ -400,11 +400,13 @@ int serve(int control, const std::string& language, bool verbose) {
                 }
                 break;  // the runner is gone
             }
+            if (!language.empty()) {
+                // Taken (see LanguageServer::pending): said before the worker can run, so a
+                // test that kills this process is never run again by the fork server.
+                platform::sendWithFds(control, "taken", {});
+            }
             WorkRequest request;
             if (fds.size() != 3 || !decodeRequest(packet, request)) {
-                if (!language.empty()) {
-                    platform::sendWithFds(control, "taken", {});
-                }
                 continue;  // not a request we understand; its descriptors close here
             }
             if (prestart && isScriptLanguage(request.type)) {
@@ -426,9 +428,6 @@ int serve(int control, const std::string& language, bool verbose) {
                 }
             }
             handToSpare(packet, fds);
-            if (!language.empty()) {
-                platform::sendWithFds(control, "taken", {});  // see LanguageServer::pending
-            }
         }
     }
     spare.link.reset();
