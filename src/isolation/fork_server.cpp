@@ -32,7 +32,7 @@ ForkServer::~ForkServer() {
     stop();
 }
 
-bool ForkServer::start(const std::string& workerPath, std::string& error) {
+bool ForkServer::start(const std::string& workerPath, std::string& error, bool verbose) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ > 0) {
         return true;
@@ -44,6 +44,9 @@ bool ForkServer::start(const std::string& workerPath, std::string& error) {
     }
     platform::SpawnOptions options;
     options.argv = {workerPath, "--fork-server", "3"};
+    if (verbose) {
+        options.argv.push_back("--verbose");
+    }
     options.fds = {{3, theirs.get()}};
     options.newProcessGroup = true;  // Ctrl-C on the terminal is the runner's to handle
     options.parentDeathSignal = SIGTERM;

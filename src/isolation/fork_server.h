@@ -22,8 +22,9 @@ public:
     ForkServer& operator=(const ForkServer&) = delete;
 
     // Starts `workerPath --fork-server 3`. Call it from a thread that lives as long as the run:
-    // the server takes its parent-death signal from that thread (Linux).
-    bool start(const std::string& workerPath, std::string& error);
+    // the server takes its parent-death signal from that thread (Linux). With `verbose`, the
+    // server says on stderr which script languages it pre-started (fork_server_loop.h).
+    bool start(const std::string& workerPath, std::string& error, bool verbose = false);
     bool running() const { return pid_ > 0; }
     pid_t pid() const { return pid_; }
 

@@ -7,6 +7,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
 #include <map>
 #include <thread>
 
@@ -16,6 +21,7 @@
 #include "process.h"
 #include "process_tree.h"
 #include "signal_pipe.h"
+#include "test_loader.h"
 #include "wire_format.h"
 #include "worker.h"
 
@@ -25,6 +31,26 @@ namespace isolation {
 namespace {
 
 using platform::FileDescriptor;
+
+// The descriptors a pre-started runtime opened (Ruby's internal pipes): its workers keep them.
+std::vector<int> g_runtimeDescriptors;
+
+// Closes every descriptor from `first` on, except the runtime's and `except`.
+void closeFrom(int first, int except = -1) {
+    std::vector<int> keep = g_runtimeDescriptors;
+    if (except >= 0) {
+        keep.push_back(except);
+    }
+    std::sort(keep.begin(), keep.end());
+    int next = first;
+    for (int fd : keep) {
+        for (; next < fd; ++next) {
+            ::close(next);
+        }
+        next = std::max(next, fd + 1);
+    }
+    platform::closeDescriptorsFrom(next);
+}
 
 // In a freshly forked child: the state every worker starts from. Returns in the child.
 void prepareChild(pid_t server) {
@@ -50,7 +76,11 @@ void prepareChild(pid_t server) {
     ::dup2(out, 1);
     ::dup2(out, 2);
     ::dup3(high, 3, O_CLOEXEC);  // a program the test runs must not write on our channel
-    platform::closeDescriptorsFrom(4);
+    if (g_runtimeDescriptors.empty()) {
+        platform::closeDescriptorsFrom(4);
+    } else {
+        closeFrom(4);
+    }
     // Line-buffered, so what a test printed just before it crashed still reaches the report.
     ::setvbuf(stdout, nullptr, _IOLBF, 0);
 
@@ -65,13 +95,18 @@ void prepareChild(pid_t server) {
 // on `link` for its request and the two descriptors, then becomes that worker.
 [[noreturn]] void waitAsSpare(int link, pid_t server) {
     prepareChild(server);
-    ::dup2(link, 4);
-    platform::closeDescriptorsFrom(5);
+    if (g_runtimeDescriptors.empty()) {
+        ::dup2(link, 4);
+        platform::closeDescriptorsFrom(5);
+        link = 4;
+    } else {
+        closeFrom(4, link);
+    }
     ::close(3);
     std::string packet;
     std::vector<FileDescriptor> fds;
     WorkRequest request;
-    if (!platform::receiveWithFds(4, packet, fds) || fds.size() != 2 ||
+    if (!platform::receiveWithFds(link, packet, fds) || fds.size() != 2 ||
         !decodeRequest(packet, request)) {
         ::_exit(0);  // the server is gone or shutting down
     }
@@ -83,13 +118,14 @@ struct Spare {
     FileDescriptor link;
 };
 
-// Forks the next spare; false (no spare) when fork fails.
-bool makeSpare(Spare& spare, pid_t server) {
+// Forks the next spare; false (no spare) when fork fails. `language`: the script runtime this
+// process pre-started (its fork hooks run), empty for the fork server itself.
+bool makeSpare(Spare& spare, pid_t server, const std::string& language) {
     FileDescriptor ours, theirs;
     if (!platform::makeSocketPair(ours, theirs, true)) {
         return false;
     }
-    pid_t pid = ::fork();
+    pid_t pid = language.empty() ? ::fork() : languages::forkLanguage(language);
     if (pid == 0) {
         waitAsSpare(theirs.get(), server);
     }
@@ -129,9 +165,124 @@ void killEverything() {
     }
 }
 
-}  // namespace
+// A pre-started interpreter (see fork_server_loop.h): a child of the fork server that serves
+// the requests of one script language as the server does, from forks of itself.
+struct LanguageServer {
+    pid_t pid = -1;
+    FileDescriptor control;
+    std::string refused;  // why it cannot be pre-started: its tests take the plain path
+    // Requests sent to it and not yet taken (it answers once per request, in order).
+    std::deque<std::pair<std::string, std::vector<FileDescriptor>>> pending;
+};
 
-int serveForkRequests(int control) {
+bool isScriptLanguage(const std::string& type) {
+    return type == "python" || type == "lua" || type == "ruby";
+}
+
+bool prestartWanted() {
+    const char* setting = std::getenv("RTF_PRESTART");
+    return setting == nullptr || std::strcmp(setting, "0") != 0;
+}
+
+int serve(int control, const std::string& language, bool verbose);
+
+// In the child: pre-starts `language`, says on `link` whether it could ("" or why not), then
+// serves. Never returns.
+[[noreturn]] void runLanguageServer(int link, pid_t server, const std::string& language) {
+    prepareChild(server);
+    ::dup2(link, 4);
+    ::dup2(4, 3);
+    platform::closeDescriptorsFrom(4);
+    std::string error;
+    bool ready = false;
+    try {
+        ready = languages::prestartLanguage(language, error);
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    if (!ready) {
+        platform::sendWithFds(3, "refused: " + error, {});
+        ::_exit(0);
+    }
+    for (int fd : platform::openDescriptors()) {
+        if (fd > 3) {
+            g_runtimeDescriptors.push_back(fd);
+        }
+    }
+    struct Context {
+        std::string language;
+        std::size_t threads;
+        bool hosted;
+    } context{language, platform::threadCount(), false};
+    int code = languages::hostLanguage(
+        language,
+        [](void* opaque) {
+            auto* context = static_cast<Context*>(opaque);
+            // A fork keeps only the calling thread: a thread started with the runtime (or by
+            // what it imported) would be missing in every test, holding whatever lock it held.
+            // A runtime with a thread of its own forks from that thread, and the thread that
+            // waits for it is not needed in a test.
+            if (context->threads != (context->hosted ? 2u : 1u)) {
+                platform::sendWithFds(3,
+                                      "refused: " + std::to_string(context->threads) +
+                                          " threads run once it started, and a fork keeps one",
+                                      {});
+                return 0;
+            }
+            if (!platform::sendWithFds(3, "ready", {})) {
+                return 0;
+            }
+            return serve(3, context->language, false);
+        },
+        &context, context.hosted);
+    ::_exit(code);
+}
+
+// Starts the language server of `language` and waits (bounded) until it is ready.
+void startLanguageServer(LanguageServer& entry, pid_t self, const std::string& language,
+                         bool verbose) {
+    FileDescriptor ours, theirs;
+    if (!platform::makeSocketPair(ours, theirs, true)) {
+        entry.refused = std::string("socketpair: ") + ::strerror(errno);
+        return;
+    }
+    pid_t pid = ::fork();
+    if (pid == 0) {
+        runLanguageServer(theirs.get(), self, language);
+    }
+    if (pid < 0) {
+        entry.refused = std::string("fork: ") + ::strerror(errno);
+        return;
+    }
+    ::setpgid(pid, pid);
+    theirs.reset();
+    std::vector<bool> ready;
+    std::string answer;
+    std::vector<FileDescriptor> none;
+    if (!platform::waitReadable({ours.get()}, 60000, ready) ||
+        !platform::receiveWithFds(ours.get(), answer, none) || answer != "ready") {
+        ::kill(pid, SIGKILL);  // reaped with the other children
+        entry.refused =
+            answer.empty() ? "it ended while starting" : answer.substr(answer.find(' ') + 1);
+        if (verbose) {
+            std::fprintf(stderr,
+                         "robottestingframework-worker: no pre-started %s interpreter (%s): each "
+                         "%s test starts its own\n",
+                         language.c_str(), entry.refused.c_str(), language.c_str());
+        }
+        return;
+    }
+    entry.pid = pid;
+    entry.control = std::move(ours);
+    if (verbose) {
+        std::fprintf(stderr,
+                     "robottestingframework-worker: %s tests run in forks of a pre-started "
+                     "interpreter (pid %d)\n",
+                     language.c_str(), static_cast<int>(pid));
+    }
+}
+
+int serve(int control, const std::string& language, bool verbose) {
     ::signal(SIGPIPE, SIG_IGN);  // a runner that went away must not kill us before we clean up
     platform::SignalPipe signals({SIGCHLD, SIGTERM, SIGINT, SIGHUP});
     platform::becomeSubreaper();
@@ -146,12 +297,74 @@ int serveForkRequests(int control) {
     std::vector<FileDescriptor> fds;
     std::vector<bool> ready;
     Spare spare;
+    std::map<std::string, LanguageServer> languageServers;
+    bool prestart = language.empty() && prestartWanted();
+
+    // Hands a request to the spare (forking one now if there is none); tells the runner.
+    auto handToSpare = [&](const std::string& request, std::vector<FileDescriptor>& passed) {
+        pid_t pid = -1;
+        for (int attempt = 0; attempt < 2 && pid < 0; ++attempt) {
+            if (spare.pid < 0 && !makeSpare(spare, self, language)) {
+                break;
+            }
+            if (platform::sendWithFds(spare.link.get(), request,
+                                      {passed[0].get(), passed[1].get()})) {
+                pid = spare.pid;
+            } else {
+                ::kill(spare.pid, SIGKILL);  // a broken spare; reaped as an orphan
+            }
+            spare.link.reset();
+            spare.pid = -1;
+        }
+        if (pid < 0) {
+            sendStatus(passed[2].get(), WireKind::Exited, -1);
+        } else {
+            sendStatus(passed[2].get(), WireKind::Started, pid);
+            statusOf[pid] = std::move(passed[2]);
+        }
+        passed.clear();
+    };
+    // A language server that died (killed from outside; its workers went with it): what it had
+    // not yet taken takes the plain path, and the next test of the language starts another.
+    auto lost = [&](LanguageServer& entry) {
+        entry.pid = -1;
+        entry.control.reset();
+        while (!entry.pending.empty()) {
+            handToSpare(entry.pending.front().first, entry.pending.front().second);
+            entry.pending.pop_front();
+        }
+    };
+
     while (running) {
         // The next worker is forked while the runner is busy with the current one.
         if (spare.pid < 0) {
-            makeSpare(spare, self);
+            makeSpare(spare, self, language);
         }
-        platform::waitReadable({control, signals.fd()}, -1, ready);
+        std::vector<int> watched{control, signals.fd()};
+        std::vector<LanguageServer*> servers;
+        for (auto& entry : languageServers) {
+            if (entry.second.pid > 0) {
+                watched.push_back(entry.second.control.get());
+                servers.push_back(&entry.second);
+            }
+        }
+        platform::waitReadable(watched, -1, ready);
+        for (std::size_t i = 0; i < servers.size(); ++i) {
+            if (!ready[i + 2]) {
+                continue;
+            }
+            // Each answer says the oldest request was taken: its descriptors are the server's
+            // now. End of file: it died.
+            std::string answer;
+            std::vector<FileDescriptor> none;
+            if (platform::receiveWithFds(servers[i]->control.get(), answer, none)) {
+                if (!servers[i]->pending.empty()) {
+                    servers[i]->pending.pop_front();
+                }
+            } else {
+                lost(*servers[i]);
+            }
+        }
         if (ready[1]) {
             while (int signal = signals.take()) {
                 if (signal != SIGCHLD) {
@@ -172,6 +385,11 @@ int serveForkRequests(int control) {
                     spare.pid = -1;  // the spare died waiting (killed from outside)
                     spare.link.reset();
                 }
+                for (auto& entry : languageServers) {
+                    if (entry.second.pid == pid) {
+                        lost(entry.second);
+                    }
+                }
                 // Otherwise an orphan that was re-parented to us: reaped, nothing to say.
             }
         }
@@ -182,37 +400,45 @@ int serveForkRequests(int control) {
                 }
                 break;  // the runner is gone
             }
+            if (!language.empty()) {
+                // Taken (see LanguageServer::pending): said before the worker can run, so a
+                // test that kills this process is never run again by the fork server.
+                platform::sendWithFds(control, "taken", {});
+            }
             WorkRequest request;
             if (fds.size() != 3 || !decodeRequest(packet, request)) {
                 continue;  // not a request we understand; its descriptors close here
             }
-            // Hand the request to the spare (forking one now if there is none).
-            pid_t pid = -1;
-            for (int attempt = 0; attempt < 2 && pid < 0; ++attempt) {
-                if (spare.pid < 0 && !makeSpare(spare, self)) {
-                    break;
+            if (prestart && isScriptLanguage(request.type)) {
+                LanguageServer& entry = languageServers[request.type];
+                if (entry.pid < 0 && entry.refused.empty()) {
+                    startLanguageServer(entry, self, request.type, verbose);
                 }
-                if (platform::sendWithFds(spare.link.get(), packet, {fds[0].get(), fds[1].get()})) {
-                    pid = spare.pid;
-                } else {
-                    ::kill(spare.pid, SIGKILL);  // a broken spare; reaped as an orphan
+                // It answers the runner itself (Started, Exited) on the status descriptor. The
+                // request stays ours until it says it took it: one sent as it dies is not lost.
+                if (entry.pid > 0 &&
+                    platform::sendWithFds(entry.control.get(), packet,
+                                          {fds[0].get(), fds[1].get(), fds[2].get()})) {
+                    entry.pending.emplace_back(packet, std::move(fds));
+                    fds.clear();
+                    continue;
                 }
-                spare.link.reset();
-                spare.pid = -1;
+                if (entry.pid > 0) {
+                    lost(entry);
+                }
             }
-            if (pid < 0) {
-                sendStatus(fds[2].get(), WireKind::Exited, -1);
-                fds.clear();
-                continue;
-            }
-            sendStatus(fds[2].get(), WireKind::Started, pid);
-            statusOf[pid] = std::move(fds[2]);
-            fds.clear();
+            handToSpare(packet, fds);
         }
     }
     spare.link.reset();
     killEverything();
     return 0;
+}
+
+}  // namespace
+
+int serveForkRequests(int control, bool verbose) {
+    return serve(control, {}, verbose);
 }
 
 }  // namespace isolation

@@ -1,5 +1,5 @@
 // robottestingframework-worker: the runner's helper process. Started by the runner as
-//   robottestingframework-worker --fork-server FD
+//   robottestingframework-worker --fork-server FD [--verbose]
 // with FD a packet socket to the runner; not meant to be run by hand.
 #include <cstdio>
 #include <cstdlib>
@@ -9,16 +9,18 @@
 #include "fork_server_loop.h"
 
 int main(int argc, char** argv) {
-    if (argc == 3 && std::strcmp(argv[1], "--fork-server") == 0) {
+    bool verbose = argc == 4 && std::strcmp(argv[3], "--verbose") == 0;
+    if ((argc == 3 || verbose) && std::strcmp(argv[1], "--fork-server") == 0) {
         char* end = nullptr;
         long fd = std::strtol(argv[2], &end, 10);
         if (end != argv[2] && *end == '\0' && fd >= 0) {
-            return robottestingframework::isolation::serveForkRequests(static_cast<int>(fd));
+            return robottestingframework::isolation::serveForkRequests(static_cast<int>(fd),
+                                                                       verbose);
         }
     }
     std::fprintf(stderr,
                  "%s: the test runner's worker; it is started by robottestingframework-testrunner "
-                 "(usage: %s --fork-server FD)\n",
+                 "(usage: %s --fork-server FD [--verbose])\n",
                  argv[0], argv[0]);
     return 2;
 }

@@ -4,6 +4,8 @@
 // carry libpython, libruby and liblua unless a test needs them.
 #pragma once
 
+#include <sys/types.h>
+
 #include <memory>
 #include <string>
 
@@ -16,15 +18,26 @@ using TestLoaderFunction = std::unique_ptr<LoadedTest> (*)(const std::string& pa
                                                            std::string& error);
 using FixtureLoaderFunction = std::unique_ptr<LoadedFixture> (*)(const std::string& path,
                                                                  std::string& error);
+// Starts the runtime in a process that will fork a worker per test (the fork server's
+// pre-started interpreter). False with `error` when it cannot be made safe to fork.
+using PrestartFunction = bool (*)(std::string& error);
+// fork() as the runtime needs it done once prestart() succeeded (its own before/after hooks).
+using ForkFunction = pid_t (*)();
+// Runs `serve(context)` on the thread that may call the runtime and fork it, and returns what
+// it returned (a runtime that must be called from one thread of its own).
+using HostFunction = int (*)(int (*serve)(void*), void* context);
 
 // Changes whenever LanguageModule or Loaded<> changes: a module built for another layout is
 // refused instead of crashing.
-constexpr int kLanguageModuleVersion = 1;
+constexpr int kLanguageModuleVersion = 2;
 
 struct LanguageModule {
     int version;
     TestLoaderFunction loadTest;
     FixtureLoaderFunction loadFixture;  // nullptr: the language has no fixture managers
+    PrestartFunction prestart;          // nullptr: every worker starts the runtime itself
+    ForkFunction fork;                  // nullptr: plain fork()
+    HostFunction host;                  // nullptr: any thread (the process's only one)
 };
 
 }  // namespace languages

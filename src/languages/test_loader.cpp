@@ -112,6 +112,35 @@ std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string&
     return nullptr;
 }
 
+bool prestartLanguage(const std::string& type, std::string& error) {
+    if (!isScriptLanguage(type)) {
+        error = "not a script language";
+        return false;
+    }
+    const LanguageModule* module = scriptModule(type, error);
+    if (module == nullptr) {
+        return false;
+    }
+    if (module->prestart == nullptr) {
+        error = "its module cannot pre-start it";
+        return false;
+    }
+    return module->prestart(error);
+}
+
+pid_t forkLanguage(const std::string& type) {
+    std::string error;
+    const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;
+    return module != nullptr && module->fork != nullptr ? module->fork() : ::fork();
+}
+
+int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted) {
+    std::string error;
+    const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;
+    hosted = module != nullptr && module->host != nullptr;
+    return hosted ? module->host(serve, context) : serve(context);
+}
+
 std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
                                            std::string& error) {
     if (type == "dll") {

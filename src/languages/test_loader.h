@@ -2,6 +2,8 @@
 // executor and the worker process both use this.
 #pragma once
 
+#include <sys/types.h>
+
 #include <memory>
 #include <string>
 
@@ -31,6 +33,16 @@ std::unique_ptr<LoadedTest> loadTest(const std::string& type, const std::string&
                                      std::string& error);
 std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::string& path,
                                            std::string& error);
+
+// Pre-starts the runtime of script language `type` in this process, so that forks of it run
+// its tests without starting it again (see fork_server_loop.h). False with `error` (why) when
+// the language cannot be pre-started; its workers then start it themselves.
+bool prestartLanguage(const std::string& type, std::string& error);
+// Forks this process once prestartLanguage(type) succeeded, with the runtime's own hooks.
+pid_t forkLanguage(const std::string& type);
+// Runs `serve(context)` where forkLanguage(type) may be called: on the runtime's own thread
+// when it has one (`hosted` true: this thread then waits), else right here.
+int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted);
 
 // The types this build supports ("dll", "exec", and the enabled script languages).
 bool isSupportedType(const std::string& type);

@@ -1,5 +1,6 @@
 #include "process.h"
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -10,6 +11,7 @@
 #include <sys/prctl.h>
 #endif
 
+#include <algorithm>
 #include <climits>
 #include <cstdlib>
 #include <cstring>
@@ -286,6 +288,36 @@ bool setParentDeathSignal(int signal) {
     (void)signal;
     return false;
 #endif
+}
+
+std::size_t threadCount() {
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.compare(0, 8, "Threads:") == 0) {
+            return static_cast<std::size_t>(std::strtoul(line.c_str() + 8, nullptr, 10));
+        }
+    }
+    return 0;
+}
+
+std::vector<int> openDescriptors() {
+    std::vector<int> found;
+    DIR* folder = ::opendir("/proc/self/fd");
+    if (folder == nullptr) {
+        return found;
+    }
+    int own = ::dirfd(folder);
+    while (dirent* entry = ::readdir(folder)) {
+        char* end = nullptr;
+        long fd = std::strtol(entry->d_name, &end, 10);
+        if (end != entry->d_name && *end == '\0' && fd != own) {
+            found.push_back(static_cast<int>(fd));
+        }
+    }
+    ::closedir(folder);
+    std::sort(found.begin(), found.end());
+    return found;
 }
 
 std::string executablePath() {

@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <cstddef>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,6 +49,12 @@ bool waitChild(pid_t pid, double timeoutSeconds, int& status);
 bool becomeSubreaper();
 // `signal` is delivered to us when the thread that forked us ends (Linux; false elsewhere).
 bool setParentDeathSignal(int signal);
+
+// How many threads this process has (/proc/self/task); 0 when unknown. A fork keeps only the
+// calling one.
+std::size_t threadCount();
+// The descriptors this process has open (/proc/self/fd), in increasing order.
+std::vector<int> openDescriptors();
 
 // The path of the running program (/proc/self/exe), empty when unknown.
 std::string executablePath();

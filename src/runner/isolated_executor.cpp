@@ -61,7 +61,7 @@ bool IsolatedExecutor::start(std::string& error) {
         error = "cannot find robottestingframework-worker (next to the runner, or set RTF_WORKER)";
         return false;
     }
-    return server_->start(worker, error);
+    return server_->start(worker, error, options_.verbose);
 }
 
 void IsolatedExecutor::shutdown() {

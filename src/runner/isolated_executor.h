@@ -24,6 +24,7 @@ struct IsolationOptions {
     double killGrace = 1.0;              // seconds between SIGTERM and SIGKILL when stopping a test
     double fixtureTimeout = 120.0;       // bound on each fixture setup/check/tearDown; 0: none
     std::size_t outputTail = 64 * 1024;  // bytes of a test's output kept for the report
+    bool verbose = false;                // the fork server says which interpreters it pre-started
 };
 
 class IsolatedExecutor : public runner::TestExecutor {

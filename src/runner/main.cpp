@@ -244,7 +244,9 @@ int main(int argc, char** argv) {
         platform::becomeSubreaper();
         executor = std::make_unique<InProcessExecutor>();
     } else {
-        auto isolated = std::make_unique<isolation::IsolatedExecutor>();
+        isolation::IsolationOptions isolationOptions;
+        isolationOptions.verbose = options.verbose;
+        auto isolated = std::make_unique<isolation::IsolatedExecutor>(isolationOptions);
         std::string error;
         if (!isolated->start(error)) {
             std::fprintf(stderr, "%s: cannot start process isolation: %s\n", program,

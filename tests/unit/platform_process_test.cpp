@@ -6,8 +6,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <condition_variable>
 #include <cstdio>
 #include <cstring>
+#include <mutex>
 #include <string>
 #include <thread>
 
@@ -247,4 +249,32 @@ TEST(Deadline, NeverAndExpired) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     EXPECT_TRUE(soon.expired());
     EXPECT_EQ(soon.remainingMs(), 0);
+}
+
+// The pre-started interpreters refuse to fork a process that runs more than one thread.
+TEST(Process, ThreadCountSeesAThreadStartAndEnd) {
+    std::size_t before = robottestingframework::platform::threadCount();
+    ASSERT_GE(before, 1u);
+    std::mutex mutex;
+    std::condition_variable changed;
+    bool started = false;
+    bool release = false;
+    std::thread thread([&] {
+        std::unique_lock<std::mutex> lock(mutex);
+        started = true;
+        changed.notify_all();
+        changed.wait(lock, [&] { return release; });
+    });
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        changed.wait(lock, [&] { return started; });
+    }
+    EXPECT_EQ(robottestingframework::platform::threadCount(), before + 1);
+    {
+        std::lock_guard<std::mutex> lock(mutex);
+        release = true;
+    }
+    changed.notify_all();
+    thread.join();
+    EXPECT_EQ(robottestingframework::platform::threadCount(), before);
 }

@@ -288,6 +288,19 @@ std::unique_ptr<LoadedTest> loadLuaTest(const std::string& path, std::string& er
     return std::make_unique<LoadedLuaTest>(std::move(test));
 }
 
+// Lua keeps no state outside a test's own lua_State, and starts no thread: the pre-started
+// process has only the library loaded (and warmed once), and forks as any process does.
+bool prestartLua(std::string& error) {
+    lua_State* L = luaL_newstate();
+    if (L == nullptr) {
+        error = "cannot create a Lua state (out of memory)";
+        return false;
+    }
+    luaL_openlibs(L);
+    lua_close(L);
+    return true;
+}
+
 }  // namespace languages
 }  // namespace robottestingframework
 
@@ -295,6 +308,10 @@ std::unique_ptr<LoadedTest> loadLuaTest(const std::string& path, std::string& er
 const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
-        robottestingframework::languages::loadLuaTest, nullptr};
+        robottestingframework::languages::loadLuaTest,
+        nullptr,
+        robottestingframework::languages::prestartLua,
+        nullptr,
+        nullptr};
     return &module;
 }

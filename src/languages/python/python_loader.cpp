@@ -247,6 +247,9 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
         robottestingframework::languages::loadPythonTest,
-        robottestingframework::languages::loadPythonFixture};
+        robottestingframework::languages::loadPythonFixture,
+        robottestingframework::languages::python::prestartInterpreter,
+        robottestingframework::languages::python::forkInterpreter,
+        nullptr};
     return &module;
 }

@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <signal.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -230,9 +231,10 @@ namespace {
 // SystemExit instead, an error of the test; a forked child still exits at once.
 const char* const kExitGuardSource = R"PY(
 import os
-def _guard(real=os._exit, pid=os.getpid(), getpid=os.getpid):
+owner = os.getpid()  # the process the guard is for; a fork of it made by a test exits
+def _guard(real=os._exit, getpid=os.getpid):
     def _exit(status):
-        if getpid() != pid:
+        if getpid() != owner:
             real(status)
         raise SystemExit("os._exit(%r) was called: it would end the test runner's process "
                          "without a report" % (status,))
@@ -264,11 +266,14 @@ signal.signal(number, _wake)
     }
 }
 
+PyObject* g_exitGuard = nullptr;  // the guard's globals
+
 void guardProcessExit() {
     py::dict globals;
     globals["__builtins__"] = py::module_::import("builtins");
     globals["__name__"] = "_rtf_exit_guard";
     py::exec(kExitGuardSource, globals);
+    g_exitGuard = globals.release().ptr();  // never released, like the interpreter
 }
 
 }  // namespace
@@ -307,6 +312,43 @@ void ensureInterpreter() {
         }
         PyEval_SaveThread();  // every later call takes the GIL with gil_scoped_acquire
     });
+}
+
+bool prestartInterpreter(std::string& error) {
+    try {
+        ensureInterpreter();
+        // What the interpreter made so far is shared by every fork: the collector leaves it
+        // alone, so a test's first collection does not copy every page of it.
+        py::gil_scoped_acquire gil;
+        // A rehearsal on an empty script: what loading one does the first time (lazy imports,
+        // caches) is done once here instead of in every test.
+        std::string ignored;
+        ScriptModule::load("/dev/null", ignored);
+        py::module_::import("gc").attr("freeze")();
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+pid_t forkInterpreter() {
+    PyGILState_STATE gil = PyGILState_Ensure();
+    PyOS_BeforeFork();
+    pid_t pid = ::fork();
+    if (pid == 0) {
+        PyOS_AfterFork_Child();
+        // A worker forked from the pre-started interpreter is the process the guard is for.
+        if (g_exitGuard != nullptr) {
+            PyObject* self = PyLong_FromLong(static_cast<long>(::getpid()));
+            PyDict_SetItemString(g_exitGuard, "owner", self);
+            Py_XDECREF(self);
+        }
+    } else {
+        PyOS_AfterFork_Parent();
+    }
+    PyGILState_Release(gil);
+    return pid;
 }
 
 void wakeScript(unsigned long thread) {

@@ -359,10 +359,54 @@ std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& e
 }  // namespace languages
 }  // namespace robottestingframework
 
+namespace robottestingframework {
+namespace languages {
+
+// The pre-started VM: its thread (ruby_vm.h) runs the fork server's loop and forks each
+// worker, so a worker's only thread is the one Ruby knows. The process's first thread only
+// waits for it, and is not in any worker.
+bool prestartRuby(std::string& error) {
+    try {
+        RubyVm::start();
+        return true;
+    } catch (const std::exception& e) {
+        error = e.what();
+        return false;
+    }
+}
+
+pid_t forkRuby() {
+    pid_t pid = RubyVm::fork();
+    if (pid == 0) {
+        // A worker is the process exit! must not end (see the guard above).
+        RubyVm::run([] {
+            int state = 0;
+            rb_eval_string_protect(
+                "RobotTestingFramework.send(:remove_const, :PROCESS_ID)\n"
+                "RobotTestingFramework.const_set(:PROCESS_ID, Process.pid)\n",
+                &state);
+        });
+    }
+    return pid;
+}
+
+int hostRuby(int (*serve)(void*), void* context) {
+    int code = 0;
+    RubyVm::run([&] { code = serve(context); });
+    return code;
+}
+
+}  // namespace languages
+}  // namespace robottestingframework
+
 // The module's entry point: what test_loader.cpp finds with dlsym.
 const robottestingframework::languages::LanguageModule* rtf_language_module() {
     static const robottestingframework::languages::LanguageModule module{
         robottestingframework::languages::kLanguageModuleVersion,
-        robottestingframework::languages::loadRubyTest, nullptr};
+        robottestingframework::languages::loadRubyTest,
+        nullptr,
+        robottestingframework::languages::prestartRuby,
+        robottestingframework::languages::forkRuby,
+        robottestingframework::languages::hostRuby};
     return &module;
 }

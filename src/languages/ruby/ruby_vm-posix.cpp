@@ -130,5 +130,20 @@ void RubyVm::run(const std::function<void()>& job) {
     VmThread::instance().run(job);
 }
 
+void RubyVm::start() {
+    VmThread::instance();
+}
+
+pid_t RubyVm::fork() {
+    pid_t pid = -1;
+    run([&pid] {
+        pid = ::fork();
+        if (pid == 0) {
+            rb_thread_atfork();
+        }
+    });
+    return pid;
+}
+
 }  // namespace languages
 }  // namespace robottestingframework

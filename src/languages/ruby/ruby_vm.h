@@ -3,6 +3,8 @@
 // and every call into Ruby is a job handed to that thread.
 #pragma once
 
+#include <sys/types.h>
+
 #include <functional>
 
 namespace robottestingframework {
@@ -13,6 +15,12 @@ public:
     // Runs `job` on the Ruby thread (starting it if needed) and waits for it; an exception
     // thrown by `job` is thrown here. Runs it directly when called from the Ruby thread.
     static void run(const std::function<void()>& job);
+
+    // Starts the VM (for a process that forks a worker per test, see language_module.h).
+    static void start();
+    // fork() from the Ruby thread (the child's only thread), Ruby told of it in the child as
+    // its own fork does (rb_thread_atfork).
+    static pid_t fork();
 };
 
 }  // namespace languages
