@@ -72,9 +72,7 @@ void EventRelay::relay(const WireRecord& record) {
         return;
     }
     if (record.kind == WireKind::Described) {
-        if (!record.name.empty()) {
-            self_.setName(record.name);
-        }
+        rename(record.name);
         self_.setDescription(record.message.getMessage());
         return;
     }

@@ -198,3 +198,20 @@ TEST(EventRelay, ARenameRecordIsARenameEventAboutTheStandInById) {
     EXPECT_EQ(test.events.at(0).testId, self.getId());
     EXPECT_EQ(self.getName(), "new name");
 }
+
+TEST(EventRelay, ANameDescribedAfterTheStartIsARenameEvent) {
+    using robottestingframework::TestResult;
+    using robottestingframework::TestResultCollector;
+    StandIn self;
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    EventRelay relay(self, result);
+    relay.start();  // the runner may start the test before the worker describes it
+    WireRecord described;
+    described.kind = WireKind::Described;
+    described.name = "the plug-in's own name";
+    relay.relay(described);
+    relay.end("");
+    EXPECT_EQ(collector.suites().at(0).tests.at(0).name, "the plug-in's own name");
+}
