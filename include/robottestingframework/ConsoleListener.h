@@ -2,6 +2,7 @@
 // verbose on, its reports and what it printed.
 #pragma once
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -43,6 +44,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
+    void renameTest(const Test* test, const std::string& name) override;
 
 private:
     void message(const char* label, const char* colour, const TestMessage& msg);
@@ -53,7 +55,7 @@ private:
 
     std::FILE* stream_;
     bool tty_ = false;
-    const Test* test_ = nullptr;  // the open test
+    std::uint64_t test_ = 0;  // the open test's id (0: none)
     bool verbose_;
     bool hideUncritical_ = false;
     bool showChecks_ = false;

@@ -2,6 +2,7 @@
 // back to the runner. Nothing in it points into the test that produced it.
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 #include <robottestingframework/Test.h>  // as in RTF 2.x
@@ -27,13 +28,15 @@ struct ResultEvent {
         Timeout,
         Interrupted,
         Output,
+        Rename,  // the test now goes by `message`'s text (a script's setName)
     };
 
     Kind kind = Kind::Report;
-    std::string testName;  // the test (or suite) the event is about; empty for runner events
-    TestMessage message;   // for Output, the printed text is the message
-    bool passed = true;    // for Check: whether the check held
-    double time = 0;       // seconds since the collector started, when it was received
+    std::string testName;      // the test (or suite) the event is about; empty for runner events
+    std::uint64_t testId = 0;  // its Test::getId(); 0 for runner events
+    TestMessage message;       // for Output, the printed text is the message
+    bool passed = true;        // for Check: whether the check held
+    double time = 0;           // seconds since the collector started, when it was received
 };
 
 // "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats).

@@ -1,6 +1,8 @@
 // The base of everything that can run and report to a TestResult: test cases and suites.
 #pragma once
 
+#include <atomic>
+#include <cstdint>
 #include <string>
 
 #include <robottestingframework/TestMessage.h>
@@ -16,10 +18,19 @@ public:
     Test(const Test&) = delete;
     Test& operator=(const Test&) = delete;
 
-    void setName(std::string name) { name_ = std::move(name); }
+    // While the test runs (TestCase::run), a new name is also an event: its TestResult tells
+    // the listeners (renameTest), which follow it by id instead of reading the name later.
+    void setName(std::string name);
     const std::string getName() const { return name_; }
     void setDescription(std::string description) { description_ = std::move(description); }
     const std::string getDescription() const { return description_; }
+
+    // Beyond RTF 2.x: a number unique in the process, which every event about the test carries
+    // and listeners key by. The runner's plan gives it; a test used without a plan gets it the
+    // first time it is asked for.
+    std::uint64_t getId() const;
+    // The result a running test's renames go to (nullptr: none). TestCase::run sets it.
+    void reportRenamesTo(TestResult* result) { renames_ = result; }
 
     virtual void run(TestResult& result) = 0;
     // Asks a running test to stop as soon as it can. May be called from another thread.
@@ -41,6 +52,8 @@ private:
     std::string description_;
     bool critical_ = false;
     TestMessage criticalError_;
+    mutable std::atomic<std::uint64_t> id_{0};
+    TestResult* renames_ = nullptr;
 };
 
 }  // namespace robottestingframework

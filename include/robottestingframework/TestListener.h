@@ -41,6 +41,9 @@ public:
     virtual void addInterrupted(const Test* /*test*/, TestMessage /*msg*/) {}
     // What the test (or a suite's fixtures) printed on stdout and stderr.
     virtual void addOutput(const Test* /*test*/, const std::string& /*text*/) {}
+    // The running test now goes by `name` (a script calling setName). Listeners that show
+    // names follow this, never the test object's name read later.
+    virtual void renameTest(const Test* /*test*/, const std::string& /*name*/) {}
 };
 
 }  // namespace robottestingframework

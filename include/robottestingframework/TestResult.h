@@ -36,6 +36,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg);
     void addInterrupted(const Test* test, TestMessage msg);
     void addOutput(const Test* test, const std::string& text);
+    void renameTest(const Test* test, const std::string& name);
 
 private:
     std::vector<TestListener*> listeners_;

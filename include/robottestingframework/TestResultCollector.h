@@ -3,6 +3,7 @@
 
 #include <chrono>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,7 @@ namespace robottestingframework {
 
 // One test as the outputs show it.
 struct TestRecord {
+    std::uint64_t id = 0;  // the test's Test::getId()
     std::string name;
     std::string description;
     TestStatus status = TestStatus::Passed;
@@ -27,6 +29,7 @@ struct TestRecord {
 
 // One suite as the outputs show it. Tests run outside any suite go to an unnamed suite.
 struct SuiteRecord {
+    std::uint64_t id = 0;  // the suite's Test::getId(); 0 for tests run outside a suite
     std::string name;
     std::string description;
     double start = 0;
@@ -91,11 +94,14 @@ public:
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
+    void renameTest(const Test* test, const std::string& name) override;
 
 private:
-    // A test between its startTest and endTest: where its record is.
+    // A test between its startTest and endTest: where its record is. Found by id, never by
+    // pointer or name (a stand-in may be reused; two tests may share a name).
     struct OpenTest {
-        const Test* test;
+        std::uint64_t id;
+        const Test* test;  // only to end it when the run is cut short
         std::size_t suite;
         std::size_t index;
     };

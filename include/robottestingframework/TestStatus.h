@@ -16,6 +16,9 @@ enum class TestStatus {
 
 // "passed", "skipped", "failed", "error", "crashed", "timed out", "interrupted".
 const char* toString(TestStatus status);
+// The same word as the text report's per-test lines show it: the failing ones in capitals
+// ("FAILED", "TIMED OUT"). Both come from one table, in TestStatus.cpp.
+const char* toLabel(TestStatus status);
 
 // True for the states that make a run fail (everything but passed and skipped).
 inline bool isFailure(TestStatus status) {

@@ -43,6 +43,7 @@ public:
     void addFailure(const Test* test, TestMessage msg) override;
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
+    void renameTest(const Test* test, const std::string& name) override;
     void startTestSuite(const TestSuite* suite) override;
     void endTestSuite(const TestSuite* suite) override;
     void startTestSuite(const Test* suite) override;

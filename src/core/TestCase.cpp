@@ -98,6 +98,7 @@ void TestCase::run(TestResult& result) {
     TestCase* const previous = runningTest.exchange(this);
 
     result.startTest(this);
+    reportRenamesTo(&result);
     bool reported = false;  // a failure or error event was sent by this function
     if (interrupted_) {
         result.addInterrupted(this, TestMessage("interrupted before it started"));
@@ -139,6 +140,7 @@ void TestCase::run(TestResult& result) {
     if (!successful_ && !reported && !failureReported_) {
         result.addFailure(this, TestMessage("the test marked itself failed"));
     }
+    reportRenamesTo(nullptr);
     result.endTest(this);
 
     runningTest.store(previous);

@@ -84,6 +84,10 @@ void TestResult::addOutput(const Test* test, const std::string& text) {
     RTF_DISPATCH(addOutput(test, text))
 }
 
+void TestResult::renameTest(const Test* test, const std::string& name) {
+    RTF_DISPATCH(renameTest(test, name))
+}
+
 #undef RTF_DISPATCH
 
 }  // namespace robottestingframework

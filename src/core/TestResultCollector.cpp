@@ -16,6 +16,7 @@ ResultEvent makeEvent(Kind kind, const Test* test, TestMessage msg, bool passed,
     event.kind = kind;
     if (test != nullptr) {
         event.testName = test->getName();
+        event.testId = test->getId();
     }
     event.message = std::move(msg);
     event.passed = passed;
@@ -128,8 +129,9 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
     // A test's own event goes to its record; anything else open (a fixture's report from a
     // watcher thread, a collapse) belongs to the suite.
     TestRecord* owner = nullptr;
+    const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
-        if (it->test == test) {
+        if (it->id == id) {
             owner = &suites_[it->suite].tests[it->index];
             break;
         }
@@ -199,6 +201,16 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
     record(Kind::Output, test, TestMessage(text));
 }
 
+void TestResultCollector::renameTest(const Test* test, const std::string& name) {
+    const std::uint64_t id = test != nullptr ? test->getId() : 0;
+    for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
+        if (it->id == id) {
+            suites_[it->suite].tests[it->index].name = name;
+            return;
+        }
+    }
+}
+
 void TestResultCollector::startTest(const Test* test) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
@@ -211,12 +223,13 @@ void TestResultCollector::startTest(const Test* test) {
     suite.tests.emplace_back();
     TestRecord& record = suite.tests.back();
     if (test != nullptr) {
+        record.id = test->getId();
         record.name = test->getName();
         record.description = test->getDescription();
     }
     record.start = time;
-    openTests_.push_back(
-        {test, static_cast<std::size_t>(&suite - suites_.data()), suite.tests.size() - 1});
+    openTests_.push_back({record.id, test, static_cast<std::size_t>(&suite - suites_.data()),
+                          suite.tests.size() - 1});
 }
 
 void TestResultCollector::endTest(const Test* test) {
@@ -224,15 +237,13 @@ void TestResultCollector::endTest(const Test* test) {
     if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::EndTest, test, TestMessage(), true, time));
     }
+    const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (std::size_t i = openTests_.size(); i > 0; --i) {
         const OpenTest open = openTests_[i - 1];
-        if (open.test != test) {
+        if (open.id != id) {
             continue;
         }
         TestRecord& record = suites_[open.suite].tests[open.index];
-        if (test != nullptr) {
-            record.name = test->getName();  // a test may rename itself while it runs (scripts)
-        }
         record.duration = time - record.start;
         ++counts_[static_cast<std::size_t>(record.status)];
         if (isFailure(record.status)) {
@@ -262,6 +273,7 @@ void TestResultCollector::startTestSuite(const TestSuite* suite) {
     suites_.emplace_back();
     SuiteRecord& record = suites_.back();
     if (suite != nullptr) {
+        record.id = suite->getId();
         record.name = suite->getName();
         record.description = suite->getDescription();
         if (keepEvents_) {

@@ -3,24 +3,44 @@
 
 namespace robottestingframework {
 
-const char* toString(TestStatus status) {
-    switch (status) {
-        case TestStatus::Passed:
-            return "passed";
-        case TestStatus::Skipped:
-            return "skipped";
-        case TestStatus::Failed:
-            return "failed";
-        case TestStatus::Error:
-            return "error";
-        case TestStatus::Crashed:
-            return "crashed";
-        case TestStatus::TimedOut:
-            return "timed out";
-        case TestStatus::Interrupted:
-            return "interrupted";
+namespace {
+
+// The one table of state words, in TestStatus order: the plain word, and the word as the
+// text report's per-test lines show it.
+struct StateWords {
+    TestStatus status;
+    const char* word;
+    const char* label;
+};
+constexpr StateWords stateWords[] = {
+    {TestStatus::Passed, "passed", "passed"},
+    {TestStatus::Skipped, "skipped", "skipped"},
+    {TestStatus::Failed, "failed", "FAILED"},
+    {TestStatus::Error, "error", "ERROR"},
+    {TestStatus::Crashed, "crashed", "CRASHED"},
+    {TestStatus::TimedOut, "timed out", "TIMED OUT"},
+    {TestStatus::Interrupted, "interrupted", "INTERRUPTED"},
+};
+
+const StateWords* wordsOf(TestStatus status) {
+    for (const StateWords& words : stateWords) {
+        if (words.status == status) {
+            return &words;
+        }
     }
-    return "unknown";
+    return nullptr;
+}
+
+}  // namespace
+
+const char* toString(TestStatus status) {
+    const StateWords* words = wordsOf(status);
+    return words != nullptr ? words->word : "unknown";
+}
+
+const char* toLabel(TestStatus status) {
+    const StateWords* words = wordsOf(status);
+    return words != nullptr ? words->label : "?";
 }
 
 const char* toString(ResultEvent::Kind kind) {
@@ -56,6 +76,8 @@ const char* toString(ResultEvent::Kind kind) {
             return "interrupted";
         case Kind::Output:
             return "output";
+        case Kind::Rename:
+            return "rename";
     }
     return "unknown";
 }

@@ -72,9 +72,7 @@ void EventRelay::relay(const WireRecord& record) {
         return;
     }
     if (record.kind == WireKind::Described) {
-        if (!record.name.empty()) {
-            self_.setName(record.name);
-        }
+        rename(record.name);
         self_.setDescription(record.message.getMessage());
         return;
     }
@@ -85,9 +83,13 @@ void EventRelay::relay(const WireRecord& record) {
     if (record.kind != WireKind::Event || ended_) {
         return;
     }
+    if (record.event == Kind::Rename) {
+        rename(record.message.getMessage());
+        return;
+    }
     // The test's own name wins (a script may set it in setup).
     if (!record.name.empty() && record.name != self_.getName()) {
-        self_.setName(record.name);
+        rename(record.name);
     }
     if (record.event == Kind::StartTest) {
         start();
@@ -99,6 +101,17 @@ void EventRelay::relay(const WireRecord& record) {
     start();
     if (relayEvent(record, &self_, result_)) {
         note(record.event, record.message);
+    }
+}
+
+void EventRelay::rename(const std::string& name) {
+    if (name.empty() || name == self_.getName()) {
+        return;
+    }
+    self_.setName(name);
+    // Before its start the listeners take the name from startTest.
+    if (started_ && !ended_) {
+        result_.renameTest(&self_, name);
     }
 }
 

@@ -42,6 +42,8 @@ public:
 
 private:
     void note(ResultEvent::Kind kind, const TestMessage& message);
+    // The stand-in takes the test's new name, and the listeners hear of it as an event.
+    void rename(const std::string& name);
 
     Test& self_;
     TestResult& result_;

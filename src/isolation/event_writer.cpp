@@ -71,6 +71,9 @@ void EventWriter::addInterrupted(const Test* test, TestMessage msg) {
 void EventWriter::addOutput(const Test* test, const std::string& text) {
     sendEvent(Kind::Output, test, TestMessage(text));
 }
+void EventWriter::renameTest(const Test* test, const std::string& name) {
+    sendEvent(Kind::Rename, test, TestMessage(name));
+}
 
 }  // namespace isolation
 }  // namespace robottestingframework

@@ -34,6 +34,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
+    void renameTest(const Test* test, const std::string& name) override;
 
 private:
     int fd_;

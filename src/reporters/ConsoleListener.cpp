@@ -75,7 +75,7 @@ void ConsoleListener::message(const char* label, const char* colour, const TestM
 }
 
 bool ConsoleListener::printNow(const Test* test) const {
-    return verbose_ || test_ == nullptr || test != test_;
+    return verbose_ || test_ == 0 || test == nullptr || test->getId() != test_;
 }
 
 void ConsoleListener::addReport(const Test* test, TestMessage msg) {
@@ -150,9 +150,13 @@ void ConsoleListener::addOutput(const Test* test, const std::string& text) {
     }
 }
 
+void ConsoleListener::renameTest(const Test* test, const std::string& name) {
+    record_.renameTest(test, name);
+}
+
 void ConsoleListener::startTest(const Test* test) {
     record_.startTest(test);
-    test_ = test;
+    test_ = test != nullptr ? test->getId() : 0;
     if (verbose_ && test != nullptr) {
         line("  run         " + test->getName());
     }
@@ -160,11 +164,22 @@ void ConsoleListener::startTest(const Test* test) {
 
 void ConsoleListener::endTest(const Test* test) {
     record_.endTest(test);
-    test_ = nullptr;
-    if (record_.suites().empty() || record_.suites().back().tests.empty()) {
+    test_ = 0;
+    if (record_.suites().empty()) {
         return;
     }
-    const TestRecord& record = record_.suites().back().tests.back();
+    // The test's own record, found by id (only the running tests' records are kept).
+    const std::uint64_t id = test != nullptr ? test->getId() : 0;
+    const TestRecord* found = nullptr;
+    for (const TestRecord& candidate : record_.suites().back().tests) {
+        if (candidate.id == id) {
+            found = &candidate;
+        }
+    }
+    if (found == nullptr) {
+        return;
+    }
+    const TestRecord& record = *found;
     char word[16];
     std::snprintf(word, sizeof(word), "%-11s", reporters::statusWord(record.status));
     std::string text = "  ";

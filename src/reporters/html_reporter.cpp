@@ -334,7 +334,8 @@ std::string HtmlReporter::document() {
         for (const TestRecord& test : suite.tests) {
             out += firstTest ? "\n" : ",\n";
             firstTest = false;
-            out += "{\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
+            out += "{\"id\":" + std::to_string(test.id);
+            out += ",\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
             out += ",\"state\":" + jsonString(toString(test.status));
             out += ",\"duration\":" + number(test.duration);
             if (!test.description.empty()) {

@@ -68,10 +68,15 @@ std::string problems(const std::vector<ResultEvent>& events) {
     return out;
 }
 
+// `testId` is the test's place in the run ("suite.test", from 1): the same in every run of
+// the same suites, and apart for two tests of one name. `executionId` is the id its events
+// carried in this run.
 void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& suite,
-                long long origin, bool verbose) {
+                const std::string& testId, long long origin, bool verbose) {
     const long long start = origin + milliseconds(test.start);
-    out += "{\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
+    out += "{\"testId\":\"" + testId + "\"";
+    out += ",\"executionId\":\"" + std::to_string(test.id) + "\"";
+    out += ",\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
     out += ",\"status\":\"" + std::string(ctrfStatus(test.status)) + "\"";
     out += ",\"duration\":" + std::to_string(milliseconds(test.duration));
     out += ",\"start\":" + std::to_string(start);
@@ -155,11 +160,16 @@ std::string JsonReporter::document() {
     out += ",\"tests\":[";
     bool first = true;
     std::string fixtures;
+    std::size_t suitePlace = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
+        ++suitePlace;
+        std::size_t testPlace = 0;
         for (const TestRecord& test : suite.tests) {
             out += first ? "\n" : ",\n";
             first = false;
-            appendTest(out, test, suite, origin, settings_.verbose);
+            const std::string testId =
+                std::to_string(suitePlace) + "." + std::to_string(++testPlace);
+            appendTest(out, test, suite, testId, origin, settings_.verbose);
         }
         if (suite.fixtureFailed) {
             fixtures += std::string(fixtures.empty() ? "" : ",") +

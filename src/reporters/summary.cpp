@@ -6,23 +6,7 @@ namespace robottestingframework {
 namespace reporters {
 
 const char* statusWord(TestStatus status) {
-    switch (status) {
-        case TestStatus::Passed:
-            return "passed";
-        case TestStatus::Skipped:
-            return "skipped";
-        case TestStatus::Failed:
-            return "FAILED";
-        case TestStatus::Error:
-            return "ERROR";
-        case TestStatus::Crashed:
-            return "CRASHED";
-        case TestStatus::TimedOut:
-            return "TIMED OUT";
-        case TestStatus::Interrupted:
-            return "INTERRUPTED";
-    }
-    return "?";
+    return toLabel(status);
 }
 
 std::string eventLabel(ResultEvent::Kind kind, bool passed) {

@@ -14,6 +14,10 @@ namespace {
 
 using Kind = ResultEvent::Kind;
 
+std::uint64_t idOf(const Test* test) {
+    return test != nullptr ? test->getId() : 0;
+}
+
 // A description: one line, with "#" and "\" escaped so no directive is read into it.
 std::string description(const std::string& text) {
     std::string out;
@@ -163,19 +167,25 @@ void TapReporter::endTestSuite(const TestSuite* /*suite*/) {
     }
 }
 
+void TapReporter::renameTest(const Test* test, const std::string& name) {
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+        if (it->id == idOf(test)) {
+            it->name = name;
+            return;
+        }
+    }
+}
+
 void TapReporter::startTest(const Test* test) {
-    OpenTest open{test, test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}};
+    OpenTest open{idOf(test), test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}};
     open_.push_back(std::move(open));
 }
 
 void TapReporter::endTest(const Test* test) {
     for (std::size_t i = open_.size(); i > 0; --i) {
-        if (open_[i - 1].test == test) {
+        if (open_[i - 1].id == idOf(test)) {
             OpenTest done = std::move(open_[i - 1]);
             open_.erase(open_.begin() + static_cast<std::ptrdiff_t>(i - 1));
-            if (test != nullptr) {
-                done.name = test->getName();  // a test may rename itself while it runs
-            }
             closeTest(blocks_, done);
             return;
         }
@@ -185,7 +195,7 @@ void TapReporter::endTest(const Test* test) {
 void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg) {
     const TestStatus state = stateOf(kind);
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
-        if (it->test == test) {
+        if (it->id == idOf(test)) {
             if (state > it->status) {
                 it->status = state;
                 it->reason = msg;
@@ -222,7 +232,7 @@ void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
 }
 void TapReporter::addOutput(const Test* test, const std::string& text) {
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
-        if (it->test == test) {
+        if (it->id == idOf(test)) {
             it->output += text;
             return;
         }

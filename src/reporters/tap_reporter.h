@@ -3,6 +3,7 @@
 // reason, and "Bail out!" when a suite's fixture failed.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <robottestingframework/ResultEvent.h>
@@ -30,6 +31,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
+    void renameTest(const Test* test, const std::string& name) override;
 
 private:
     // A suite being written: its test points so far (unindented; indented when it closes).
@@ -40,9 +42,9 @@ private:
         bool failed = false;
         std::vector<TestMessage> fixtureProblems;
     };
-    // A test between its start and end, found by the Test it is about, not by order.
+    // A test between its start and end, found by its id, not by order, pointer or name.
     struct OpenTest {
-        const Test* test;
+        std::uint64_t id;
         std::string name;
         TestStatus status = TestStatus::Passed;
         TestMessage reason;  // the first message of the state it has now

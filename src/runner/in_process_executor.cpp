@@ -145,6 +145,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override {
         target_->addOutput(sync(test), text);
     }
+    void renameTest(const Test* test, const std::string& /*name*/) override { sync(test); }
 
 private:
     void worsen(TestStatus status) {
@@ -155,7 +156,9 @@ private:
         if (test != nullptr && test != self_) {
             std::string name = test->getName();
             if (!name.empty() && name != self_->getName()) {
+                // The stand-in takes the name; the listeners hear of it as an event.
                 self_->setName(name);
+                target_->renameTest(self_, name);
             }
         }
         return self_;

@@ -113,6 +113,7 @@ void RunPlan::addSuite(SuiteSpec spec) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
     TestSuite& suite = suites_.emplace_back(owned.name);
     suite.setDescription(owned.description);
+    suite.getId();  // ids are given here, in plan order, before any event carries them
     for (const auto& fixture : owned.fixtures) {
         std::string error;
         std::unique_ptr<FixtureManager> manager = executor_.makeFixture(fixture, error);
@@ -125,7 +126,9 @@ void RunPlan::addSuite(SuiteSpec spec) {
         fixtures_.push_back(std::move(manager));
     }
     for (const auto& test : owned.tests) {
-        suite.addTest(&tests_.emplace_back(test, executor_));
+        PluginTest& planned = tests_.emplace_back(test, executor_);
+        planned.getId();
+        suite.addTest(&planned);
     }
     runner_.addTest(&suite);
 }

@@ -1,5 +1,6 @@
 #include <robottestingframework/WebProgressListener.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -10,8 +11,8 @@
 
 namespace robottestingframework {
 
-// The view is filled by the run's events and read by the server; suites are told apart from
-// tests by the pointers the events carry (while the events carry no ids).
+// The view is filled by the run's events and read by the server; tests are found by the ids
+// the events carry.
 struct WebProgressListener::State {
     State(const std::string& host, unsigned int port, bool verbose)
         : view(verbose), server(view), host(host) {
@@ -21,24 +22,16 @@ struct WebProgressListener::State {
         view.close();  // ends the event streams first, so stop() does not wait for them
         server.stop();
     }
-    bool aboutSuite(const Test* test) const {
-        for (const Test* suite : suites) {
-            if (suite == test) {
-                return true;
-            }
-        }
-        return false;
-    }
     void message(const Test* test, const char* kind, const TestMessage& msg, TestStatus status) {
-        view.addMessage(aboutSuite(test), kind, msg, status);
+        view.addMessage(idOf(test), kind, msg, status);
     }
+    static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
 
     web::RunView view;
     web::WebServer server;
     std::string host;
     std::string error;
     bool listening = false;
-    std::vector<const Test*> suites;  // the open ones, innermost last
 };
 
 WebProgressListener::WebProgressListener(unsigned int port, bool verbose)
@@ -113,27 +106,28 @@ void WebProgressListener::addInterrupted(const Test* test, TestMessage msg) {
 }
 
 void WebProgressListener::addOutput(const Test* test, const std::string& text) {
-    if (!state_->aboutSuite(test)) {
-        state_->view.addOutput(text);
-    }
+    state_->view.addOutput(State::idOf(test), text);
 }
 
 void WebProgressListener::startTest(const Test* test) {
-    state_->view.startTest(test != nullptr ? test->getName() : std::string());
+    state_->view.startTest(State::idOf(test), test != nullptr ? test->getName() : std::string());
 }
 
-void WebProgressListener::endTest(const Test* /*test*/) {
-    state_->view.endTest();
+void WebProgressListener::endTest(const Test* test) {
+    state_->view.endTest(State::idOf(test));
+}
+
+void WebProgressListener::renameTest(const Test* test, const std::string& name) {
+    state_->view.renameTest(State::idOf(test), name);
 }
 
 void WebProgressListener::startTestSuite(const TestSuite* suite) {
-    std::vector<std::string> tests;
+    std::vector<web::RunView::Planned> tests;
     if (suite != nullptr) {
         for (const Test* test : suite->tests()) {
-            tests.push_back(test->getName());
+            tests.push_back({test->getId(), test->getName()});
         }
     }
-    state_->suites.push_back(suite);
     state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
 }
 
@@ -143,14 +137,10 @@ void WebProgressListener::endTestSuite(const TestSuite* suite) {
 
 void WebProgressListener::startTestSuite(const Test* suite) {
     // A suite known only as a Test: its tests are learnt as they start.
-    state_->suites.push_back(suite);
     state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
 }
 
 void WebProgressListener::endTestSuite(const Test* /*suite*/) {
-    if (!state_->suites.empty()) {
-        state_->suites.pop_back();
-    }
     state_->view.endSuite();
 }
 

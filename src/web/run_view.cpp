@@ -116,7 +116,7 @@ void RunView::endRun() {
     publishRun();
 }
 
-void RunView::startSuite(const std::string& name, const std::vector<std::string>& tests) {
+void RunView::startSuite(const std::string& name, const std::vector<Planned>& tests) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (runState_ == "waiting") {
         // A suite run on its own, without a runner.
@@ -128,7 +128,8 @@ void RunView::startSuite(const std::string& name, const std::vector<std::string>
     suite.started = std::chrono::steady_clock::now();
     for (const auto& test : tests) {
         TestView view;
-        view.name = test;
+        view.id = test.id;
+        view.name = test.name;
         suite.tests.push_back(std::move(view));
     }
     suites_.push_back(std::move(suite));
@@ -158,36 +159,57 @@ void RunView::endSuite() {
     publishRun();
 }
 
-void RunView::startTest(const std::string& name) {
+bool RunView::findOpen(std::uint64_t id, std::size_t& suite, std::size_t& test) const {
+    for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
+        if (it->id == id) {
+            suite = it->suite;
+            test = it->test;
+            return true;
+        }
+    }
+    return false;
+}
+
+void RunView::startTest(std::uint64_t id, const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
     SuiteView& suite = openSuite();
-    openTest_ = none;
+    std::size_t index = none;
     for (std::size_t i = 0; i < suite.tests.size(); ++i) {
-        if (suite.tests[i].name == name && suite.tests[i].state == "not run") {
-            openTest_ = i;
+        if (suite.tests[i].id == id && suite.tests[i].state == "not run") {
+            index = i;
             break;
         }
     }
-    if (openTest_ == none) {
+    if (index == none) {
         // Not planned (a repetition, or a suite that did not list it).
         TestView view;
-        view.name = name;
+        view.id = id;
         suite.tests.push_back(std::move(view));
-        openTest_ = suite.tests.size() - 1;
+        index = suite.tests.size() - 1;
     }
-    TestView& test = suite.tests[openTest_];
+    TestView& test = suite.tests[index];
+    test.name = name;
     test.state = "running";
     test.started = std::chrono::steady_clock::now();
+    openTests_.push_back({id, openSuite_, index});
     log("test " + name + " started");
-    publishTest(openSuite_, openTest_);
+    publishTest(openSuite_, index);
 }
 
-void RunView::endTest() {
+void RunView::endTest(std::uint64_t id) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (openSuite_ == none || openTest_ == none) {
+    std::size_t suiteIndex = none;
+    std::size_t index = none;
+    if (!findOpen(id, suiteIndex, index)) {
         return;
     }
-    TestView& test = suites_[openSuite_].tests[openTest_];
+    for (std::size_t i = openTests_.size(); i > 0; --i) {
+        if (openTests_[i - 1].id == id) {
+            openTests_.erase(openTests_.begin() + static_cast<std::ptrdiff_t>(i - 1));
+            break;
+        }
+    }
+    TestView& test = suites_[suiteIndex].tests[index];
     test.state = toString(test.worst);
     test.duration = secondsSince(test.started);
     if (test.worst == TestStatus::Passed) {
@@ -196,15 +218,27 @@ void RunView::endTest() {
         ++counts_[2];
     } else {
         ++counts_[1];
-        suites_[openSuite_].failed = true;
+        suites_[suiteIndex].failed = true;
     }
     log("test " + test.name + " " + test.state);
-    publishTest(openSuite_, openTest_);
-    openTest_ = none;
+    publishTest(suiteIndex, index);
     publishRun();
 }
 
-void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& msg,
+void RunView::renameTest(std::uint64_t id, const std::string& name) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t suiteIndex = none;
+    std::size_t index = none;
+    if (!findOpen(id, suiteIndex, index)) {
+        return;
+    }
+    TestView& test = suites_[suiteIndex].tests[index];
+    log("test " + test.name + " renamed " + name);
+    test.name = name;
+    publishTest(suiteIndex, index);
+}
+
+void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& msg,
                          TestStatus status) {
     std::lock_guard<std::mutex> lock(mutex_);
     Message message;
@@ -220,7 +254,9 @@ void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& m
         }
     }
     log("[" + message.kind + "] " + message.text);
-    if (aboutSuite || openTest_ == none) {
+    std::size_t suiteIndex = none;
+    std::size_t index = none;
+    if (!findOpen(id, suiteIndex, index)) {
         SuiteView& suite = openSuite();
         if (isFailure(status)) {
             suite.failed = true;
@@ -230,21 +266,23 @@ void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& m
         }
         return;
     }
-    TestView& test = suites_[openSuite_].tests[openTest_];
+    TestView& test = suites_[suiteIndex].tests[index];
     if (status > test.worst) {
         test.worst = status;
     }
     if (keep(message, test.messages, test.hiddenReports)) {
-        publishTest(openSuite_, openTest_);
+        publishTest(suiteIndex, index);
     }
 }
 
-void RunView::addOutput(const std::string& text) {
+void RunView::addOutput(std::uint64_t id, const std::string& text) {
     std::lock_guard<std::mutex> lock(mutex_);
-    if (!verbose_ || openSuite_ == none || openTest_ == none) {
+    std::size_t suiteIndex = none;
+    std::size_t index = none;
+    if (!verbose_ || !findOpen(id, suiteIndex, index)) {
         return;
     }
-    TestView& test = suites_[openSuite_].tests[openTest_];
+    TestView& test = suites_[suiteIndex].tests[index];
     if (test.output.size() >= maxOutput) {
         return;
     }
@@ -252,7 +290,7 @@ void RunView::addOutput(const std::string& text) {
     if (test.output.size() >= maxOutput) {
         test.output += "\n[output cut at 64 KiB]\n";
     }
-    publishTest(openSuite_, openTest_);
+    publishTest(suiteIndex, index);
 }
 
 void RunView::close() {
@@ -305,7 +343,8 @@ void RunView::publishSuite(std::size_t index) {
                    {"hiddenReports", suite.hiddenReports},
                    {"tests", Json::array()}}}};
     for (const auto& test : suite.tests) {
-        json["suite"]["tests"].push_back({{"name", test.name},
+        json["suite"]["tests"].push_back({{"id", test.id},
+                                          {"name", test.name},
                                           {"state", test.state},
                                           {"duration", test.duration},
                                           {"messages", toJson(test.messages)},
@@ -321,7 +360,8 @@ void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
                  {"suite", suiteIndex},
                  {"index", index},
                  {"test",
-                  {{"name", test.name},
+                  {{"id", test.id},
+                   {"name", test.name},
                    {"state", test.state},
                    {"duration", test.duration},
                    {"messages", toJson(test.messages)},
@@ -346,7 +386,8 @@ std::string RunView::snapshotJson() const {
     for (const auto& suite : suites_) {
         Json tests = Json::array();
         for (const auto& test : suite.tests) {
-            tests.push_back({{"name", test.name},
+            tests.push_back({{"id", test.id},
+                             {"name", test.name},
                              {"state", test.state},
                              {"duration", test.duration},
                              {"messages", toJson(test.messages)},

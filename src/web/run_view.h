@@ -2,8 +2,8 @@
 // and messages, plus the numbered list of changes the page follows. Thread-safe: the run's
 // thread writes, the server's threads read.
 //
-// Tests are found by position in their suite (the first planned one of that name not run yet),
-// so the model can switch to event ids without changing the page.
+// Tests are found by the id their events carry (Test::getId()), never by name or order: two
+// tests may share a name, and a test may rename itself while it runs.
 #pragma once
 
 #include <chrono>
@@ -26,14 +26,19 @@ public:
     // What the listener feeds in.
     void startRun();
     void endRun();
-    void startSuite(const std::string& name, const std::vector<std::string>& tests);
+    struct Planned {
+        std::uint64_t id;
+        std::string name;
+    };
+    void startSuite(const std::string& name, const std::vector<Planned>& tests);
     void endSuite();
-    void startTest(const std::string& name);
-    void endTest();
-    // A message about the open test (`aboutSuite` false) or the open suite. `status` is the
-    // state it gives (Passed for none).
-    void addMessage(bool aboutSuite, const char* kind, const TestMessage& msg, TestStatus status);
-    void addOutput(const std::string& text);
+    void startTest(std::uint64_t id, const std::string& name);
+    void endTest(std::uint64_t id);
+    void renameTest(std::uint64_t id, const std::string& name);
+    // A message about the running test `id`, else (a suite's id, a fixture) the open suite.
+    // `status` is the state it gives (Passed for none).
+    void addMessage(std::uint64_t id, const char* kind, const TestMessage& msg, TestStatus status);
+    void addOutput(std::uint64_t id, const std::string& text);
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -55,6 +60,7 @@ public:
 
 private:
     struct TestView {
+        std::uint64_t id = 0;
         std::string name;
         std::string state = "not run";  // "not run", "running", or toString(TestStatus)
         TestStatus worst = TestStatus::Passed;
@@ -78,6 +84,8 @@ private:
 
     // All below with mutex_ held.
     SuiteView& openSuite();
+    // Where the running test `id` is; false when none runs with it.
+    bool findOpen(std::uint64_t id, std::size_t& suite, std::size_t& test) const;
     void publishRun();
     void publishSuite(std::size_t suite);
     void publishTest(std::size_t suite, std::size_t test);
@@ -96,7 +104,12 @@ private:
     std::vector<SuiteView> suites_;
     std::vector<std::size_t> openSuites_;  // innermost last
     std::size_t openSuite_ = none;         // where tests go: the innermost open suite
-    std::size_t openTest_ = none;
+    struct OpenTest {
+        std::uint64_t id;
+        std::size_t suite;
+        std::size_t test;
+    };
+    std::vector<OpenTest> openTests_;   // the running ones, innermost last
     std::vector<std::string> changes_;  // change N is changes_[N - 1], as JSON
     std::string log_;
 };

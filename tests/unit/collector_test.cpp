@@ -1,3 +1,7 @@
+#include <memory>
+#include <thread>
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include <robottestingframework/TestResult.h>
@@ -306,4 +310,98 @@ TEST(Collector, ResetForgetsEverythingSoTheCollectorServesANewRun) {
     EXPECT_EQ(c.passedCount(), 1u);
     ASSERT_EQ(c.suites().size(), 1u);
     EXPECT_EQ(c.suites()[0].tests.at(0).name, "b");
+}
+
+TEST(TestId, IsGivenOnceUniqueAndNeverZero) {
+    Named a("same");
+    Named b("same");
+    const std::uint64_t first = a.getId();
+    EXPECT_NE(first, 0u);
+    EXPECT_EQ(a.getId(), first);
+    EXPECT_NE(b.getId(), first);
+}
+
+TEST(TestResultCollector, TwoTestsOfOneNameKeepTheirOwnEvents) {
+    TestResultCollector c;
+    Named first("twin");
+    Named second("twin");
+    c.startTest(&first);
+    c.startTest(&second);
+    c.addFailure(&first, TestMessage("first broke"));  // not the innermost: found by id
+    c.addReport(&second, TestMessage("second said"));
+    c.endTest(&second);
+    c.endTest(&first);
+    const auto& tests = c.suites().at(0).tests;
+    ASSERT_EQ(tests.size(), 2u);
+    EXPECT_EQ(tests[0].id, first.getId());
+    EXPECT_EQ(tests[0].status, TestStatus::Failed);
+    EXPECT_EQ(tests[0].events.at(0).testId, first.getId());
+    EXPECT_EQ(tests[1].id, second.getId());
+    EXPECT_EQ(tests[1].status, TestStatus::Passed);
+    EXPECT_EQ(tests[1].events.at(0).message.getMessage(), "second said");
+    EXPECT_EQ(c.failedCount(), 1u);
+}
+
+TEST(TestResultCollector, ARenameIsAnEventNotTheNameReadLater) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    LambdaTest test("before");
+    test.body = [&test] { test.setName("during"); };
+    test.run(result);
+    EXPECT_EQ(c.suites().at(0).tests.at(0).name, "during");
+    // Not running any more: the record keeps what the events said.
+    test.setName("after");
+    EXPECT_EQ(c.suites().at(0).tests.at(0).name, "during");
+    // The stand-ins of the runner send it themselves.
+    Named standIn("planned");
+    c.startTest(&standIn);
+    standIn.setName("ignored");  // not running as a TestCase: no event
+    result.renameTest(&standIn, "reported");
+    c.endTest(&standIn);
+    EXPECT_EQ(c.suites().at(0).tests.at(1).name, "reported");
+}
+
+TEST(TestResultCollector, SeveralRunsAtOnceInOneProcessStayApart) {
+    auto run = [](const std::string& name, std::vector<std::string>& names, std::size_t& failed) {
+        TestResultCollector collector;
+        TestResult result;
+        result.addListener(&collector);
+        std::vector<std::unique_ptr<LambdaTest>> tests;
+        TestSuite suite(name);
+        for (int i = 0; i < 50; ++i) {
+            tests.push_back(std::make_unique<LambdaTest>("same"));
+            LambdaTest* test = tests.back().get();
+            test->body = [test, name, i] {
+                test->setName(name + std::to_string(i));
+                if (i % 2 == 1) {
+                    test->failed();
+                }
+            };
+            suite.addTest(test);
+        }
+        result.startTestRunner();
+        suite.run(result);
+        result.endTestRunner();
+        for (const TestRecord& record : collector.suites().at(0).tests) {
+            names.push_back(record.name);
+        }
+        failed = collector.failedCount();
+    };
+    std::vector<std::string> left;
+    std::vector<std::string> right;
+    std::size_t leftFailed = 0;
+    std::size_t rightFailed = 0;
+    std::thread one(run, "left", std::ref(left), std::ref(leftFailed));
+    std::thread two(run, "right", std::ref(right), std::ref(rightFailed));
+    one.join();
+    two.join();
+    ASSERT_EQ(left.size(), 50u);
+    ASSERT_EQ(right.size(), 50u);
+    for (int i = 0; i < 50; ++i) {
+        EXPECT_EQ(left[i], "left" + std::to_string(i));
+        EXPECT_EQ(right[i], "right" + std::to_string(i));
+    }
+    EXPECT_EQ(leftFailed, 25u);
+    EXPECT_EQ(rightFailed, 25u);
 }

@@ -28,15 +28,15 @@ std::string changesAfter(const RunView& view, std::uint64_t since, std::uint64_t
 TEST(RunView, PlannedTestsAreNotRunUntilTheyStart) {
     RunView view(false);
     view.startRun();
-    view.startSuite("arm", {"reach", "grasp"});
-    view.startTest("reach");
+    view.startSuite("arm", {{1, "reach"}, {2, "grasp"}});
+    view.startTest(1, "reach");
     EXPECT_EQ(view.statusJson(), R"({"name":"arm","testStatus":[1,0]})");
-    view.addMessage(false, "failure", TestMessage("missed", "by 2 cm", "reach.cpp", 12),
+    view.addMessage(1, "failure", TestMessage("missed", "by 2 cm", "reach.cpp", 12),
                     TestStatus::Failed);
-    view.endTest();
-    view.startTest("grasp");
-    view.addMessage(false, "skipped", TestMessage("no gripper"), TestStatus::Skipped);
-    view.endTest();
+    view.endTest(1);
+    view.startTest(2, "grasp");
+    view.addMessage(2, "skipped", TestMessage("no gripper"), TestStatus::Skipped);
+    view.endTest(2);
     view.endSuite();
     view.endRun();
     EXPECT_EQ(view.statusJson(), R"({"name":"arm","testStatus":[2,0]})");
@@ -53,13 +53,13 @@ TEST(RunView, PlannedTestsAreNotRunUntilTheyStart) {
 
 TEST(RunView, ARepeatedOrUnplannedTestGetsARowOfItsOwn) {
     RunView view(false);
-    view.startSuite("s", {"t"});
+    view.startSuite("s", {{1, "t"}});
     for (int i = 0; i < 2; ++i) {
-        view.startTest("t");
-        view.endTest();
+        view.startTest(1, "t");
+        view.endTest(1);
     }
-    view.startTest("extra");
-    view.endTest();
+    view.startTest(2, "extra");
+    view.endTest(2);
     view.endSuite();
     EXPECT_EQ(view.statusJson(), R"({"name":"s","testStatus":[3,3,3]})");
 }
@@ -67,12 +67,12 @@ TEST(RunView, ARepeatedOrUnplannedTestGetsARowOfItsOwn) {
 TEST(RunView, ChangesAreNumberedAndReplayedAfterANumber) {
     RunView view(false);
     view.startRun();
-    view.startSuite("s", {"t"});
+    view.startSuite("s", {{1, "t"}});
     std::uint64_t last = 0;
     std::string all = changesAfter(view, 0, &last);
     EXPECT_EQ(all.rfind("id: 1\n", 0), 0u) << all;
     EXPECT_NE(all.find("id: " + std::to_string(last) + "\n"), std::string::npos);
-    view.startTest("t");
+    view.startTest(1, "t");
     std::string more = changesAfter(view, last);
     EXPECT_EQ(more.rfind("id: " + std::to_string(last + 1) + "\n", 0), 0u) << more;
     EXPECT_NE(more.find(R"("state":"running")"), std::string::npos) << more;
@@ -83,9 +83,9 @@ TEST(RunView, ChangesAreNumberedAndReplayedAfterANumber) {
 TEST(RunView, TestTextIsEscapedDataAndInvalidUtf8IsReplaced) {
     RunView view(true);
     view.startSuite("</script><img src=x onerror=alert(1)>", {});
-    view.startTest("line\nbreak \"quoted\" \xff");
-    view.addOutput("printed \xc3\x28\n");
-    view.endTest();
+    view.startTest(1, "line\nbreak \"quoted\" \xff");
+    view.addOutput(1, "printed \xc3\x28\n");
+    view.endTest(1);
     view.endSuite();
     std::string stream = changesAfter(view, 0);
     // One line per event: a newline in a name cannot end the event early.
@@ -114,16 +114,15 @@ TEST(RunView, CloseEndsAWaitingReader) {
 
 TEST(RunView, ReportsBeyondTheCapAreCountedButFailuresAlwaysKept) {
     RunView view(false);
-    view.startSuite("s", {"chatty"});
-    view.startTest("chatty");
+    view.startSuite("s", {{1, "chatty"}});
+    view.startTest(1, "chatty");
     for (int i = 0; i < 1000; ++i) {
-        view.addMessage(false, "report", TestMessage("step " + std::to_string(i)),
-                        TestStatus::Passed);
+        view.addMessage(1, "report", TestMessage("step " + std::to_string(i)), TestStatus::Passed);
     }
     std::uint64_t before = 0;
     changesAfter(view, 0, &before);
-    view.addMessage(false, "failure", TestMessage("dropped the cup"), TestStatus::Failed);
-    view.endTest();
+    view.addMessage(1, "failure", TestMessage("dropped the cup"), TestStatus::Failed);
+    view.endTest(1);
     view.endSuite();
     auto chatty = nlohmann::json::parse(view.snapshotJson())["suites"][0]["tests"][0];
     EXPECT_EQ(chatty["messages"].size(), 201u);
@@ -132,4 +131,32 @@ TEST(RunView, ReportsBeyondTheCapAreCountedButFailuresAlwaysKept) {
     EXPECT_EQ(chatty["state"], "failed");
     // Only the kept reports were changes of their own.
     EXPECT_LT(before, 220u);
+}
+
+TEST(RunView, TwoTestsOfOneNameAreToldApartByIdAndARenameIsFollowed) {
+    RunView view(true);
+    view.startSuite("s", {{7, "twin"}, {8, "twin"}});
+    // The second one runs first: the rows follow the ids, not the names or the order.
+    view.startTest(8, "twin");
+    view.addMessage(8, "failure", TestMessage("second broke"), TestStatus::Failed);
+    view.renameTest(8, "renamed");
+    view.addOutput(8, "said by the second\n");
+    view.endTest(8);
+    view.startTest(7, "twin");
+    view.addMessage(99, "report", TestMessage("a fixture"), TestStatus::Passed);
+    view.endTest(7);
+    view.endSuite();
+    EXPECT_EQ(view.statusJson(), R"({"name":"s","testStatus":[3,2]})");
+    auto tests = nlohmann::json::parse(view.snapshotJson())["suites"][0]["tests"];
+    ASSERT_EQ(tests.size(), 2u);
+    EXPECT_EQ(tests[0]["id"], 7);
+    EXPECT_EQ(tests[0]["name"], "twin");
+    EXPECT_EQ(tests[0]["messages"].size(), 0u);
+    EXPECT_EQ(tests[1]["id"], 8);
+    EXPECT_EQ(tests[1]["name"], "renamed");
+    EXPECT_EQ(tests[1]["state"], "failed");
+    EXPECT_EQ(tests[1]["messages"][0]["text"], "second broke");
+    EXPECT_EQ(tests[1]["output"], "said by the second\n");
+    auto suite = nlohmann::json::parse(view.snapshotJson())["suites"][0];
+    EXPECT_EQ(suite["messages"][0]["text"], "a fixture");
 }

@@ -4,6 +4,10 @@
 
 #include <string>
 
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestResultCollector.h>
+
+#include "event_relay.h"
 #include "wire_format.h"
 
 using robottestingframework::ResultEvent;
@@ -146,4 +150,68 @@ TEST(WireFormat, RequestRoundTripsAndRejectsTrailingBytes) {
     EXPECT_FALSE(decodeRequest(bytes + "x", out));
     EXPECT_FALSE(decodeRequest(bytes.substr(0, bytes.size() - 1), out));
     EXPECT_FALSE(decodeRequest("", out));
+}
+
+namespace {
+
+class StandIn : public robottestingframework::Test {
+public:
+    StandIn() : Test("planned name") {}
+    void run(robottestingframework::TestResult&) override {}
+    bool succeeded() const override { return true; }
+};
+
+}  // namespace
+
+TEST(EventRelay, ARenameRecordIsARenameEventAboutTheStandInById) {
+    using robottestingframework::TestResult;
+    using robottestingframework::TestResultCollector;
+    StandIn self;
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    EventRelay relay(self, result);
+    WireRecord start;
+    start.event = ResultEvent::Kind::StartTest;
+    start.name = "planned name";
+    relay.relay(start);
+    WireRecord failure;
+    failure.event = ResultEvent::Kind::Failure;
+    failure.name = "planned name";
+    failure.message = TestMessage("before the rename");
+    relay.relay(failure);
+    WireRecord rename;
+    rename.event = ResultEvent::Kind::Rename;
+    rename.name = "planned name";
+    rename.message = TestMessage("new name");
+    // Through the bytes, as a worker sends it.
+    WireDecoder decoder;
+    decoder.feed(encode(rename));
+    WireRecord decoded;
+    ASSERT_EQ(decoder.next(decoded), WireDecoder::Status::Record);
+    relay.relay(decoded);
+    relay.end("");
+    const auto& test = collector.suites().at(0).tests.at(0);
+    EXPECT_EQ(test.id, self.getId());
+    EXPECT_EQ(test.name, "new name");
+    EXPECT_EQ(test.status, robottestingframework::TestStatus::Failed);
+    EXPECT_EQ(test.events.at(0).testId, self.getId());
+    EXPECT_EQ(self.getName(), "new name");
+}
+
+TEST(EventRelay, ANameDescribedAfterTheStartIsARenameEvent) {
+    using robottestingframework::TestResult;
+    using robottestingframework::TestResultCollector;
+    StandIn self;
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    EventRelay relay(self, result);
+    relay.start();  // the runner may start the test before the worker describes it
+    WireRecord described;
+    described.kind = WireKind::Described;
+    described.name = "the plug-in's own name";
+    relay.relay(described);
+    relay.end("");
+    EXPECT_EQ(collector.suites().at(0).tests.at(0).name, "the plug-in's own name");
 }
