@@ -41,6 +41,9 @@ public:
     virtual void addInterrupted(const Test* /*test*/, TestMessage /*msg*/) {}
     // What the test (or a suite's fixtures) printed on stdout and stderr.
     virtual void addOutput(const Test* /*test*/, const std::string& /*text*/) {}
+    // The test just ended failing and runs again (--retries); the message says which attempt.
+    // Its next startTest/endTest are the same test, not another one.
+    virtual void retryTest(const Test* /*test*/, TestMessage /*msg*/) {}
 };
 
 }  // namespace robottestingframework

@@ -36,6 +36,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg);
     void addInterrupted(const Test* test, TestMessage msg);
     void addOutput(const Test* test, const std::string& text);
+    void retryTest(const Test* test, TestMessage msg);
 
 private:
     std::vector<TestListener*> listeners_;

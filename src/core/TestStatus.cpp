@@ -19,6 +19,8 @@ const char* toString(TestStatus status) {
             return "timed out";
         case TestStatus::Interrupted:
             return "interrupted";
+        case TestStatus::Flaky:
+            return "flaky";
     }
     return "unknown";
 }

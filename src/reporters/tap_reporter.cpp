@@ -93,6 +93,13 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
     Block& block = blocks.back();
     const std::string number = std::to_string(++block.points);
     const std::string name = description(test.name.empty() ? "unnamed test" : test.name);
+    if (test.status == TestStatus::Passed && test.retries > 0) {
+        // Flaky: passed on a later attempt. TAP has no such directive; the YAML says it.
+        block.body += "ok " + number + " - " + name +
+                      "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) +
+                      "\n  ...\n";
+        return;
+    }
     if (!isFailure(test.status)) {
         block.body += "ok " + number + " - " + name;
         if (test.status == TestStatus::Skipped) {
@@ -164,7 +171,11 @@ void TapReporter::endTestSuite(const TestSuite* /*suite*/) {
 }
 
 void TapReporter::startTest(const Test* test) {
-    OpenTest open{test, test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}};
+    OpenTest open{test, test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}, 0};
+    if (test != nullptr && test == retrying_) {
+        open.retries = retryCount_;
+    }
+    retrying_ = nullptr;
     open_.push_back(std::move(open));
 }
 
@@ -176,6 +187,12 @@ void TapReporter::endTest(const Test* test) {
             if (test != nullptr) {
                 done.name = test->getName();  // a test may rename itself while it runs
             }
+            last_ = {test,
+                     blocks_.size(),
+                     blocks_.back().body.size(),
+                     blocks_.back().points,
+                     blocks_.back().failed,
+                     done.retries};
             closeTest(blocks_, done);
             return;
         }
@@ -220,6 +237,20 @@ void TapReporter::addTimeout(const Test* test, TestMessage msg) {
 void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
     note(Kind::Interrupted, test, msg);
 }
+void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
+    if (test == nullptr || last_.test != test || blocks_.size() != last_.depth) {
+        return;
+    }
+    // The failed attempt's point is taken back: the test gets one point, its last attempt's.
+    Block& block = blocks_.back();
+    block.body.resize(last_.bodySize);
+    block.points = last_.points;
+    block.failed = last_.failed;
+    retrying_ = test;
+    retryCount_ = last_.retries + 1;
+    last_ = LastPoint();
+}
+
 void TapReporter::addOutput(const Test* test, const std::string& text) {
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->test == test) {

@@ -125,7 +125,9 @@ void RunPlan::addSuite(SuiteSpec spec) {
         fixtures_.push_back(std::move(manager));
     }
     for (const auto& test : owned.tests) {
-        suite.addTest(&tests_.emplace_back(test, executor_));
+        PluginTest& stand = tests_.emplace_back(test, executor_);
+        stand.setRetries(retries_);
+        suite.addTest(&stand);
     }
     runner_.addTest(&suite);
 }

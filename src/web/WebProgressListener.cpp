@@ -118,6 +118,10 @@ void WebProgressListener::addOutput(const Test* test, const std::string& text) {
     }
 }
 
+void WebProgressListener::retryTest(const Test* /*test*/, TestMessage /*msg*/) {
+    state_->view.retryTest();
+}
+
 void WebProgressListener::startTest(const Test* test) {
     state_->view.startTest(test != nullptr ? test->getName() : std::string());
 }

@@ -188,8 +188,11 @@ void RunView::endTest() {
         return;
     }
     TestView& test = suites_[openSuite_].tests[openTest_];
-    test.state = toString(test.worst);
+    test.state = test.retries > 0 && test.worst == TestStatus::Passed ? toString(TestStatus::Flaky)
+                                                                      : toString(test.worst);
     test.duration = secondsSince(test.started);
+    endedSuite_ = openSuite_;
+    endedTest_ = openTest_;
     if (test.worst == TestStatus::Passed) {
         ++counts_[0];
     } else if (test.worst == TestStatus::Skipped) {
@@ -202,6 +205,30 @@ void RunView::endTest() {
     publishTest(openSuite_, openTest_);
     openTest_ = none;
     publishRun();
+}
+
+void RunView::retryTest() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (endedSuite_ >= suites_.size() || endedTest_ >= suites_[endedSuite_].tests.size()) {
+        return;
+    }
+    SuiteView& suite = suites_[endedSuite_];
+    TestView& test = suite.tests[endedTest_];
+    // The failed attempt no longer counts; its messages stay, to show what happened.
+    if (isFailure(test.worst) && counts_[1] > 0) {
+        --counts_[1];
+        suite.failed = false;
+        for (const TestView& other : suite.tests) {
+            suite.failed = suite.failed || (&other != &test && other.state != "not run" &&
+                                            other.state != "running" && other.state != "passed" &&
+                                            other.state != "skipped" && other.state != "flaky");
+        }
+    }
+    test.worst = TestStatus::Passed;
+    test.state = "not run";  // its next startTest finds it again
+    ++test.retries;
+    endedSuite_ = none;
+    endedTest_ = none;
 }
 
 void RunView::addMessage(bool aboutSuite, const char* kind, const TestMessage& msg,

@@ -34,6 +34,9 @@ public:
     // state it gives (Passed for none).
     void addMessage(bool aboutSuite, const char* kind, const TestMessage& msg, TestStatus status);
     void addOutput(const std::string& text);
+    // The test that just ended failing runs again (--retries): it is open again at its next
+    // startTest, and flaky if that attempt passes.
+    void retryTest();
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -63,6 +66,7 @@ private:
         std::vector<Message> messages;
         std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
         std::string output;
+        std::size_t retries = 0;  // earlier failed attempts
     };
     struct SuiteView {
         std::string name;
@@ -97,6 +101,8 @@ private:
     std::vector<std::size_t> openSuites_;  // innermost last
     std::size_t openSuite_ = none;         // where tests go: the innermost open suite
     std::size_t openTest_ = none;
+    std::size_t endedSuite_ = none;  // the test that ended last, which a retry reopens
+    std::size_t endedTest_ = none;
     std::vector<std::string> changes_;  // change N is changes_[N - 1], as JSON
     std::string log_;
 };
