@@ -184,3 +184,15 @@ def test_fail_fast_waits_for_the_last_attempt(tmp_path):
                    "--retries", "1", "--fail-fast")
     assert r.returncode == 0, r
     assert steady_count.read_text().strip() == "1", r
+
+
+def test_flaky_is_its_own_state_on_the_console_and_in_html(tmp_path):
+    flaky, _ = counting_script(tmp_path, "flaky", 1)
+    html = tmp_path / "r.html"
+    r = run_runner("--suite", suite_of(tmp_path, [("flaky", flaky)]), "--retries", "1",
+                   "-o", f"html:{html}")
+    assert r.returncode == 0, r
+    assert "FLAKY" in r.stdout and "1 flaky" in r.stdout, r
+    assert "retry: attempt 1 of 2 failed" in r.stdout, r
+    page = html.read_text()
+    assert '"state":"flaky"' in page and '"flaky":1' in page
