@@ -40,6 +40,7 @@ public:
     void endTestRunner() override;
     void addCheck(const Test* test, TestMessage msg, bool passed) override;
     void addSkipped(const Test* test, TestMessage reason) override;
+    void retryTest(const Test* test, TestMessage msg) override;
     void addCrash(const Test* test, TestMessage msg) override;
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;

@@ -44,6 +44,9 @@ public:
     // The running test now goes by `name` (a script calling setName). Listeners that show
     // names follow this, never the test object's name read later.
     virtual void renameTest(const Test* /*test*/, const std::string& /*name*/) {}
+    // The test just ended failing and runs again (--retries); the message says which attempt.
+    // Its next startTest/endTest are the same test, not another one.
+    virtual void retryTest(const Test* /*test*/, TestMessage /*msg*/) {}
 };
 
 }  // namespace robottestingframework

@@ -37,6 +37,7 @@ public:
     void addInterrupted(const Test* test, TestMessage msg);
     void addOutput(const Test* test, const std::string& text);
     void renameTest(const Test* test, const std::string& name);
+    void retryTest(const Test* test, TestMessage msg);
 
 private:
     std::vector<TestListener*> listeners_;

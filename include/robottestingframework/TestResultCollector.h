@@ -13,6 +13,14 @@
 
 namespace robottestingframework {
 
+// One failed attempt of a test that ran again (--retries).
+struct TestAttempt {
+    TestStatus status = TestStatus::Failed;
+    TestMessage message;  // what decided its state, if anything did
+    std::string output;   // what it printed
+    double duration = 0;  // seconds
+};
+
 // One test as the outputs show it.
 struct TestRecord {
     std::uint64_t id = 0;  // the test's Test::getId()
@@ -23,6 +31,9 @@ struct TestRecord {
     double duration = 0;              // seconds
     std::vector<ResultEvent> events;  // its reports, checks, failures, errors, ... in order
     std::string output;               // what it printed
+    // The earlier failed attempts, oldest first, when the test ran again (--retries); the
+    // state, events and output above are the last attempt's, start and duration all of them.
+    std::vector<TestAttempt> attempts;
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
 };
@@ -95,6 +106,7 @@ public:
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
+    void retryTest(const Test* test, TestMessage msg) override;
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by
@@ -123,13 +135,15 @@ private:
     // A suite between its startTestSuite and endTestSuite; `failed` survives dropped records.
     struct OpenSuite {
         std::size_t index;
-        bool failed;
+        std::size_t failed;  // how many of its tests failed (a retry takes one back)
     };
-    std::vector<OpenSuite> openSuites_;  // innermost last
-    std::vector<OpenTest> openTests_;    // innermost last
-    std::size_t looseSuite_ = none;      // the unnamed record of tests run outside a suite
+    std::vector<OpenSuite> openSuites_;           // innermost last
+    std::vector<OpenTest> openTests_;             // innermost last
+    OpenTest lastEnded_{0, nullptr, none, none};  // the record a retry goes on with
+    OpenTest retrying_{0, nullptr, none, none};   // the record the next startTest reopens
+    std::size_t looseSuite_ = none;               // the unnamed record of tests run outside a suite
     // Counts survive setKeepEvents(false), which drops finished records.
-    std::size_t counts_[7] = {};
+    std::size_t counts_[8] = {};
     std::size_t suitesRun_ = 0;
     std::size_t suitesFailed_ = 0;
 };

@@ -56,6 +56,7 @@ public:
     void addTimeout(const Test* test, TestMessage msg) override;
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
+    void retryTest(const Test* test, TestMessage msg) override;
 
 private:
     struct State;

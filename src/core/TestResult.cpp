@@ -76,6 +76,10 @@ void TestResult::addTimeout(const Test* test, TestMessage msg) {
     RTF_DISPATCH(addTimeout(test, msg))
 }
 
+void TestResult::retryTest(const Test* test, TestMessage msg) {
+    RTF_DISPATCH(retryTest(test, msg))
+}
+
 void TestResult::addInterrupted(const Test* test, TestMessage msg) {
     RTF_DISPATCH(addInterrupted(test, msg))
 }

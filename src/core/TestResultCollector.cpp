@@ -60,6 +60,8 @@ void TestResultCollector::reset() {
     suites_.clear();
     openSuites_.clear();
     openTests_.clear();
+    lastEnded_ = {0, nullptr, none, none};
+    retrying_ = {0, nullptr, none, none};
     looseSuite_ = none;
     std::fill(std::begin(counts_), std::end(counts_), 0);
     suitesRun_ = 0;
@@ -95,7 +97,7 @@ std::size_t TestResultCollector::skippedCount() const {
 }
 
 std::size_t TestResultCollector::failedCount() const {
-    return testCount() - passedCount() - skippedCount();
+    return testCount() - passedCount() - skippedCount() - countOf(TestStatus::Flaky);
 }
 
 std::size_t TestResultCollector::suiteCount() const {
@@ -211,11 +213,52 @@ void TestResultCollector::renameTest(const Test* test, const std::string& name) 
     }
 }
 
+void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
+    if (test == nullptr || lastEnded_.id != test->getId() || lastEnded_.suite >= suites_.size() ||
+        lastEnded_.index >= suites_[lastEnded_.suite].tests.size()) {
+        return;
+    }
+    if (keepEvents_ && keepLog_) {
+        events_.push_back(makeEvent(Kind::Report, test, msg, true, now()));
+    }
+    // The failed attempt stops counting: the test's state is its last attempt's.
+    TestRecord& record = suites_[lastEnded_.suite].tests[lastEnded_.index];
+    --counts_[static_cast<std::size_t>(record.status)];
+    if (isFailure(record.status)) {
+        for (OpenSuite& suite : openSuites_) {
+            if (suite.index == lastEnded_.suite && suite.failed > 0) {
+                --suite.failed;
+            }
+        }
+    }
+    TestAttempt attempt;
+    attempt.status = record.status;
+    if (const ResultEvent* reason = record.reason()) {
+        attempt.message = reason->message;
+    }
+    attempt.output = std::move(record.output);
+    attempt.duration = record.duration;
+    record.attempts.push_back(std::move(attempt));
+    record.status = TestStatus::Passed;
+    record.events.clear();
+    record.output.clear();
+    retrying_ = lastEnded_;
+    lastEnded_ = {0, nullptr, none, none};
+}
+
 void TestResultCollector::startTest(const Test* test) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
         events_.push_back(makeEvent(Kind::StartTest, test, TestMessage(), true, time));
     }
+    if (test != nullptr && retrying_.id != 0 && retrying_.id == test->getId()) {
+        OpenTest reopened = retrying_;
+        reopened.test = test;
+        openTests_.push_back(reopened);  // the same record, one attempt more
+        retrying_ = {0, nullptr, none, none};
+        return;
+    }
+    retrying_ = {0, nullptr, none, none};
     SuiteRecord& suite = currentSuite();
     if (!keepEvents_ && openTests_.empty()) {
         suite.tests.clear();  // only the test being run is kept
@@ -245,17 +288,21 @@ void TestResultCollector::endTest(const Test* test) {
         }
         TestRecord& record = suites_[open.suite].tests[open.index];
         record.duration = time - record.start;
+        if (!record.attempts.empty() && record.status == TestStatus::Passed) {
+            record.status = TestStatus::Flaky;
+        }
         ++counts_[static_cast<std::size_t>(record.status)];
         if (isFailure(record.status)) {
             for (OpenSuite& suite : openSuites_) {
                 if (suite.index == open.suite) {
-                    suite.failed = true;
+                    ++suite.failed;
                 }
             }
         }
         if (open.suite == looseSuite_) {
             suites_[open.suite].duration = time - suites_[open.suite].start;
         }
+        lastEnded_ = open;
         openTests_.erase(openTests_.begin() + static_cast<std::ptrdiff_t>(i - 1), openTests_.end());
         break;
     }
@@ -282,7 +329,7 @@ void TestResultCollector::startTestSuite(const TestSuite* suite) {
         }
     }
     record.start = time;
-    openSuites_.push_back({suites_.size() - 1, false});
+    openSuites_.push_back({suites_.size() - 1, 0});
 }
 
 void TestResultCollector::endTestSuite(const TestSuite* suite) {
@@ -296,7 +343,7 @@ void TestResultCollector::endTestSuite(const TestSuite* suite) {
     SuiteRecord& record = suites_[openSuites_.back().index];
     record.duration = time - record.start;
     ++suitesRun_;
-    if (openSuites_.back().failed || !record.succeeded()) {
+    if (openSuites_.back().failed > 0 || !record.succeeded()) {
         ++suitesFailed_;
     }
     openSuites_.pop_back();

@@ -20,6 +20,7 @@ constexpr StateWords stateWords[] = {
     {TestStatus::Crashed, "crashed", "CRASHED"},
     {TestStatus::TimedOut, "timed out", "TIMED OUT"},
     {TestStatus::Interrupted, "interrupted", "INTERRUPTED"},
+    {TestStatus::Flaky, "flaky", "FLAKY"},
 };
 
 const StateWords* wordsOf(TestStatus status) {

@@ -113,6 +113,11 @@ void ConsoleListener::addSkipped(const Test* test, TestMessage reason) {
     }
 }
 
+void ConsoleListener::retryTest(const Test* test, TestMessage msg) {
+    record_.retryTest(test, msg);
+    message("retry", yellow, msg);
+}
+
 void ConsoleListener::addCrash(const Test* test, TestMessage msg) {
     record_.addCrash(test, msg);
     if (printNow(test)) {

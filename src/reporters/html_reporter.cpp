@@ -91,9 +91,9 @@ const char* const tail = R"html(</script>
     if (text !== undefined) node.textContent = text;
     return node;
   };
-  const failing = (s) => s !== "passed" && s !== "skipped";
+  const failing = (s) => s !== "passed" && s !== "skipped" && s !== "flaky";
   const colour = (s) => s === "passed" ? "passed" : s === "skipped" ? "skipped" :
-      s === "interrupted" ? "other" : "failing";
+      s === "interrupted" || s === "flaky" ? "other" : "failing";
   const secs = (d) => d.toFixed(3) + " s";
 
   // Theme: the system's unless chosen.
@@ -109,7 +109,8 @@ const char* const tail = R"html(</script>
   // Summary and bar.
   document.getElementById("when").textContent = data.started + " \u00b7 " + secs(data.duration);
   const counts = document.getElementById("counts");
-  const order = ["passed", "failed", "error", "crashed", "timed out", "interrupted", "skipped"];
+  const order = ["passed", "flaky", "failed", "error", "crashed", "timed out", "interrupted",
+                 "skipped"];
   const total = data.counts.total;
   counts.appendChild(el("span", "", total + " tests"));
   const bar = document.getElementById("bar");
@@ -312,7 +313,7 @@ std::string HtmlReporter::document() {
     out += ",\"counts\":{\"total\":" + std::to_string(collector_.testCount());
     for (TestStatus status :
          {TestStatus::Passed, TestStatus::Skipped, TestStatus::Failed, TestStatus::Error,
-          TestStatus::Crashed, TestStatus::TimedOut, TestStatus::Interrupted}) {
+          TestStatus::Crashed, TestStatus::TimedOut, TestStatus::Interrupted, TestStatus::Flaky}) {
         out +=
             "," + jsonString(toString(status)) + ":" + std::to_string(collector_.countOf(status));
     }

@@ -18,6 +18,7 @@ using Kind = ResultEvent::Kind;
 const char* ctrfStatus(TestStatus status) {
     switch (status) {
         case TestStatus::Passed:
+        case TestStatus::Flaky:  // CTRF: passed, with "flaky": true
             return "passed";
         case TestStatus::Skipped:
             return "skipped";
@@ -99,13 +100,26 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
     if (!test.output.empty()) {
         out += ",\"stdout\":" + lines(test.output);
     }
-    out += ",\"retries\":0,\"flaky\":false";
+    out += ",\"retries\":" + std::to_string(test.attempts.size());
+    out += std::string(",\"flaky\":") + (test.status == TestStatus::Flaky ? "true" : "false");
     out += ",\"extra\":{\"rtf\":{\"state\":" + jsonString(toString(test.status));
     if (!test.description.empty()) {
         out += ",\"description\":" + jsonString(test.description);
     }
     if (test.status == TestStatus::Error || test.status == TestStatus::Crashed) {
         out += ",\"error\":true";
+    }
+    if (!test.attempts.empty()) {
+        // The earlier failed attempts (--retries), oldest first.
+        out += ",\"attempts\":[";
+        for (std::size_t i = 0; i < test.attempts.size(); ++i) {
+            const TestAttempt& attempt = test.attempts[i];
+            out += std::string(i == 0 ? "" : ",") +
+                   "{\"state\":" + jsonString(toString(attempt.status)) +
+                   ",\"message\":" + jsonString(attempt.message.toString()) +
+                   ",\"duration\":" + std::to_string(milliseconds(attempt.duration)) + "}";
+        }
+        out += "]";
     }
     if (const ResultEvent* reason = test.reason()) {
         if (test.status == TestStatus::Crashed) {
@@ -143,7 +157,8 @@ std::string JsonReporter::document() {
     out += ",\"generatedBy\":\"robottestingframework-testrunner\"";
     out += ",\"results\":{\"tool\":{\"name\":\"robottestingframework-testrunner\"}";
     out += ",\"summary\":{\"tests\":" + std::to_string(collector_.testCount());
-    out += ",\"passed\":" + std::to_string(collector_.passedCount());
+    out += ",\"passed\":" +
+           std::to_string(collector_.passedCount() + collector_.countOf(TestStatus::Flaky));
     out += ",\"failed\":" + std::to_string(collector_.failedCount() - other);
     out += ",\"skipped\":" + std::to_string(collector_.skippedCount());
     out += ",\"pending\":0,\"other\":" + std::to_string(other);
@@ -156,6 +171,7 @@ std::string JsonReporter::document() {
         out += (status == TestStatus::Failed ? "" : ",") + jsonString(toString(status)) + ":" +
                std::to_string(collector_.countOf(status));
     }
+    out += ",\"flaky\":" + std::to_string(collector_.countOf(TestStatus::Flaky));
     out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount()) + "}}}";
     out += ",\"tests\":[";
     bool first = true;

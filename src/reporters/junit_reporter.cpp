@@ -184,6 +184,22 @@ void appendTestCase(std::string& out, const TestRecord& test, const std::string&
         inner += "      <failure" + attr("message", message) + attr("type", "failure") + ">" +
                  escape(problems(test.events), false) + "</failure>\n";
     }
+    // Earlier failed attempts (--retries), as Maven Surefire writes them: inside the one
+    // <testcase>, flakyFailure when the last attempt passed, rerunFailure when it did not.
+    const char* attemptElement = test.status == TestStatus::Flaky ? "flakyFailure" : "rerunFailure";
+    if (test.status == TestStatus::Flaky || isErrorState(test.status) ||
+        test.status == TestStatus::Failed) {
+        for (const TestAttempt& attempt : test.attempts) {
+            inner += std::string("      <") + attemptElement +
+                     attr("message", attempt.message.toString()) +
+                     attr("type", toString(attempt.status)) + ">" +
+                     escape(messageText(attempt.message), false);
+            if (!attempt.output.empty()) {
+                inner += "<system-out>" + escape(attempt.output, false) + "</system-out>";
+            }
+            inner += std::string("</") + attemptElement + ">\n";
+        }
+    }
     const std::string output = systemOut(test.events, test.output, verbose);
     if (!output.empty()) {
         inner += "      <system-out>" + escape(output, false) + "</system-out>\n";

@@ -48,7 +48,7 @@ std::vector<std::string> summaryLines(const TestResultCollector& collector) {
     std::vector<std::string> lines;
     std::string tests = "  tests:  " + std::to_string(collector.testCount());
     std::string states;
-    for (int s = 0; s <= static_cast<int>(TestStatus::Interrupted); ++s) {
+    for (int s = 0; s <= static_cast<int>(TestStatus::Flaky); ++s) {
         const auto status = static_cast<TestStatus>(s);
         const std::size_t count = collector.countOf(status);
         if (count > 0) {
@@ -73,6 +73,9 @@ std::string closingLine(const TestResultCollector& collector) {
                        std::to_string(collector.failedCount()) + " failed";
     if (collector.skippedCount() > 0) {
         line += ", " + std::to_string(collector.skippedCount()) + " skipped";
+    }
+    if (collector.countOf(TestStatus::Flaky) > 0) {
+        line += ", " + std::to_string(collector.countOf(TestStatus::Flaky)) + " flaky";
     }
     return line;
 }

@@ -97,6 +97,13 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
     Block& block = blocks.back();
     const std::string number = std::to_string(++block.points);
     const std::string name = description(test.name.empty() ? "unnamed test" : test.name);
+    if (test.status == TestStatus::Passed && test.retries > 0) {
+        // Flaky: passed on a later attempt. TAP has no such directive; the YAML says it.
+        block.body += "ok " + number + " - " + name +
+                      "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) +
+                      "\n  ...\n";
+        return;
+    }
     if (!isFailure(test.status)) {
         block.body += "ok " + number + " - " + name;
         if (test.status == TestStatus::Skipped) {
@@ -177,7 +184,12 @@ void TapReporter::renameTest(const Test* test, const std::string& name) {
 }
 
 void TapReporter::startTest(const Test* test) {
-    OpenTest open{idOf(test), test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {}};
+    OpenTest open{idOf(test), test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {},
+                  0};
+    if (test != nullptr && retrying_ != 0 && idOf(test) == retrying_) {
+        open.retries = retryCount_;
+    }
+    retrying_ = 0;
     open_.push_back(std::move(open));
 }
 
@@ -186,6 +198,12 @@ void TapReporter::endTest(const Test* test) {
         if (open_[i - 1].id == idOf(test)) {
             OpenTest done = std::move(open_[i - 1]);
             open_.erase(open_.begin() + static_cast<std::ptrdiff_t>(i - 1));
+            last_ = {done.id,
+                     blocks_.size(),
+                     blocks_.back().body.size(),
+                     blocks_.back().points,
+                     blocks_.back().failed,
+                     done.retries};
             closeTest(blocks_, done);
             return;
         }
@@ -230,6 +248,21 @@ void TapReporter::addTimeout(const Test* test, TestMessage msg) {
 void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
     note(Kind::Interrupted, test, msg);
 }
+void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
+    if (test == nullptr || last_.id == 0 || last_.id != idOf(test) ||
+        blocks_.size() != last_.depth) {
+        return;
+    }
+    // The failed attempt's point is taken back: the test gets one point, its last attempt's.
+    Block& block = blocks_.back();
+    block.body.resize(last_.bodySize);
+    block.points = last_.points;
+    block.failed = last_.failed;
+    retrying_ = last_.id;
+    retryCount_ = last_.retries + 1;
+    last_ = LastPoint();
+}
+
 void TapReporter::addOutput(const Test* test, const std::string& text) {
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->id == idOf(test)) {

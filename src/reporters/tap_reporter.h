@@ -32,6 +32,7 @@ public:
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
+    void retryTest(const Test* test, TestMessage msg) override;
 
 private:
     // A suite being written: its test points so far (unindented; indented when it closes).
@@ -49,7 +50,20 @@ private:
         TestStatus status = TestStatus::Passed;
         TestMessage reason;  // the first message of the state it has now
         std::string output;
+        std::size_t retries = 0;  // earlier failed attempts (--retries)
     };
+    // The point last written, so that a retry can take it back: one point per test.
+    struct LastPoint {
+        std::uint64_t id = 0;  // the test's id; 0 for none
+        std::size_t depth = 0;
+        std::size_t bodySize = 0;
+        std::size_t points = 0;
+        bool failed = false;
+        std::size_t retries = 0;
+    };
+    LastPoint last_;
+    std::uint64_t retrying_ = 0;  // the id of the test whose next start is a retry; 0 for none
+    std::size_t retryCount_ = 0;
 
     void note(ResultEvent::Kind kind, const Test* test, const TestMessage& msg);
     static void closeTest(std::vector<Block>& blocks, const OpenTest& test);

@@ -25,6 +25,7 @@
 #include "process.h"
 #include "process_tree.h"
 #include "reporter_registry.h"
+#include "rerun_report.h"
 #include "run_gate.h"
 #include "run_plan.h"
 #include "signal_pipe.h"
@@ -71,6 +72,7 @@ public:
         }
         return received_;
     }
+    bool interrupted() const { return received_ != 0; }
 
 private:
     void watch(RunPlan& plan, std::FILE* console) {
@@ -207,6 +209,25 @@ int main(int argc, char** argv) {
         }
     }
 
+    if (!options.rerunFailed.empty()) {
+        std::vector<FailedTest> failed;
+        try {
+            failed = readFailedTests(options.rerunFailed);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: %s\n", program, e.what());
+            return configurationError;
+        }
+        if (failed.empty()) {
+            std::fprintf(stdout, "%s: %s has no failed test: nothing to rerun\n", program,
+                         options.rerunFailed.c_str());
+            return allPassed;
+        }
+        keepFailedTests(suites, failed);
+        if (suites.empty()) {
+            std::fprintf(stderr, "%s: warning: no test of this run is one that failed in %s\n",
+                         program, options.rerunFailed.c_str());
+        }
+    }
     if (!options.selection.empty()) {
         applySelection(suites, options.selection);
         if (suites.empty()) {
@@ -257,6 +278,7 @@ int main(int argc, char** argv) {
     }
     RunPlan plan(*executor);
     plan.gate().setFailFast(options.failFast);
+    plan.setRetries(options.retries);
     for (auto& suite : suites) {
         applyOverrides(suite, overrides);
         plan.addSuite(std::move(suite));
@@ -331,7 +353,23 @@ int main(int argc, char** argv) {
             writeOutputs(outputs, capture.console());
         };
         InterruptWatcher watcher(plan, capture.console(), quit);
-        plan.runner().run(result);
+        // --repeat-until-fail N: the whole selection again, until a round fails (each round
+        // is in the outputs, one after the other).
+        const unsigned int rounds = options.repeatUntilFail == 0 ? 1 : options.repeatUntilFail;
+        for (unsigned int round = 1; round <= rounds; ++round) {
+            if (rounds > 1) {
+                std::fprintf(capture.console(), "%s: round %u of %u\n", program, round, rounds);
+                std::fflush(capture.console());
+            }
+            plan.runner().run(result);
+            if (watcher.interrupted() || anythingFailed(collector)) {
+                if (rounds > 1 && !watcher.interrupted()) {
+                    std::fprintf(capture.console(), "%s: round %u failed; stopping\n", program,
+                                 round);
+                }
+                break;
+            }
+        }
         interrupted = watcher.stop();
     }
     capture.stop();
@@ -340,6 +378,9 @@ int main(int argc, char** argv) {
     }
 
     int status = anythingFailed(collector) ? somethingFailed : allPassed;
+    if (options.failOnFlaky && collector.countOf(TestStatus::Flaky) > 0) {
+        status = somethingFailed;
+    }
     if (interrupted != 0) {
         status = interruptedBy(interrupted);
     }

@@ -40,6 +40,22 @@ std::string checkRepetition(const std::string& text, unsigned int& value) {
     return {};
 }
 
+std::string checkRetries(const std::string& text, unsigned int& value) {
+    const std::string digits = trim(text);
+    const bool whole = !digits.empty() && std::all_of(digits.begin(), digits.end(),
+                                                      [](char c) { return c >= '0' && c <= '9'; });
+    if (!whole) {
+        return "is not a whole number of retries from 0 to " + std::to_string(maxRetries);
+    }
+    errno = 0;
+    const unsigned long long number = std::strtoull(digits.c_str(), nullptr, 10);
+    if (errno == ERANGE || number > maxRetries) {
+        return "is too large: at most " + std::to_string(maxRetries) + " retries";
+    }
+    value = static_cast<unsigned int>(number);
+    return {};
+}
+
 std::string checkSeconds(const std::string& text, double& value) {
     const std::string number = trim(text);
     char* end = nullptr;

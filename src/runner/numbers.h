@@ -16,6 +16,12 @@ constexpr unsigned long maxRepetition = 1000000000UL;
 // 0 already says "no limit", and a clock cannot wait that long.
 constexpr double maxTimeoutSeconds = 1000000;
 
+// The most extra attempts of a failing test (--retries): enough for any flaky test.
+constexpr unsigned long maxRetries = 100UL;
+
+// A whole number of extra attempts, 0 to maxRetries.
+std::string checkRetries(const std::string& text, unsigned int& value);
+
 // A whole number of runs, 1 to maxRepetition.
 std::string checkRepetition(const std::string& text, unsigned int& value);
 

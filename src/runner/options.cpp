@@ -156,6 +156,21 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                                              std::to_string(static_cast<long>(maxTimeoutSeconds))));
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
+    app.add_option("--retries", options.retries,
+                   "Run a failing test again up to N times; one that passes on a later attempt "
+                   "is flaky (default 0)")
+        ->type_name("N")
+        ->check(numberRule(checkRetries, "from 0 to " + std::to_string(maxRetries)));
+    app.add_flag("--fail-on-flaky", options.failOnFlaky,
+                 "A flaky test fails the run (exit status 1)");
+    app.add_option("--rerun-failed", options.rerunFailed,
+                   "Run only the tests that failed, errored, crashed or timed out in REPORT, a "
+                   "JUnit or JSON output of an earlier run")
+        ->type_name("REPORT");
+    app.add_option("--repeat-until-fail", options.repeatUntilFail,
+                   "Run the selection up to N times, stopping after the first run that fails")
+        ->type_name("N")
+        ->check(numberRule(checkRepetition, "from 1 to " + std::to_string(maxRepetition)));
     takeAll(app.add_option("--var", variables,
                            "Set the variable NAME, used as ${NAME} in suites, test files and "
                            "world files; wins over --var-file and the files' own (repeatable)")

@@ -38,6 +38,10 @@ struct Options {
     std::string isolation = "process";  // --isolation process|none
     double timeout = 0;                 // --timeout SECONDS for every test; 0: none
     bool failFast = false;              // --fail-fast: the first failure stops the run
+    unsigned int retries = 0;           // --retries N: a failing test runs again up to N times
+    bool failOnFlaky = false;           // --fail-on-flaky: a flaky test fails the run
+    unsigned int repeatUntilFail = 0;   // --repeat-until-fail N; 0: not given (once)
+    std::string rerunFailed;            // --rerun-failed REPORT: only the tests it says failed
     std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
     std::vector<std::string> variableFiles;                      // --var-file FILE
     bool list = false;                                           // --list: print, run nothing

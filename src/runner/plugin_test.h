@@ -3,6 +3,8 @@
 // so nothing outside the executor ever holds a pointer to it.
 #pragma once
 
+#include <atomic>
+
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestStatus.h>
 
@@ -16,6 +18,9 @@ class PluginTest : public Test {
 public:
     // `spec` and `executor` must outlive the stand-in.
     PluginTest(const TestSpec& spec, TestExecutor& executor);
+
+    // A test that fails runs again up to `retries` times (--retries); 0: once.
+    void setRetries(unsigned int retries) { retries_ = retries; }
 
     void run(TestResult& result) override;
     void interrupt() override;
@@ -34,6 +39,8 @@ private:
     TestExecutor& executor_;
     TestStatus status_ = TestStatus::Passed;
     bool ran_ = false;
+    unsigned int retries_ = 0;
+    std::atomic<bool> interrupted_{false};
 };
 
 }  // namespace runner

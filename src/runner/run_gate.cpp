@@ -154,6 +154,15 @@ void RunGate::tripped(const Test* test) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (firstFailure_.empty()) {
         firstFailure_ = test != nullptr && !test->getName().empty() ? test->getName() : "a test";
+        firstFailing_ = test;
+    }
+}
+
+void RunGate::retryTest(const Test* test, TestMessage) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (test != nullptr && firstFailing_ == test) {
+        firstFailure_.clear();
+        firstFailing_ = nullptr;
     }
 }
 
@@ -188,7 +197,7 @@ bool RunGate::skip(const Test* test, TestMessage& reason) {
                 continue;  // not yet run, or skipped before running: looked at below
             }
             ran = true;
-            if (other.status() != TestStatus::Passed) {
+            if (other.status() != TestStatus::Passed && other.status() != TestStatus::Flaky) {
                 reason = TestMessage(
                     "skipped: depends on " + dependency + ", which " +
                     (other.status() == TestStatus::Skipped

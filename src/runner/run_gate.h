@@ -46,6 +46,8 @@ public:
     void addError(const Test* test, TestMessage) override { tripped(test); }
     void addCrash(const Test* test, TestMessage) override { tripped(test); }
     void addTimeout(const Test* test, TestMessage) override { tripped(test); }
+    // A test run again (--retries) has not failed yet: only its last attempt counts.
+    void retryTest(const Test* test, TestMessage) override;
 
 private:
     void tripped(const Test* test);
@@ -54,6 +56,7 @@ private:
     bool failFast_ = false;
     std::mutex mutex_;          // a test's helper threads may report too
     std::string firstFailure_;  // empty until something failed
+    const Test* firstFailing_ = nullptr;
 };
 
 }  // namespace runner

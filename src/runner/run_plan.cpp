@@ -128,6 +128,7 @@ void RunPlan::addSuite(SuiteSpec spec) {
     for (const auto& test : owned.tests) {
         PluginTest& planned = tests_.emplace_back(test, executor_);
         planned.getId();
+        planned.setRetries(retries_);
         suite.addTest(&planned);
     }
     runner_.addTest(&suite);

@@ -51,6 +51,8 @@ public:
     // Adds a suite to run after the ones already added. Its fixtures are made now; one that
     // cannot be made fails the suite's set-up with the reason when the suite runs.
     void addSuite(SuiteSpec spec);
+    // --retries: each test added from now on that fails runs again up to `retries` times.
+    void setRetries(unsigned int retries) { retries_ = retries; }
 
     TestRunner& runner() { return runner_; }
     // Decides which tests are skipped before they run (depends, --fail-fast); it must also
@@ -69,6 +71,7 @@ private:
     std::deque<PluginTest> tests_;
     std::vector<std::unique_ptr<FixtureManager>> fixtures_;
     RunGate gate_{tests_};
+    unsigned int retries_ = 0;
 };
 
 }  // namespace runner

@@ -109,6 +109,10 @@ void WebProgressListener::addOutput(const Test* test, const std::string& text) {
     state_->view.addOutput(State::idOf(test), text);
 }
 
+void WebProgressListener::retryTest(const Test* test, TestMessage /*msg*/) {
+    state_->view.retryTest(State::idOf(test));
+}
+
 void WebProgressListener::startTest(const Test* test) {
     state_->view.startTest(State::idOf(test), test != nullptr ? test->getName() : std::string());
 }

@@ -210,8 +210,10 @@ void RunView::endTest(std::uint64_t id) {
         }
     }
     TestView& test = suites_[suiteIndex].tests[index];
-    test.state = toString(test.worst);
+    test.state = test.retries > 0 && test.worst == TestStatus::Passed ? toString(TestStatus::Flaky)
+                                                                      : toString(test.worst);
     test.duration = secondsSince(test.started);
+    ended_ = {id, suiteIndex, index};
     if (test.worst == TestStatus::Passed) {
         ++counts_[0];
     } else if (test.worst == TestStatus::Skipped) {
@@ -236,6 +238,31 @@ void RunView::renameTest(std::uint64_t id, const std::string& name) {
     log("test " + test.name + " renamed " + name);
     test.name = name;
     publishTest(suiteIndex, index);
+}
+
+void RunView::retryTest(std::uint64_t id) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (ended_.id == 0 || ended_.id != id || ended_.suite >= suites_.size() ||
+        ended_.test >= suites_[ended_.suite].tests.size() ||
+        suites_[ended_.suite].tests[ended_.test].id != id) {
+        return;
+    }
+    SuiteView& suite = suites_[ended_.suite];
+    TestView& test = suite.tests[ended_.test];
+    // The failed attempt no longer counts; its messages stay, to show what happened.
+    if (isFailure(test.worst) && counts_[1] > 0) {
+        --counts_[1];
+        suite.failed = false;
+        for (const TestView& other : suite.tests) {
+            suite.failed = suite.failed || (&other != &test && other.state != "not run" &&
+                                            other.state != "running" && other.state != "passed" &&
+                                            other.state != "skipped" && other.state != "flaky");
+        }
+    }
+    test.worst = TestStatus::Passed;
+    test.state = "not run";  // its next startTest finds it again
+    ++test.retries;
+    ended_ = Ended();
 }
 
 void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& msg,

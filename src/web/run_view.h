@@ -39,6 +39,9 @@ public:
     // `status` is the state it gives (Passed for none).
     void addMessage(std::uint64_t id, const char* kind, const TestMessage& msg, TestStatus status);
     void addOutput(std::uint64_t id, const std::string& text);
+    // The test `id` just ended failing and runs again (--retries): it is open again at its
+    // next startTest, and flaky if that attempt passes.
+    void retryTest(std::uint64_t id);
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -69,6 +72,7 @@ private:
         std::vector<Message> messages;
         std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
         std::string output;
+        std::size_t retries = 0;  // earlier failed attempts
     };
     struct SuiteView {
         std::string name;
@@ -109,7 +113,13 @@ private:
         std::size_t suite;
         std::size_t test;
     };
-    std::vector<OpenTest> openTests_;   // the running ones, innermost last
+    std::vector<OpenTest> openTests_;  // the running ones, innermost last
+    struct Ended {
+        std::uint64_t id = 0;  // 0 for none
+        std::size_t suite = none;
+        std::size_t test = none;
+    };
+    Ended ended_;                       // the test that ended last, which a retry reopens
     std::vector<std::string> changes_;  // change N is changes_[N - 1], as JSON
     std::string log_;
 };

@@ -75,7 +75,42 @@ MUTATIONS = {
         next(c for c in r.iter("testcase") if c.find("failure") is not None), "skipped"),
     "system-out before failure": lambda r: _move_output_first(r),
     "property without value": lambda r: _add_properties(r, {"name": "x"}),
+    "flakyFailure beside a failure": lambda r: _after_failure(r, "flakyFailure"),
+    "rerunFailure without a failure": lambda r: _first_passing(r).insert(
+        0, ET.Element("rerunFailure")),
+    "unknown element in flakyFailure": lambda r: ET.SubElement(
+        _flaky(_first_passing(r)), "screenshot"),
+    "unknown attribute on flakyFailure": lambda r: _flaky(_first_passing(r)).set("when", "1"),
 }
+
+
+def _first_passing(root):
+    return next(c for c in root.iter("testcase") if c.get("status") == "passed")
+
+
+def _flaky(case):
+    attempt = ET.Element("flakyFailure", {"message": "m", "type": "failed"})
+    case.insert(0, attempt)
+    return attempt
+
+
+def _after_failure(root, tag):
+    case = next(c for c in root.iter("testcase") if c.find("failure") is not None)
+    case.insert(list(case).index(case.find("failure")) + 1, ET.Element(tag))
+
+
+def test_surefire_attempt_children_validate(report, tmp_path):
+    tree = ET.parse(report)
+    attempt = _flaky(_first_passing(tree.getroot()))
+    attempt.text = "details"
+    for child in ("stackTrace", "system-out", "system-err"):
+        ET.SubElement(attempt, child).text = child
+    case = next(c for c in tree.getroot().iter("testcase") if c.find("failure") is not None)
+    rerun = ET.Element("rerunFailure", {"message": "m", "type": "failed"})
+    case.insert(list(case).index(case.find("failure")) + 1, rerun)
+    good = tmp_path / "surefire.xml"
+    tree.write(good, encoding="UTF-8", xml_declaration=True)
+    validate_junit(good)
 
 
 def _add_properties(root, attributes):

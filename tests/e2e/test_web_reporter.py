@@ -248,3 +248,20 @@ def test_verbose_shows_what_the_tests_print(tmp_path):
         assert run.wait(timeout=10) == 0, run.output()
     finally:
         run.kill()
+
+
+def test_a_test_passing_on_a_retry_is_flaky_on_the_page(tmp_path):
+    counter = tmp_path / "runs"
+    test = quick_test(tmp_path, "wobbly",
+                      f"n=$(cat '{counter}' 2>/dev/null || echo 0); n=$((n + 1)); "
+                      f"echo $n > '{counter}'; [ $n -le 1 ] && exit 3; exit 0\n")
+    run = WebRun("-t", test, "--retries", "2", "--web-linger", "60", cwd=tmp_path)
+    try:
+        run.wait_for_line("final page stays")
+        snapshot = json.loads(request(run.port, "/snapshot")[2])
+        tests = snapshot["suites"][0]["tests"]
+        assert [t["state"] for t in tests] == ["flaky"], snapshot
+        run.proc.send_signal(2)
+        assert run.wait(timeout=10) == 0, run.output()
+    finally:
+        run.kill()

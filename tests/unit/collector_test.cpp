@@ -405,3 +405,42 @@ TEST(TestResultCollector, SeveralRunsAtOnceInOneProcessStayApart) {
     EXPECT_EQ(leftFailed, 25u);
     EXPECT_EQ(rightFailed, 25u);
 }
+
+// --retries: a failed attempt followed by a passing one is one flaky test, counted once.
+TEST(CollectorRetries, PassingRetryMakesOneFlakyRecord) {
+    TestResultCollector c;
+    TestSuite suite("s");
+    Named t("t");
+    c.startTestSuite(&suite);
+    oneTest(c, t, {ResultEvent::Kind::Failure});
+    c.retryTest(&t, TestMessage("attempt 1 of 2 failed"));
+    oneTest(c, t, {});
+    c.endTestSuite(&suite);
+    ASSERT_EQ(c.suites().size(), 1u);
+    ASSERT_EQ(c.suites()[0].tests.size(), 1u);
+    const TestRecord& record = c.suites()[0].tests[0];
+    EXPECT_EQ(record.status, TestStatus::Flaky);
+    ASSERT_EQ(record.attempts.size(), 1u);
+    EXPECT_EQ(record.attempts[0].status, TestStatus::Failed);
+    EXPECT_EQ(c.testCount(), 1u);
+    EXPECT_EQ(c.countOf(TestStatus::Flaky), 1u);
+    EXPECT_EQ(c.failedCount(), 0u);
+    EXPECT_EQ(c.failedSuiteCount(), 0u);
+}
+
+TEST(CollectorRetries, FailingRetriesStayOneFailedRecord) {
+    TestResultCollector c;
+    TestSuite suite("s");
+    Named t("t");
+    c.startTestSuite(&suite);
+    oneTest(c, t, {ResultEvent::Kind::Failure});
+    c.retryTest(&t, TestMessage("again"));
+    oneTest(c, t, {ResultEvent::Kind::Crash});
+    c.endTestSuite(&suite);
+    ASSERT_EQ(c.suites()[0].tests.size(), 1u);
+    EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Crashed);
+    EXPECT_EQ(c.suites()[0].tests[0].attempts.size(), 1u);
+    EXPECT_EQ(c.testCount(), 1u);
+    EXPECT_EQ(c.failedCount(), 1u);
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+}

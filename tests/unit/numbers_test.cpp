@@ -31,3 +31,18 @@ TEST(Numbers, SecondsAreFiniteAndUpToTheLimit) {
     EXPECT_EQ(checkSeconds("1000001", seconds),
               "is too large: at most 1000000 seconds (0 for no limit)");
 }
+
+TEST(Numbers, RetriesAreAWholeNumberFromZeroToTheLimit) {
+    unsigned int retries = 9;
+    EXPECT_EQ(checkRetries("0", retries), "");
+    EXPECT_EQ(retries, 0u);
+    EXPECT_EQ(checkRetries(" 100 ", retries), "");
+    EXPECT_EQ(retries, 100u);
+    for (const char* bad : {"-1", "2.5", "", "abc"}) {
+        EXPECT_EQ(checkRetries(bad, retries), "is not a whole number of retries from 0 to 100")
+            << bad;
+    }
+    EXPECT_EQ(checkRetries("101", retries), "is too large: at most 100 retries");
+    EXPECT_EQ(checkRetries("99999999999999999999999", retries),
+              "is too large: at most 100 retries");
+}
