@@ -44,6 +44,16 @@ struct FixtureSpec {
     SourceLocation where;
 };
 
+// A <resource> of a suite: an exclusive lock (`lock="robot:left-arm"`) or `count` items taken
+// from a pool given by --resources (`pool="ros_domain" count="1"`). The scheduler holds them
+// from fixture setup to teardown; shards keep suites sharing a lock together.
+struct ResourceSpec {
+    std::string lock;  // empty for a pool
+    std::string pool;  // empty for a lock
+    unsigned int count = 1;
+    SourceLocation where;
+};
+
 struct SuiteSpec {
     std::string name;
     std::string description;
@@ -52,6 +62,8 @@ struct SuiteSpec {
     std::vector<std::string> tags;  // tags="..." of the suite: given to each of its tests
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
+    std::vector<ResourceSpec> resources;  // as written, in document order
+    bool exclusive = false;               // exclusive="true": runs alone
     std::vector<VariableValue> variables;    // by name
     std::vector<std::string> variablesUsed;  // the names its ${...} looked up
     SourceLocation where;
