@@ -205,3 +205,37 @@ def test_merge_bad_input_exits_2(tmp_path):
     r = run("--suites", suites, "--expect-shards", 3)
     assert r.returncode == 2 and "--expect-shards needs --merge" in r.stderr, r
     assert not out.exists()
+
+
+PYTHON_CLEAN_ENV = """import os
+import robottestingframework
+NAMES = %r
+class TestCase:
+    def setup(self, param):
+        return True
+    def run(self):
+        seen = [name for name in NAMES if name in os.environ]
+        robottestingframework.testCheck(not seen, "shard variables reached the test: %%s" %% seen)
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_shard_variables_never_reach_the_tests(tmp_path, isolation):
+    from shard_cases import SHARD_VARIABLES
+    suites = make_suites(tmp_path / "suites", count=1, failing=())
+    (suites / "clean_env.py").write_text(PYTHON_CLEAN_ENV % SHARD_VARIABLES)
+    (suites / "suite-00.xml").write_text(
+        '<suite name="s00">\n  <test type="exec" name="exec">clean_env.sh</test>\n'
+        '  <test type="python" name="python">clean_env.py</test>\n</suite>\n')
+    status, xml = tmp_path / "status", tmp_path / "bazel.xml"
+    # Every convention at once, agreeing: shard 0 of 1.
+    r = run("--isolation", isolation, "--suites", suites, "--no-output", "--verbose",
+            TEST_SHARD_INDEX=0, TEST_TOTAL_SHARDS=1, TEST_SHARD_STATUS_FILE=status,
+            XML_OUTPUT_FILE=xml, GTEST_SHARD_INDEX=0, GTEST_TOTAL_SHARDS=1, CI_NODE_INDEX=1,
+            CI_NODE_TOTAL=1, JOB_COMPLETION_INDEX=0, RTF_SHARD_COUNT=1)
+    assert r.returncode == 0, r
+    assert "shard 0 of 1 (from Bazel" in r.stdout, r
+    assert "2 passed, 0 failed" in r.stdout, r
+    assert status.exists()
+    validate_junit(xml)
+    assert suites_of(xml) == ["s00"]
