@@ -1,6 +1,5 @@
 #include "shard_choice.h"
 
-#include <cerrno>
 #include <cstdlib>
 
 namespace robottestingframework {
