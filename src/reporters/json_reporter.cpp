@@ -210,9 +210,9 @@ std::string JsonReporter::document() {
     if (settings_.sharded) {
         out += ",\"shard\":{\"index\":" + std::to_string(settings_.shardIndex) +
                ",\"count\":" + std::to_string(settings_.shardCount) + "}";
-        if (settings_.rerun) {
-            out += ",\"rerun\":true";
-        }
+    }
+    if (settings_.rerun) {
+        out += ",\"rerun\":true";
     }
     out += "}}";
     out += "}}\n";

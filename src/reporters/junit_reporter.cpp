@@ -240,12 +240,15 @@ std::string JUnitReporter::document() {
     out += attr("errors", std::to_string(total.errors));
     out += attr("time", number(collector_.duration() > 0 ? collector_.duration() : totalTime));
     out += ">\n";
-    if (settings_.sharded) {
+    if (settings_.sharded || settings_.rerun) {
         // On the root, so an empty shard says which it is too (--merge --expect-shards).
-        out += "  <properties>\n    <property" + attr("name", "rtf.shard.index") +
-               attr("value", std::to_string(settings_.shardIndex)) + "/>\n    <property" +
-               attr("name", "rtf.shard.count") +
-               attr("value", std::to_string(settings_.shardCount)) + "/>\n";
+        out += "  <properties>\n";
+        if (settings_.sharded) {
+            out += "    <property" + attr("name", "rtf.shard.index") +
+                   attr("value", std::to_string(settings_.shardIndex)) + "/>\n    <property" +
+                   attr("name", "rtf.shard.count") +
+                   attr("value", std::to_string(settings_.shardCount)) + "/>\n";
+        }
         if (settings_.rerun) {
             out += "    <property" + attr("name", "rtf.rerun") + attr("value", "true") + "/>\n";
         }

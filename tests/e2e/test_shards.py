@@ -158,6 +158,29 @@ def test_a_rerun_of_a_shard_replaces_its_failed_tests_in_the_merge(tmp_path):
         assert states == ["passed"] * 4
 
 
+@pytest.mark.parametrize("kind", ["junit", "json"])
+def test_a_rerun_of_a_whole_run_merges_too(tmp_path, kind):
+    suites = make_suites(tmp_path / "suites", count=2, failing=())
+    flaky = write_script(tmp_path / "suites" / "flaky.sh",
+                         f"#!/bin/sh\nif [ -e {tmp_path}/ran ]; then exit 0; fi\n"
+                         f"touch {tmp_path}/ran\nexit 1\n")
+    (tmp_path / "suites" / "suite-01.xml").write_text(
+        f'<suite name="s01">\n  <test type="exec" name="flaky">{flaky}</test>\n</suite>\n')
+    first, again, merged = (tmp_path / f"{name}.{kind}" for name in ("first", "again", "merged"))
+    assert run("--suites", suites, "-o", f"{kind}:{first}").returncode == 1
+    assert run("--suites", suites, "--rerun-failed", first, "-o",
+               f"{kind}:{again}").returncode == 0
+    r = run("--merge", f"{kind}:{merged}", first, again)
+    assert r.returncode == 0, r
+    if kind == "junit":
+        validate_junit(merged)
+        assert [t.get("status") for t in ET.parse(merged).getroot().iter("testcase")] == [
+            "passed"] * 3
+    else:
+        tests = validate_ctrf(merged)["results"]["tests"]
+        assert [t["extra"]["rtf"]["state"] for t in tests] == ["passed"] * 3
+
+
 @pytest.mark.parametrize("args,variables,why", [
     (["--shard-index", 2, "--shard-count", 2], {},
      "--shard-index '2': expected a whole number from 0 to 1"),
