@@ -23,9 +23,10 @@ def write_script(path, body):
     return path
 
 
-def make_suites(folder, count=7, failing=(2,)):
+def make_suites(folder, count=7, failing=(2,), broken_fixture=()):
     """`count` suites in `folder` (suite-00.xml ...), two exec tests each; the suites of
-    `failing` have a failing test. Returns the folder."""
+    `failing` have a failing test, those of `broken_fixture` a fixture that cannot be loaded.
+    Returns the folder."""
     folder.mkdir(parents=True, exist_ok=True)
     write_script(folder / "ok.sh", "#!/bin/sh\necho fine\nexit 0\n")
     write_script(folder / "bad.sh", "#!/bin/sh\necho broken\nexit 1\n")
@@ -34,6 +35,8 @@ def make_suites(folder, count=7, failing=(2,)):
         tests = ['  <test type="exec" name="clean">clean_env.sh</test>',
                  f'  <test type="exec" name="{"bad" if i in failing else "ok"}">'
                  f'{"bad" if i in failing else "ok"}.sh</test>']
+        if i in broken_fixture:
+            tests.insert(0, "  <fixture>no_such_fixture</fixture>")
         (folder / f"suite-{i:02d}.xml").write_text(
             f'<suite name="s{i:02d}">\n' + "\n".join(tests) + "\n</suite>\n")
     return folder

@@ -37,10 +37,12 @@ def shard_reports(tmp_path, suites, count, isolation="process", **variables_of_s
 
 @pytest.mark.parametrize("isolation", ["process", "none"])
 def test_shards_split_every_suite_once_and_merge_into_the_one_machine_run(tmp_path, isolation):
-    suites = make_suites(tmp_path / "suites")
+    suites = make_suites(tmp_path / "suites", broken_fixture=(4,))
     one = run("--isolation", isolation, "--suites", suites, "-o", f"junit:{tmp_path}/one.xml",
               "-o", f"json:{tmp_path}/one.json")
     assert one.returncode == 1, one
+    extra = json.loads((tmp_path / "one.json").read_text())["results"]["extra"]["rtf"]
+    assert [failure["suite"] for failure in extra["fixtureFailures"]] == ["s04"]
     xmls, jsons = shard_reports(tmp_path, suites, 3, isolation)
     names = [name for xml in xmls for name in suites_of(xml)]
     assert sorted(names) == [f"s{i:02d}" for i in range(7)]
