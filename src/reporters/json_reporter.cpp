@@ -176,9 +176,14 @@ std::string JsonReporter::document() {
     out += ",\"tests\":[";
     bool first = true;
     std::string fixtures;
-    std::size_t suitePlace = 0;
+    std::string suites;
+    std::size_t index = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
-        ++suitePlace;
+        const std::size_t suitePlace = settings_.suitePlace(index++) + 1;
+        suites += std::string(suites.empty() ? "" : ",") +
+                  "{\"place\":" + std::to_string(suitePlace) +
+                  ",\"name\":" + jsonString(suite.name) +
+                  ",\"duration\":" + std::to_string(milliseconds(suite.duration)) + "}";
         std::size_t testPlace = 0;
         for (const TestRecord& test : suite.tests) {
             out += first ? "\n" : ",\n";
@@ -199,7 +204,17 @@ std::string JsonReporter::document() {
     }
     out += "]";
     // A fixture that failed is the suite's, not a test's: kept where CTRF leaves room for it.
-    out += ",\"extra\":{\"rtf\":{\"fixtureFailures\":[" + fixtures + "]}}";
+    out += ",\"extra\":{\"rtf\":{\"fixtureFailures\":[" + fixtures + "]";
+    // Each suite's time, fixtures included: what --durations balances shards by.
+    out += ",\"suites\":[" + suites + "]";
+    if (settings_.sharded) {
+        out += ",\"shard\":{\"index\":" + std::to_string(settings_.shardIndex) +
+               ",\"count\":" + std::to_string(settings_.shardCount) + "}";
+    }
+    if (settings_.rerun) {
+        out += ",\"rerun\":true";
+    }
+    out += "}}";
     out += "}}\n";
     return out;
 }

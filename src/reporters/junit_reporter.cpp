@@ -240,7 +240,21 @@ std::string JUnitReporter::document() {
     out += attr("errors", std::to_string(total.errors));
     out += attr("time", number(collector_.duration() > 0 ? collector_.duration() : totalTime));
     out += ">\n";
-    std::size_t id = 0;
+    if (settings_.sharded || settings_.rerun) {
+        // On the root, so an empty shard says which it is too (--merge --expect-shards).
+        out += "  <properties>\n";
+        if (settings_.sharded) {
+            out += "    <property" + attr("name", "rtf.shard.index") +
+                   attr("value", std::to_string(settings_.shardIndex)) + "/>\n    <property" +
+                   attr("name", "rtf.shard.count") +
+                   attr("value", std::to_string(settings_.shardCount)) + "/>\n";
+        }
+        if (settings_.rerun) {
+            out += "    <property" + attr("name", "rtf.rerun") + attr("value", "true") + "/>\n";
+        }
+        out += "  </properties>\n";
+    }
+    std::size_t index = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
         const std::string suiteName = suite.name.empty() ? "default" : suite.name;
         const Counts counts = countsOf(suite);
@@ -253,7 +267,7 @@ std::string JUnitReporter::document() {
         out += attr("time", number(suite.duration));
         out += attr("timestamp", timestamp(collector_.startedAt(), suite.start));
         out += attr("hostname", host);
-        out += attr("id", std::to_string(id++));
+        out += attr("id", std::to_string(settings_.suitePlace(index++)));
         out += ">\n";
         for (const TestRecord& test : suite.tests) {
             appendTestCase(out, test, suiteName, verbose);

@@ -4,7 +4,9 @@
 // collector's finished records (text, JUnit, JSON, HTML).
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResultCollector.h>
@@ -16,6 +18,19 @@ namespace reporters {
 struct ReporterSettings {
     bool verbose = false;  // --verbose: reports, checks and output in full
     bool summary = true;   // --no-summary turns it off (text only)
+    // The shard this run is (--shard-index/--shard-count or a CI engine's variables): JUnit
+    // and JSON say so, for --merge --expect-shards to check.
+    bool sharded = false;
+    unsigned int shardIndex = 0;
+    unsigned int shardCount = 0;
+    bool rerun = false;  // --rerun-failed: --merge lets it replace the tests it reruns
+    // The place (from 0) of each suite of this run among every selected suite, before a shard
+    // was taken: JUnit's testsuite id and JSON's testId, so merged shards order their suites
+    // as one machine would. Empty: the suites' places in this run.
+    std::vector<std::size_t> suitePlaces;
+    std::size_t suitePlace(std::size_t index) const {
+        return suitePlaces.empty() ? index : suitePlaces[index % suitePlaces.size()];
+    }
 };
 
 class Reporter : public TestListener {

@@ -42,12 +42,18 @@ std::string seconds(double value) {
 
 }  // namespace
 
-std::string listText(const std::vector<SuiteSpec>& suites) {
+std::string listText(const std::vector<SuiteSpec>& suites, const std::vector<unsigned int>& shards,
+                     unsigned int shardCount) {
     std::string text;
     std::size_t count = 0;
-    for (const auto& suite : suites) {
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        const SuiteSpec& suite = suites[s];
         text += "suite " + suite.name +
-                (suite.where.file.empty() ? std::string() : " (" + suite.where.file + ")") + "\n";
+                (suite.where.file.empty() ? std::string() : " (" + suite.where.file + ")") +
+                (s < shards.size() ? "  [shard " + std::to_string(shards[s]) + " of " +
+                                         std::to_string(shardCount) + "]"
+                                   : std::string()) +
+                "\n";
         for (const auto& test : suite.tests) {
             ++count;
             text += "  " + idOf(suite, test) + "\n";
@@ -74,9 +80,11 @@ std::string listText(const std::vector<SuiteSpec>& suites) {
     return text;
 }
 
-std::string listJson(const std::vector<SuiteSpec>& suites) {
+std::string listJson(const std::vector<SuiteSpec>& suites,
+                     const std::vector<unsigned int>& shards) {
     nlohmann::json list = {{"suites", nlohmann::json::array()}};
-    for (const auto& suite : suites) {
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        const SuiteSpec& suite = suites[s];
         nlohmann::json fixtures = nlohmann::json::array();
         for (const auto& fixture : suite.fixtures) {
             fixtures.push_back({{"plugin", fixture.plugin},
@@ -103,14 +111,17 @@ std::string listJson(const std::vector<SuiteSpec>& suites) {
                                   {"file", suite.where.file},
                                   {"fixtures", fixtures},
                                   {"tests", tests}});
+        if (s < shards.size()) {
+            list["suites"].back()["shard"] = shards[s];
+        }
     }
     // Invalid UTF-8 in a param is replaced, not a reason to write nothing.
     return list.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 bool writeListJson(const std::string& file, const std::vector<SuiteSpec>& suites,
-                   std::string& error) {
-    return reporters::writeFileAtomically(file, listJson(suites), error);
+                   std::string& error, const std::vector<unsigned int>& shards) {
+    return reporters::writeFileAtomically(file, listJson(suites, shards), error);
 }
 
 std::string listVariablesText(const std::vector<SuiteSpec>& suites) {

@@ -19,6 +19,7 @@
 #include "in_process_executor.h"
 #include "isolated_executor.h"
 #include "listing.h"
+#include "merge_reports.h"
 #include "options.h"
 #include "output_capture.h"
 #include "output_paths.h"
@@ -28,8 +29,11 @@
 #include "rerun_report.h"
 #include "run_gate.h"
 #include "run_plan.h"
+#include "shard_setup.h"
 #include "signal_pipe.h"
 #include "test_sources.h"
+
+#include "atomic_file.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::runner;
@@ -123,8 +127,8 @@ struct Output {
     std::unique_ptr<reporters::Reporter> reporter;
 };
 
-std::vector<Output> makeOutputs(const Options& options, const TestResultCollector& collector) {
-    reporters::ReporterSettings settings;
+std::vector<Output> makeOutputs(const Options& options, const TestResultCollector& collector,
+                                reporters::ReporterSettings settings) {
     settings.verbose = options.verbose;
     settings.summary = !options.noSummary;
     std::vector<Output> outputs;
@@ -173,6 +177,25 @@ void lingerOn(const WebProgressListener& web, double seconds) {
     signals.wait(static_cast<int>(seconds * 1000));
 }
 
+// --merge OUT_TYPE:OUT_FILE REPORT...: runs nothing.
+int mergeCommand(const Options& options) {
+    MergeRequest request{options.merge.type, options.merge.file, options.mergeReports,
+                         options.expectShards};
+    std::string error;
+    try {
+        if (reporters::writeFileAtomically(request.file, mergeReports(request), error)) {
+            std::fprintf(stdout, "%s: merged %zu reports into %s\n", program,
+                         request.reports.size(), request.file.c_str());
+            return allPassed;
+        }
+        error = "cannot write " + request.file + ": " + error;
+    } catch (const std::exception& e) {
+        error = e.what();
+    }
+    std::fprintf(stderr, "%s: %s\n", program, error.c_str());
+    return configurationError;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -181,6 +204,9 @@ int main(int argc, char** argv) {
     if (parsed.outcome == ParseResult::Outcome::Exit) {
         std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
         return parsed.status;
+    }
+    if (!options.merge.type.empty()) {
+        return mergeCommand(options);
     }
     std::vector<std::string> warnings;
     std::vector<SuiteSpec> suites;
@@ -196,6 +222,17 @@ int main(int argc, char** argv) {
     for (const auto& warning : warnings) {
         std::fprintf(stderr, "%s\n", warning.c_str());
     }
+    // Once the suites have read ${env:...} and before anything starts: the CI engines' shard
+    // variables are read, then taken out of the environment the tests inherit.
+    ShardChoice shard;
+    {
+        std::string error;
+        if (!prepareShard(options, shard, error)) {
+            std::fprintf(stderr, "%s: %s\n", program, error.c_str());
+            return configurationError;
+        }
+    }
+    reporters::ReporterSettings shardSettings;
     const Overrides overrides{options.param, options.environment, options.repetition,
                               options.timeout, options.variables};
     for (const auto& warning : unreadVariables(suites, overrides)) {
@@ -212,7 +249,21 @@ int main(int argc, char** argv) {
     if (!options.rerunFailed.empty()) {
         std::vector<FailedTest> failed;
         try {
-            failed = readFailedTests(options.rerunFailed);
+            const Report earlier = readReport("--rerun-failed", options.rerunFailed);
+            failed = failedTests(earlier);
+            // A rerun of a shard's failures is that shard again: its tests as they are, and
+            // its report says so, for --merge to put it in place of the first one.
+            if (shard.sharded) {
+                std::fprintf(stdout,
+                             "%s: --rerun-failed: the failed tests of %s run again as they "
+                             "are; the shard (%s) is not taken again\n",
+                             program, options.rerunFailed.c_str(), shard.source.c_str());
+                shard = ShardChoice();
+            }
+            shardSettings.rerun = true;
+            shardSettings.sharded = earlier.shard.known;
+            shardSettings.shardIndex = earlier.shard.index;
+            shardSettings.shardCount = earlier.shard.count;
         } catch (const std::exception& e) {
             std::fprintf(stderr, "%s: %s\n", program, e.what());
             return configurationError;
@@ -234,17 +285,40 @@ int main(int argc, char** argv) {
             std::fprintf(stderr, "%s: warning: no test is selected\n", program);
         }
     }
+    std::vector<unsigned int> shardOf;
+    if (shard.sharded) {
+        try {
+            shardOf = shardsOf(suites, shard.count, options.durations);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: %s\n", program, e.what());
+            return configurationError;
+        }
+        std::size_t mine = 0;
+        for (unsigned int of : shardOf) {
+            mine += of == shard.index ? 1 : 0;
+        }
+        std::fprintf(
+            stdout, "%s: shard %u of %u (from %s)%s: %zu of %zu suites\n", program, shard.index,
+            shard.count, shard.source.c_str(),
+            options.durations.empty() ? "" : (", balanced by " + options.durations).c_str(), mine,
+            suites.size());
+    } else if (!options.durations.empty()) {
+        std::fprintf(stderr, "%s: warning: --durations %s: not sharded, nothing to balance\n",
+                     program, options.durations.c_str());
+    }
     if (options.list || options.listVariables) {
         // What would run, and nothing run: no plug-in is loaded, no fixture started.
         for (auto& suite : suites) {
             applyOverrides(suite, overrides);
         }
-        std::fputs((options.listVariables ? listVariablesText(suites) : listText(suites)).c_str(),
+        std::fputs((options.listVariables ? listVariablesText(suites)
+                                          : listText(suites, shardOf, shard.count))
+                       .c_str(),
                    stdout);
         for (const auto& output : options.outputs) {
             std::string error;
             if (options.list && output.type == "json" &&
-                !writeListJson(output.file, suites, error)) {
+                !writeListJson(output.file, suites, error, shardOf)) {
                 std::fprintf(stderr, "%s: cannot write the list %s: %s\n", program,
                              output.file.c_str(), error.c_str());
                 return configurationError;
@@ -252,6 +326,33 @@ int main(int argc, char** argv) {
         }
         return allPassed;
     }
+    if (shard.sharded) {
+        // Only this shard's suites run; each keeps its place in the whole selection, so the
+        // shards' reports merge into the one a single machine would write.
+        std::vector<SuiteSpec> mine;
+        for (std::size_t i = 0; i < suites.size(); ++i) {
+            if (shardOf[i] == shard.index) {
+                shardSettings.suitePlaces.push_back(i);
+                if (options.verbose) {
+                    std::fprintf(stdout, "%s: shard %u runs suite %s%s\n", program, shard.index,
+                                 suites[i].name.c_str(),
+                                 suites[i].where.file.empty()
+                                     ? ""
+                                     : (" (" + suites[i].where.file + ")").c_str());
+                }
+                mine.push_back(std::move(suites[i]));
+            }
+        }
+        suites = std::move(mine);
+        if (suites.empty()) {
+            std::fprintf(stdout, "%s: shard %u of %u has no suite to run\n", program, shard.index,
+                         shard.count);
+        }
+        shardSettings.sharded = true;
+        shardSettings.shardIndex = shard.index;
+        shardSettings.shardCount = shard.count;
+    }
+    std::fflush(stdout);
 
     // The fork server is started here, on the main thread, which lives for the whole run: the
     // server's parent-death signal is tied to the thread that started it.
@@ -332,7 +433,7 @@ int main(int argc, char** argv) {
     result.addListener(&console);
     result.addListener(&collector);
     result.addListener(&plan.gate());
-    const std::vector<Output> outputs = makeOutputs(options, collector);
+    const std::vector<Output> outputs = makeOutputs(options, collector, shardSettings);
     for (const auto& output : outputs) {
         result.addListener(output.reporter.get());
     }

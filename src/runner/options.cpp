@@ -201,6 +201,28 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                            "and ?, separated by ':', negative ones after '-' (e.g. "
                            "'arm/*-*slow*')")
                 ->type_name("PATTERN"));
+    app.add_option("--shard-index", options.shard.index,
+                   "Run only shard I (from 0) of the selected suites split --shard-count ways; "
+                   "default: from the CI engine's variables (see the README)")
+        ->type_name("I");
+    app.add_option("--shard-count", options.shard.count, "The number of shards (see --shard-index)")
+        ->type_name("N");
+    app.add_option("--durations", options.durations,
+                   "Balance the shards by each suite's time in REPORT, a JUnit or JSON output of "
+                   "an earlier run")
+        ->type_name("REPORT");
+    std::string merge;
+    std::string expectShards;
+    app.add_option("--merge", merge,
+                   "Merge the JUnit or JSON REPORTs of a run's shards (the arguments after the "
+                   "options) into OUT_FILE, and exit")
+        ->type_name("OUT_TYPE:OUT_FILE");
+    CLI::Option* expectShardsOption =
+        app.add_option("--expect-shards", expectShards,
+                       "With --merge: every shard 0 to N-1 must be there exactly once")
+            ->type_name("N");
+    app.add_option("reports", options.mergeReports, "With --merge: the reports to merge")
+        ->type_name("REPORT");
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -310,6 +332,36 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         options.selection.filters.push_back(std::move(filter));
     }
 
+    if (expectShardsOption->count() > 0 && merge.empty()) {
+        return usageError("--expect-shards needs --merge");
+    }
+    if (!options.mergeReports.empty() && merge.empty()) {
+        return usageError("unexpected argument " + options.mergeReports.front() +
+                          " (reports are given only to --merge)");
+    }
+    if (!merge.empty()) {
+        const std::size_t colon = merge.find(':');
+        const std::string type = colon == std::string::npos ? "" : merge.substr(0, colon);
+        if ((type != "junit" && type != "json") || colon + 1 >= merge.size()) {
+            return usageError("--merge " + merge + ": expected junit:FILE or json:FILE");
+        }
+        options.merge = OutputRequest{type, merge.substr(colon + 1)};
+        if (options.mergeReports.empty()) {
+            return usageError("--merge " + merge + ": no report to merge");
+        }
+        if (expectShardsOption->count() > 0) {
+            unsigned long count = 0;
+            if (expectShards.empty() || expectShards.size() > 9 ||
+                expectShards.find_first_not_of("0123456789") != std::string::npos ||
+                (count = std::stoul(expectShards)) == 0 || count > maxShards) {
+                return usageError("--expect-shards '" + expectShards +
+                                  "': expected a whole number of shards from 1 to " +
+                                  std::to_string(maxShards));
+            }
+            options.expectShards = static_cast<unsigned int>(count);
+        }
+        return result;  // nothing else is read when merging
+    }
     if (options.nothingToRun()) {
         return usageError("nothing to run: give --test, --tests, --suite or --suites");
     }

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "selection.h"
+#include "shard_choice.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -47,6 +48,13 @@ struct Options {
     bool list = false;                                           // --list: print, run nothing
     bool listVariables = false;                                  // --list-vars
     Selection selection;                                         // --tag, --exclude-tag, --filter
+    // Shards: --shard-index/--shard-count as given (checked with the environment's, by
+    // chooseShard), --durations REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
+    ShardFlags shard;
+    std::string durations;
+    OutputRequest merge;  // type empty: not merging
+    std::vector<std::string> mergeReports;
+    unsigned int expectShards = 0;
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "report_reader.h"
 #include "suite_model.h"
 
 namespace robottestingframework {
@@ -14,6 +15,9 @@ struct FailedTest {
     std::string suite;  // as the report names it; empty for tests run outside a suite
     std::string test;
 };
+
+// The tests `report` says failed, errored, crashed or timed out.
+std::vector<FailedTest> failedTests(const Report& report);
 
 // The failed tests of `path`. Throws std::runtime_error saying why when the file is missing,
 // unreadable, not JUnit or JSON, or not written by this runner.

@@ -1,0 +1,60 @@
+// A report of this runner read back, JUnit XML or JSON (CTRF): what --rerun-failed (the failed
+// tests), --durations (each suite's time) and --merge (the whole document) read. Strict: a file
+// this runner did not write, or one cut short or edited out of shape, is an error naming the
+// file, the line when known, and what was expected.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+#include <pugixml.hpp>
+
+namespace robottestingframework {
+namespace runner {
+
+enum class ReportFormat { JUnit, Json };
+
+struct ReportedTest {
+    std::string suite;  // empty for tests run outside a suite
+    std::string name;
+    std::string state;  // as TestStatus's toString spells it: "passed", "timed out", ...
+};
+
+struct ReportedSuite {
+    std::string name;
+    double seconds = 0;  // fixtures included when the report says so
+};
+
+// Which shard wrote the report (JUnit <properties>, CTRF results.extra.rtf.shard).
+struct ReportedShard {
+    bool known = false;
+    unsigned int index = 0;
+    unsigned int count = 0;
+    bool rerun = false;  // written by --rerun-failed: it replaces tests of an earlier report
+};
+
+struct Report {
+    std::string path;
+    ReportFormat format = ReportFormat::JUnit;
+    ReportedShard shard;
+    std::vector<ReportedTest> tests;
+    std::vector<ReportedSuite> suites;
+    // The document itself, for --merge: one of the two, by `format`.
+    std::shared_ptr<pugi::xml_document> junit;
+    nlohmann::ordered_json json;
+};
+
+// Reads `path`. `option` starts the error messages ("--durations"). Throws std::runtime_error
+// "OPTION FILE:LINE: ..." when the file is missing, unreadable, not JUnit or JSON, not written by
+// this runner, or out of shape.
+Report readReport(const std::string& option, const std::string& path);
+
+// The JUnit <property> names and CTRF keys of the shard a report comes from.
+extern const char* const shardIndexProperty;  // "rtf.shard.index"
+extern const char* const shardCountProperty;  // "rtf.shard.count"
+extern const char* const rerunProperty;       // "rtf.rerun"
+
+}  // namespace runner
+}  // namespace robottestingframework
