@@ -364,3 +364,67 @@ def test_fail_fast_with_jobs_starts_no_suite_after_a_failure(tmp_path, suite_fil
     r = run_runner(*args, "-j", "1", "--fail-fast", "-o", f"junit:{out}")
     assert r.returncode == 1, r
     assert [s for _, _, s in junit_results(out)] == ["failure", "skipped", "skipped", "skipped"]
+
+
+def test_pool_item_reaches_python_tests_and_tests_in_the_runners_process(tmp_path, suite_file):
+    resources = tmp_path / "resources.json"
+    resources.write_text(json.dumps({"version": {"major": 1, "minor": 0},
+                                     "local": [{"ros_domain": [{"id": "42"}]}]}))
+    script = tmp_path / "probe.py"
+    script.write_text("""import os
+import robottestingframework
+
+
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("domain=%s param=%s" % (
+            os.environ.get("RTF_RESOURCE_ROS_DOMAIN"), robottestingframework.getParam()))
+""")
+    suite = suite_file(f"""<suite name="py">
+  <resource pool="ros_domain"/>
+  <test param="${{resource.ros_domain}}">{script}</test>
+</suite>""")
+    for isolation in ("process", "none"):
+        r = run_runner("--suite", suite, "--resources", resources, "--isolation", isolation,
+                       "-v", "--no-output")
+        assert r.returncode == 0, r
+        assert "domain=42 param=42" in r.stdout, (isolation, r)
+    assert "RTF_RESOURCE_ROS_DOMAIN" not in os.environ
+
+
+def test_live_status_line_only_on_a_terminal(tmp_path):
+    import pty
+    import subprocess
+    from conftest import RUNNER
+    log = tmp_path / "stamps.log"
+    stamp_fixture(tmp_path, wait=0.5)
+    args = []
+    for name in ("t1", "t2"):
+        args += ["--suite", write_suite(tmp_path, name, log=log)]
+    leader, follower = pty.openpty()
+    proc = subprocess.Popen([RUNNER, *map(str, args), "-j", "2", "--no-output"],
+                            stdout=follower, stderr=follower, stdin=subprocess.DEVNULL,
+                            start_new_session=True)
+    os.close(follower)
+    seen = b""
+    deadline = time.monotonic() + 60
+    try:
+        while time.monotonic() < deadline:
+            try:
+                chunk = os.read(leader, 65536)
+            except OSError:
+                break  # the runner closed its end
+            if not chunk:
+                break
+            seen += chunk
+        proc.wait(timeout=30)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+        os.close(leader)
+    text = seen.decode(errors="replace")
+    assert proc.returncode == 0, text
+    assert "running: t1" in text or "running: t2" in text, text
+    assert "\r\x1b[K" in text, text
+    assert "4 passed, 0 failed" in text, text
