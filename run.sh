@@ -85,7 +85,7 @@ example)
     status=0
     (cd "$reports" && "$build_dir/bin/robottestingframework-testrunner" \
         --suite "$examples/example.xml" --suite "$examples/scripts.xml" \
-        --suite "$examples/robot/robot.xml" \
+        --suite "$examples/robot/robot.xml" --resources "$examples/robot/ports.json" \
         --output text:example.txt --output junit:example.xml --output tap:example.tap \
         --output json:example.json --output html:example.html) || status=$?
     echo

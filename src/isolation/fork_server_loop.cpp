@@ -83,6 +83,13 @@ void prepareChild(pid_t server) {
     }
     // Line-buffered, so what a test printed just before it crashed still reaches the report.
     ::setvbuf(stdout, nullptr, _IOLBF, 0);
+    // The suite's resource items (RTF_RESOURCE_<POOL>), for the test and what it starts.
+    for (const auto& variable : request.variables) {
+        const std::size_t equals = variable.find('=');
+        if (equals != std::string::npos && equals > 0) {
+            ::setenv(variable.substr(0, equals).c_str(), variable.c_str() + equals + 1, 1);
+        }
+    }
 
     int code = request.role == WorkRequest::Role::Fixture ? runFixtureWorker(request, 3)
                                                           : runTestWorker(request, 3);

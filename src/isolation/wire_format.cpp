@@ -166,6 +166,10 @@ std::string encodeRequest(const WorkRequest& request) {
     putString(out, request.param);
     putString(out, request.environment);
     putU32(out, request.repetition);
+    putU32(out, static_cast<std::uint32_t>(request.variables.size()));
+    for (const auto& variable : request.variables) {
+        putString(out, variable);
+    }
     return out;
 }
 
@@ -174,7 +178,21 @@ bool decodeRequest(const std::string& data, WorkRequest& request) {
     std::uint8_t role;
     if (!in.u8(role) || !in.string(request.type) || !in.string(request.path) ||
         !in.string(request.name) || !in.string(request.param) || !in.string(request.environment) ||
-        !in.u32(request.repetition) || !in.done()) {
+        !in.u32(request.repetition)) {
+        return false;
+    }
+    std::uint32_t count = 0;
+    // Each variable takes at least 4 bytes: a count past what is left is garbage.
+    if (!in.u32(count) || count > data.size() / 4) {
+        return false;
+    }
+    request.variables.assign(count, std::string());
+    for (auto& variable : request.variables) {
+        if (!in.string(variable)) {
+            return false;
+        }
+    }
+    if (!in.done()) {
         return false;
     }
     if (role != static_cast<std::uint8_t>(WorkRequest::Role::Test) &&

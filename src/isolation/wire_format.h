@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include <robottestingframework/ResultEvent.h>
 #include <robottestingframework/TestMessage.h>
@@ -77,6 +78,7 @@ struct WorkRequest {
     std::string param;
     std::string environment;  // the suite's environment string (TestCase::setEnvironment)
     std::uint32_t repetition = 1;
+    std::vector<std::string> variables;  // "NAME=VALUE" set in the worker's environment
 };
 
 std::string encodeRequest(const WorkRequest& request);

@@ -65,7 +65,16 @@ bool IsolatedExecutor::start(std::string& error) {
 }
 
 void IsolatedExecutor::shutdown() {
-    server_->stop();
+    if (ownsServer_) {
+        server_->stop();
+    }
+}
+
+std::unique_ptr<runner::TestExecutor> IsolatedExecutor::makeLane() {
+    auto lane = std::make_unique<IsolatedExecutor>(options_);
+    lane->server_ = server_;
+    lane->ownsServer_ = false;
+    return lane;
 }
 
 void IsolatedExecutor::interrupt() {
@@ -87,6 +96,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     request.param = spec.param;
     request.environment = spec.environment;
     request.repetition = spec.repetition == 0 ? 1 : spec.repetition;
+    request.variables = environment_;
 
     std::string error;
     if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,

@@ -11,6 +11,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "file_descriptor.h"
 #include "fork_server.h"
@@ -27,7 +28,7 @@ struct IsolationOptions {
     bool verbose = false;                // the fork server says which interpreters it pre-started
 };
 
-class IsolatedExecutor : public runner::TestExecutor {
+class IsolatedExecutor : public runner::TestExecutor, public runner::WorkerEnvironment {
 public:
     explicit IsolatedExecutor(IsolationOptions options = IsolationOptions());
     ~IsolatedExecutor() override;
@@ -42,6 +43,12 @@ public:
     void interrupt() override;
     std::unique_ptr<FixtureManager> makeFixture(const runner::FixtureSpec& spec,
                                                 std::string& error) override;
+    // Shares the fork server; ending the lane ends only what it runs.
+    std::unique_ptr<runner::TestExecutor> makeLane() override;
+    // Given to every test this executor runs from now on.
+    void setWorkerEnvironment(std::vector<std::string> variables) override {
+        environment_ = std::move(variables);
+    }
 
     // Ends the fork server and every process the run started. The destructor does it too.
     void shutdown();
@@ -51,6 +58,8 @@ private:
     std::shared_ptr<ForkServer> server_;
     platform::FileDescriptor wakeRead_, wakeWrite_;  // interrupt() -> run()
     std::atomic<bool> interrupted_{false};
+    bool ownsServer_ = true;
+    std::vector<std::string> environment_;
 };
 
 }  // namespace isolation

@@ -151,6 +151,7 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
     if (!worker_) {
         worker_.reset(new WorkerProcess());
         std::string error;
+        request_.param = getParam();  // the scheduler may have filled in ${resource.NAME}
         if (!worker_->start(*server_, request_, error)) {
             failure_ = "cannot start fixture " + getName() + ": " + error;
             worker_.reset();

@@ -25,7 +25,9 @@
 namespace robottestingframework {
 namespace isolation {
 
-class IsolatedFixture : public FixtureManager, public runner::InterruptibleFixture {
+class IsolatedFixture : public FixtureManager,
+                        public runner::InterruptibleFixture,
+                        public runner::WorkerEnvironment {
 public:
     IsolatedFixture(std::shared_ptr<ForkServer> server, WorkRequest request,
                     IsolationOptions options);
@@ -36,6 +38,10 @@ public:
     void tearDown() override;
     // A setup or check in progress fails as interrupted (the worker is stopped).
     void interruptCall() override;
+    // Given to the worker when it starts (at the first call).
+    void setWorkerEnvironment(std::vector<std::string> variables) override {
+        request_.variables = std::move(variables);
+    }
 
     // Why the last call failed (empty when it returned false without saying why).
     std::string failure() const { return failure_; }

@@ -7,6 +7,7 @@
 #include "atomic_file.h"
 #include "plugin_test.h"
 #include "test_loader.h"
+#include "variables.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -19,6 +20,12 @@ std::string typeOf(const TestSpec& test) {
         return test.type;
     }
     return languages::typeFromFile(test.path);
+}
+
+// A pool's item is given when the suite starts: until then it is shown as written.
+std::string shown(const std::string& text) {
+    return variables::fillResources(
+        text, [](const std::string& pool) { return "${resource." + pool + "}"; });
 }
 
 std::string joined(const std::vector<std::string>& items) {
@@ -62,7 +69,7 @@ std::string listText(const std::vector<SuiteSpec>& suites, const std::vector<uns
                     ", plug-in " + (test.path.empty() ? test.plugin + " (not found)" : test.path) +
                     "\n";
             if (!test.param.empty()) {
-                text += "      param " + test.param + "\n";
+                text += "      param " + shown(test.param) + "\n";
             }
             if (!test.tags.empty()) {
                 text += "      tags " + joined(test.tags) + "\n";
@@ -90,7 +97,7 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
             fixtures.push_back({{"plugin", fixture.plugin},
                                 {"path", fixture.path},
                                 {"type", fixture.type},
-                                {"param", fixture.param}});
+                                {"param", shown(fixture.param)}});
         }
         nlohmann::json tests = nlohmann::json::array();
         for (const auto& test : suite.tests) {
@@ -99,8 +106,8 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
                              {"type", typeOf(test)},
                              {"plugin", test.plugin},
                              {"path", test.path},
-                             {"param", test.param},
-                             {"environment", test.environment},
+                             {"param", shown(test.param)},
+                             {"environment", shown(test.environment)},
                              {"tags", test.tags},
                              {"timeout", test.timeout},
                              {"repetition", test.repetition},

@@ -23,12 +23,15 @@
 #include "options.h"
 #include "output_capture.h"
 #include "output_paths.h"
+#include "parallel_console.h"
 #include "process.h"
 #include "process_tree.h"
 #include "reporter_registry.h"
 #include "rerun_report.h"
+#include "resources.h"
 #include "run_gate.h"
 #include "run_plan.h"
+#include "scheduler.h"
 #include "shard_setup.h"
 #include "signal_pipe.h"
 #include "test_sources.h"
@@ -57,10 +60,13 @@ class InterruptWatcher {
 public:
     // `console`: where to say so (stderr is captured while tests run). `quit`: what to do
     // before quitting at once (write what is known).
-    InterruptWatcher(RunPlan& plan, std::FILE* console, std::function<void()> quit)
+    // `interrupt`: stops the run (called again and again until it ends).
+    InterruptWatcher(std::function<void()> interrupt, std::FILE* console,
+                     std::function<void()> quit)
         : signals_({SIGINT, SIGTERM}),
+          interrupt_(std::move(interrupt)),
           quit_(std::move(quit)),
-          thread_([this, &plan, console] { watch(plan, console); }) {}
+          thread_([this, console] { watch(console); }) {}
     ~InterruptWatcher() { stop(); }
     // Stops watching and returns the first signal received, 0 when none. A signal that came
     // as the run ended counts too (or it would be lost, e.g. during --web-linger).
@@ -79,7 +85,7 @@ public:
     bool interrupted() const { return received_ != 0; }
 
 private:
-    void watch(RunPlan& plan, std::FILE* console) {
+    void watch(std::FILE* console) {
         while (!done_) {
             int signal = signals_.wait(200);
             if (signal != 0 && received_ == 0) {
@@ -102,13 +108,13 @@ private:
             if (received_ != 0) {
                 // Again and again: an interruption that arrives while a test is being started
                 // could be missed by it; the runner starts no new test once interrupted.
-                plan.runner().interrupt();
-                plan.interruptFixtures();
+                interrupt_();
             }
         }
     }
 
     platform::SignalPipe signals_;
+    std::function<void()> interrupt_;
     std::function<void()> quit_;
     std::atomic<bool> done_{false};
     std::atomic<int> received_{0};
@@ -246,6 +252,21 @@ int main(int argc, char** argv) {
         }
     }
 
+    ResourcePools pools;
+    if (!options.resources.empty()) {
+        try {
+            pools = readResourceFile(options.resources);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: --resources %s\n", program, e.what());
+            return configurationError;
+        }
+    }
+    const std::string poolProblem = checkPools(suites, pools);
+    if (!poolProblem.empty()) {
+        std::fprintf(stderr, "%s: %s\n", program, poolProblem.c_str());
+        return configurationError;
+    }
+
     if (!options.rerunFailed.empty()) {
         std::vector<FailedTest> failed;
         try {
@@ -365,6 +386,13 @@ int main(int argc, char** argv) {
         // Daemons the tests leave (out of their process groups) are adopted, and end with us.
         platform::becomeSubreaper();
         executor = std::make_unique<InProcessExecutor>();
+        if (options.jobs > 1) {
+            std::fprintf(stderr,
+                         "%s: warning: --isolation none runs one suite at a time (tests share "
+                         "the runner's process); --jobs %u is not used\n",
+                         program, options.jobs);
+            options.jobs = 1;
+        }
     } else {
         isolation::IsolationOptions isolationOptions;
         isolationOptions.verbose = options.verbose;
@@ -418,6 +446,7 @@ int main(int argc, char** argv) {
                      captureError.c_str());
     }
 
+    const bool parallel = options.jobs > 1;
     ConsoleListener console(options.verbose);
     console.setStream(capture.console());
     console.setColors(colours);
@@ -430,9 +459,23 @@ int main(int argc, char** argv) {
     // The outputs read the per-test records only, and show checks only when verbose.
     collector.setKeepEventLog(false);
     collector.setKeepChecks(options.verbose);
-    result.addListener(&console);
+    ParallelConsoleSettings parallelSettings;
+    parallelSettings.verbose = options.verbose;
+    parallelSettings.colours = colours;
+    parallelSettings.summary = !options.noSummary;
+    parallelSettings.statusLine = ::isatty(::fileno(capture.console())) == 1;
+    ParallelConsole parallelConsole(capture.console(), collector, parallelSettings);
+    // One line per test as it ends, from any suite (-j N); else the console of one suite at a
+    // time.
+    if (!parallel) {
+        result.addListener(&console);
+    }
     result.addListener(&collector);
-    result.addListener(&plan.gate());
+    if (parallel) {
+        result.addListener(&parallelConsole);  // the summary, after the collector has it all
+    }
+    // The gate (--fail-fast, depends) listens to each suite's events as they come: the
+    // scheduler adds it to them.
     const std::vector<Output> outputs = makeOutputs(options, collector, shardSettings);
     for (const auto& output : outputs) {
         result.addListener(output.reporter.get());
@@ -440,6 +483,25 @@ int main(int argc, char** argv) {
     if (web) {
         result.addListener(web.get());
     }
+
+    // The lines the scheduler has to say when one suite runs at a time (a wait for a lock).
+    class Notes : public SchedulerView {
+    public:
+        explicit Notes(std::FILE* stream) : stream_(stream) {}
+        void note(const std::string& line) override {
+            std::fprintf(stream_, "%s: %s\n", program, line.c_str());
+            std::fflush(stream_);
+        }
+
+    private:
+        std::FILE* stream_;
+    } notes(capture.console());
+    SchedulerSettings schedulerSettings;
+    schedulerSettings.jobs = options.jobs;
+    schedulerSettings.inlineSuites = options.isolation == "none";
+    schedulerSettings.verbose = options.verbose;
+    schedulerSettings.view = parallel ? static_cast<SchedulerView*>(&parallelConsole) : &notes;
+    Scheduler scheduler(plan, pools, schedulerSettings);
 
     int interrupted = 0;
     {
@@ -453,7 +515,7 @@ int main(int argc, char** argv) {
             collector.interruptOpen(TestMessage("interrupted: the runner quit"));
             writeOutputs(outputs, capture.console());
         };
-        InterruptWatcher watcher(plan, capture.console(), quit);
+        InterruptWatcher watcher([&scheduler] { scheduler.interrupt(); }, capture.console(), quit);
         // --repeat-until-fail N: the whole selection again, until a round fails (each round
         // is in the outputs, one after the other).
         const unsigned int rounds = options.repeatUntilFail == 0 ? 1 : options.repeatUntilFail;
@@ -462,7 +524,7 @@ int main(int argc, char** argv) {
                 std::fprintf(capture.console(), "%s: round %u of %u\n", program, round, rounds);
                 std::fflush(capture.console());
             }
-            plan.runner().run(result);
+            scheduler.run(result);
             if (watcher.interrupted() || anythingFailed(collector)) {
                 if (rounds > 1 && !watcher.interrupted()) {
                     std::fprintf(capture.console(), "%s: round %u failed; stopping\n", program,

@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <thread>
 
 namespace robottestingframework {
 namespace runner {
@@ -70,6 +71,23 @@ std::vector<std::string> glueFreeTextValues(int argc, const char* const* argv) {
 }
 
 }  // namespace
+
+std::string checkJobs(const std::string& text, unsigned int& jobs) {
+    if (text == "auto") {
+        jobs = std::max(1u, std::thread::hardware_concurrency());
+        return {};
+    }
+    const bool digits =
+        !text.empty() && text.size() <= 7 &&
+        std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+    const unsigned long value = digits ? std::stoul(text) : 0;
+    if (!digits || value < 1 || value > maxJobs) {
+        return "expected a whole number of suites at once from 1 to " + std::to_string(maxJobs) +
+               ", or auto";
+    }
+    jobs = static_cast<unsigned int>(value);
+    return {};
+}
 
 bool isKnownOutputType(const std::string& type) {
     return reporters::findReporterType(type) != nullptr;
@@ -223,6 +241,15 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
             ->type_name("N");
     app.add_option("reports", options.mergeReports, "With --merge: the reports to merge")
         ->type_name("REPORT");
+    std::string jobs;
+    app.add_option("-j,--jobs", jobs,
+                   "Run up to N suites at once, each with its own fixtures; 'auto': one per "
+                   "core (default 1)")
+        ->type_name("N");
+    app.add_option("--resources", options.resources,
+                   "The pools <resource pool=\"...\"/> takes items from: a JSON file shaped "
+                   "like CTest's resource spec file")
+        ->type_name("FILE");
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -265,6 +292,13 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                     std::string(named.first) + ": an empty name; expected a " +
                     (named.first[std::strlen(named.first) - 1] == 's' ? "folder" : "file"));
             }
+        }
+    }
+
+    if (!jobs.empty()) {
+        const std::string problem = checkJobs(jobs, options.jobs);
+        if (!problem.empty()) {
+            return usageError("--jobs " + jobs + ": " + problem);
         }
     }
 

@@ -55,6 +55,8 @@ struct Options {
     OutputRequest merge;  // type empty: not merging
     std::vector<std::string> mergeReports;
     unsigned int expectShards = 0;
+    unsigned int jobs = 1;  // -j/--jobs N: suites at once; "auto": the machine's cores
+    std::string resources;  // --resources FILE: the pools of <resource pool="..."/>
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();
@@ -67,6 +69,12 @@ struct ParseResult {
     int status = 0;    // exit status when outcome is Exit: 0 for --help/--version, 2 for errors
     std::string text;  // what to print: help/version on stdout, an error on stderr
 };
+
+// The most suites at once (-j): more threads and workers than any machine runs well.
+constexpr unsigned long maxJobs = 1024;
+// -j/--jobs: a whole number from 1 to maxJobs, or "auto" (the machine's cores). Empty when
+// valid (and `jobs` set), else what is expected.
+std::string checkJobs(const std::string& text, unsigned int& jobs);
 
 // The output types this build writes.
 bool isKnownOutputType(const std::string& type);

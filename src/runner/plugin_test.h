@@ -37,8 +37,9 @@ public:
 private:
     const TestSpec& spec_;
     TestExecutor& executor_;
-    TestStatus status_ = TestStatus::Passed;
-    bool ran_ = false;
+    // Read by the gate from other suites' threads while this one runs.
+    std::atomic<TestStatus> status_{TestStatus::Passed};
+    std::atomic<bool> ran_{false};
     unsigned int retries_ = 0;
     std::atomic<bool> interrupted_{false};
 };

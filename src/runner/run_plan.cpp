@@ -109,8 +109,30 @@ void RunPlan::interruptFixtures() {
     }
 }
 
+std::vector<FixtureManager*> RunPlan::fixtures(std::size_t index) const {
+    std::vector<FixtureManager*> managers;
+    const std::size_t end =
+        index + 1 < firstFixture_.size() ? firstFixture_[index + 1] : fixtures_.size();
+    for (std::size_t i = firstFixture_[index]; i < end; ++i) {
+        managers.push_back(fixtures_[i].get());
+    }
+    return managers;
+}
+
+std::vector<PluginTest*> RunPlan::tests(std::size_t index) {
+    std::vector<PluginTest*> standIns;
+    const std::size_t end = index + 1 < firstTest_.size() ? firstTest_[index + 1] : tests_.size();
+    for (std::size_t i = firstTest_[index]; i < end; ++i) {
+        standIns.push_back(&tests_[i]);
+    }
+    return standIns;
+}
+
 void RunPlan::addSuite(SuiteSpec spec) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
+    SuiteLane& lane = lanes_.emplace_back(executor_);
+    firstFixture_.push_back(fixtures_.size());
+    firstTest_.push_back(tests_.size());
     TestSuite& suite = suites_.emplace_back(owned.name);
     suite.setDescription(owned.description);
     suite.getId();  // ids are given here, in plan order, before any event carries them
@@ -126,7 +148,7 @@ void RunPlan::addSuite(SuiteSpec spec) {
         fixtures_.push_back(std::move(manager));
     }
     for (const auto& test : owned.tests) {
-        PluginTest& planned = tests_.emplace_back(test, executor_);
+        PluginTest& planned = tests_.emplace_back(test, lane);
         planned.getId();
         planned.setRetries(retries_);
         suite.addTest(&planned);

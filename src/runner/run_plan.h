@@ -14,6 +14,7 @@
 
 #include "plugin_test.h"
 #include "run_gate.h"
+#include "suite_lane.h"
 #include "suite_model.h"
 #include "test_executor.h"
 
@@ -63,11 +64,25 @@ public:
     void interruptFixtures();
     std::size_t testCount() const { return tests_.size(); }
 
+    // The suites in plan order, for the scheduler (scheduler.h).
+    std::size_t suiteCount() const { return suites_.size(); }
+    TestSuite& suite(std::size_t index) { return suites_[index]; }
+    // Its spec; the tests' param and environment may still be changed before it runs.
+    SuiteSpec& spec(std::size_t index) { return specs_[index]; }
+    // The executor its tests run through.
+    SuiteLane& lane(std::size_t index) { return lanes_[index]; }
+    // Its fixture managers, in document order (one per FixtureSpec).
+    std::vector<FixtureManager*> fixtures(std::size_t index) const;
+    // The stand-ins of its tests, in order.
+    std::vector<PluginTest*> tests(std::size_t index);
+
 private:
     TestExecutor& executor_;
     TestRunner runner_;
     std::deque<SuiteSpec> specs_;  // a deque: the stand-ins point into it
     std::deque<TestSuite> suites_;
+    std::deque<SuiteLane> lanes_;
+    std::vector<std::size_t> firstFixture_, firstTest_;  // per suite, into fixtures_ and tests_
     std::deque<PluginTest> tests_;
     std::vector<std::unique_ptr<FixtureManager>> fixtures_;
     RunGate gate_{tests_};

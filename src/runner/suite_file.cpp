@@ -3,6 +3,7 @@
 #include <robottestingframework/dll/DllPluginLoader.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -268,10 +269,17 @@ public:
         } else if (rootName != "suite") {
             fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
         }
-        checkAttributes(root, {"name", "tags"});
+        checkAttributes(root, {"name", "tags", "exclusive"});
 
         SuiteSpec suite;
         suite.where = where(root);
+        if (root.attribute("exclusive")) {
+            const std::string exclusive = trim(root.attribute("exclusive").value());
+            if (exclusive != "true" && exclusive != "false") {
+                fail(root, "exclusive=\"" + exclusive + "\": expected true or false");
+            }
+            suite.exclusive = exclusive == "true";
+        }
         suite.name = trim(root.attribute("name").value());
         if (suite.name.empty()) {
             suite.name = stemOf(path_);
@@ -327,6 +335,8 @@ public:
                 continue;  // read above
             } else if (name == "fixture") {
                 suite.fixtures.push_back(readFixture(node));
+            } else if (name == "resource") {
+                suite.resources.push_back(readResource(node));
             } else if (name == "test") {
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
@@ -340,9 +350,10 @@ public:
             } else {
                 fail(node, "unknown element <" + name +
                                "> (expected description, environment, timeout, variable, "
-                               "fixture or test)");
+                               "fixture, resource or test)");
             }
         }
+        checkResourceUses(suite);
         for (const auto& variable : table_.all()) {
             suite.variables.push_back(
                 {variable.first, valueOf(root, variable.first), variable.second.origin});
@@ -443,6 +454,86 @@ private:
                     defined.empty() ? "; no variable is defined)" : "; defined: " + defined + ")";
             }
             fail(node, message);
+        }
+    }
+
+    // <resource lock="robot:left-arm"/> or <resource pool="ros_domain" count="1"/>.
+    ResourceSpec readResource(pugi::xml_node node) {
+        checkAttributes(node, {"lock", "pool", "count"});
+        if (!textOf(node).empty()) {
+            fail(node,
+                 "<resource> holds no text; write <resource lock=\"NAME\"/> or "
+                 "<resource pool=\"NAME\" count=\"1\"/>");
+        }
+        ResourceSpec resource;
+        resource.where = where(node);
+        const bool lock = static_cast<bool>(node.attribute("lock"));
+        const bool pool = static_cast<bool>(node.attribute("pool"));
+        if (lock == pool) {
+            fail(node, "<resource> takes one of lock=\"NAME\" or pool=\"NAME\"");
+        }
+        if (lock) {
+            if (node.attribute("count")) {
+                fail(node, "<resource lock=...> takes no count: a lock has one holder");
+            }
+            resource.lock = expand(node, node.attribute("lock").value());
+            if (resource.lock.empty()) {
+                fail(node, "<resource lock=\"\">: a lock needs a name (e.g. robot:left-arm)");
+            }
+            for (char c : resource.lock) {
+                if (std::isspace(static_cast<unsigned char>(c)) ||
+                    static_cast<unsigned char>(c) < 0x20) {
+                    fail(node, "<resource lock=\"" + resource.lock +
+                                   "\">: a lock name has no spaces (e.g. robot:left-arm)");
+                }
+            }
+            return resource;
+        }
+        resource.pool = trim(expand(node, node.attribute("pool").value()));
+        bool name =
+            !resource.pool.empty() && !std::isdigit(static_cast<unsigned char>(resource.pool[0]));
+        for (char c : resource.pool) {
+            name = name && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        }
+        if (!name) {
+            fail(node, "<resource pool=\"" + resource.pool +
+                           "\">: a pool name is letters, digits and _, not starting with a "
+                           "digit (as in the --resources file)");
+        }
+        if (node.attribute("count")) {
+            const std::string text = trim(expand(node, node.attribute("count").value()));
+            const bool digits =
+                !text.empty() && text.size() <= 4 &&
+                std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+            const unsigned long count = digits ? std::stoul(text) : 0;
+            if (count < 1 || count > 1000) {
+                fail(node, "count=\"" + text + "\": expected a whole number from 1 to 1000");
+            }
+            resource.count = static_cast<unsigned int>(count);
+        }
+        return resource;
+    }
+
+    // ${resource.NAME} gets an item of the pool NAME: the suite must take one.
+    void checkResourceUses(const SuiteSpec& suite) const {
+        auto check = [&](const std::string& text, const SourceLocation& at) {
+            for (const auto& pool : variables::resourcesUsed(text)) {
+                const bool taken = std::any_of(
+                    suite.resources.begin(), suite.resources.end(),
+                    [&pool](const ResourceSpec& resource) { return resource.pool == pool; });
+                if (!taken) {
+                    throw SuiteFileError(at.toString() + ": ${resource." + pool +
+                                         "} but the suite takes no item of pool " + pool +
+                                         " (add <resource pool=\"" + pool + "\"/>)");
+                }
+            }
+        };
+        for (const auto& test : suite.tests) {
+            check(test.param, test.where);
+            check(test.environment, test.where);
+        }
+        for (const auto& fixture : suite.fixtures) {
+            check(fixture.param, fixture.where);
         }
     }
 

@@ -4,6 +4,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <robottestingframework/FixtureManager.h>
 #include <robottestingframework/Test.h>
@@ -23,6 +24,14 @@ public:
     virtual void interruptCall() = 0;
 };
 
+// Something that starts worker processes and can hand them extra environment variables
+// ("NAME=VALUE"), e.g. the resource items the scheduler gave a suite (RTF_RESOURCE_<POOL>).
+class WorkerEnvironment {
+public:
+    virtual ~WorkerEnvironment() = default;
+    virtual void setWorkerEnvironment(std::vector<std::string> variables) = 0;
+};
+
 class TestExecutor {
 public:
     virtual ~TestExecutor() = default;
@@ -38,6 +47,10 @@ public:
     // `error` set when it cannot be made.
     virtual std::unique_ptr<FixtureManager> makeFixture(const FixtureSpec& spec,
                                                         std::string& error) = 0;
+    // Another executor sharing this one's workers, whose run() and interrupt() may be called
+    // while this one (or another lane) runs a test: one per suite running at the same time.
+    // nullptr when tests cannot run side by side (in the runner's process).
+    virtual std::unique_ptr<TestExecutor> makeLane() { return nullptr; }
 };
 
 }  // namespace runner

@@ -145,7 +145,9 @@ std::string VariableTable::expandText(const std::string& text, const std::string
                                   text + "' (write $${ for a literal ${)"};
         }
         const std::string name = text.substr(i + 2, close - i - 2);
-        if (name.compare(0, 4, "env:") == 0) {
+        if (name.compare(0, 9, "resource.") == 0 && name.size() > 9) {
+            out += resourceMarker(name.substr(9));  // filled in when the suite is started
+        } else if (name.compare(0, 4, "env:") == 0) {
             const char* value = std::getenv(name.substr(4).c_str());
             if (value == nullptr) {
                 throw ExpandError{ExpandError::Kind::EnvironmentUnset, name,
@@ -282,6 +284,42 @@ std::string escape(const std::string& value) {
         }
     }
     return out;
+}
+
+namespace {
+const char markerEdge = '\x1e';  // ASCII record separator: never in a suite file's text
+const std::string markerStart = std::string(1, markerEdge) + "resource.";
+}  // namespace
+
+std::string resourceMarker(const std::string& pool) {
+    return markerStart + pool + markerEdge;
+}
+
+std::string fillResources(const std::string& text,
+                          const std::function<std::string(const std::string&)>& value) {
+    std::string out;
+    std::size_t from = 0;
+    for (;;) {
+        const std::size_t start = text.find(markerStart, from);
+        const std::size_t end = start == std::string::npos
+                                    ? std::string::npos
+                                    : text.find(markerEdge, start + markerStart.size());
+        if (end == std::string::npos) {
+            return out + text.substr(from);
+        }
+        out += text.substr(from, start - from);
+        out += value(text.substr(start + markerStart.size(), end - start - markerStart.size()));
+        from = end + 1;
+    }
+}
+
+std::vector<std::string> resourcesUsed(const std::string& text) {
+    std::vector<std::string> pools;
+    fillResources(text, [&pools](const std::string& pool) {
+        pools.push_back(pool);
+        return std::string();
+    });
+    return pools;
 }
 
 }  // namespace variables

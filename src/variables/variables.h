@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -89,6 +90,15 @@ bool readVariableFile(const std::string& path, std::vector<Variable>& out, std::
 
 // `value` written so that expanding it gives it back ("${" becomes "$${").
 std::string escape(const std::string& value);
+
+// ${resource.POOL} is known only when the scheduler gives the suite an item of the pool: until
+// then it stays in the text as a marker (that escape() leaves alone), which fillResources()
+// replaces. `value` gives the text for a pool.
+std::string resourceMarker(const std::string& pool);
+std::string fillResources(const std::string& text,
+                          const std::function<std::string(const std::string&)>& value);
+// The pools whose marker `text` holds.
+std::vector<std::string> resourcesUsed(const std::string& text);
 
 }  // namespace variables
 }  // namespace robottestingframework

@@ -3,6 +3,7 @@
 test plug-in alone with params, and the program using the library from its own main().
 Every run is marked with an environment variable its processes inherit, so a process left
 behind (the MQTT broker, the simulated robot) is found by its mark."""
+import json
 import os
 import re
 import socket
@@ -64,6 +65,22 @@ def mark():
     assert not left, f"processes left behind: {left}"
 
 
+def ports_file(folder, copies=1):
+    """A resource file like examples/robot/ports.json, with free ports (other runs share the
+    machine): `copies` items in each pool."""
+    pools = {"broker_port": [{"id": str(free_port())} for _ in range(copies)],
+             "robot_port": [{"id": str(free_port())} for _ in range(copies)]}
+    path = folder / "ports.json"
+    path.write_text(json.dumps({"version": {"major": 1, "minor": 0}, "local": [pools]}))
+    return path
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
 def check_passed(run, junit, names):
     """Each name passed (console and JUnit), as many times as listed; nothing else ran."""
     assert run.returncode == 0, run
@@ -84,15 +101,10 @@ def check_passed(run, junit, names):
 def test_example_suite_passes(tmp_path, mark, suite, isolation):
     junit = tmp_path / "junit.xml"
     run = run_runner("--suite", EXAMPLES / suite, "--isolation", isolation, "--verbose",
+                     "--resources", ports_file(tmp_path),
                      "--output", f"junit:{junit}", cwd=tmp_path, timeout=60,
                      env={"RTF_E2E_MARK": mark})
     check_passed(run, junit, SUITES[suite])
-
-
-def free_port():
-    with socket.socket() as s:
-        s.bind(("127.0.0.1", 0))
-        return s.getsockname()[1]
 
 
 @pytest.mark.parametrize("isolation", ["none", "process"])
@@ -100,6 +112,7 @@ def test_the_robot_example_takes_its_ports_from_variables(tmp_path, mark, isolat
     broker, robot = free_port(), free_port()
     junit = tmp_path / "junit.xml"
     run = run_runner("--suite", EXAMPLES / "robot" / "robot.xml", "--isolation", isolation,
+                     "--resources", ports_file(tmp_path),
                      "--verbose", "--var", f"robot_port={robot}", "--var",
                      f"broker_port={broker}", "--output", f"junit:{junit}", cwd=tmp_path,
                      timeout=60, env={"RTF_E2E_MARK": mark})
@@ -113,7 +126,7 @@ def test_the_quick_start_example_run(tmp_path, mark):
     """The three suites in one run with a report of each type, as `./run.sh example`."""
     started = time.monotonic()
     run = run_runner(*[arg for suite in SUITES for arg in ("--suite", EXAMPLES / suite)],
-                     "--verbose", "--output", "text:example.txt", "--output",
+                     "--resources", ports_file(tmp_path), "--verbose", "--output", "text:example.txt", "--output",
                      "junit:example.xml", "--output", "tap:example.tap", "--output",
                      "json:example.json", "--output", "html:example.html", cwd=tmp_path,
                      timeout=60, env={"RTF_E2E_MARK": mark})
@@ -138,6 +151,23 @@ def test_the_quick_start_example_run(tmp_path, mark):
     # The scripts received their param and the suite's environment.
     assert "param: --joints 6" in run.output, run
     assert "arguments '--speed 3', environment '--robot example-bot'" in run.output, run
+
+
+def test_two_copies_of_the_robot_example_run_side_by_side_on_ports_of_a_pool(tmp_path, mark):
+    ports = ports_file(tmp_path, copies=2)
+    pools = json.loads(ports.read_text())["local"][0]
+    junit = tmp_path / "junit.xml"
+    robot = EXAMPLES / "robot" / "robot.xml"
+    run = run_runner("-j", "2", "--resources", ports, "--suite", robot, "--suite", robot,
+                     "--verbose", "--output", f"junit:{junit}", cwd=tmp_path, timeout=90,
+                     env={"RTF_E2E_MARK": mark})
+    assert run.returncode == 0, run
+    assert re.search(r"^4 passed, 0 failed$", run.stdout, re.MULTILINE), run
+    validate_junit(junit)
+    assert junit.read_text().count("<testcase") == 4
+    for pool in ("broker_port", "robot_port"):  # each copy on ports of its own
+        for item in pools[pool]:
+            assert f"TCP port 127.0.0.1:{item['id']}" in run.output, run
 
 
 def test_example_plugin_reads_its_param():

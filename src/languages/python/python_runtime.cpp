@@ -446,6 +446,17 @@ std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::s
         return nullptr;
     }
 
+    // A pre-started interpreter read its environment before the worker was asked for: the
+    // variables set since (a suite's resource items, RTF_RESOURCE_<POOL>) reach os.environ too.
+    py::object environment = py::module_::import("os").attr("environ");
+    for (char** entry = environ; *entry != nullptr; ++entry) {
+        const std::string variable = *entry;
+        const std::size_t equals = variable.find('=');
+        if (variable.compare(0, 13, "RTF_RESOURCE_") == 0 && equals != std::string::npos) {
+            environment[py::str(variable.substr(0, equals))] = py::str(variable.substr(equals + 1));
+        }
+    }
+
     py::module_ builtins = py::module_::import("builtins");
     py::object code;
     try {
