@@ -341,6 +341,18 @@ end
 module Kernel
   private def exit!(status = false) = Process.exit!(status)
 end
+# Rubygems (left out at start, as it would cost every test) comes with the first require that
+# does not find its file: it then looks among the installed gems, as with ruby.
+module Kernel
+  alias_method :__rtf_require_without_gems, :require
+  private def require(path)
+    __rtf_require_without_gems(path)
+  rescue LoadError
+    raise if defined?(::Gem)
+    __rtf_require_without_gems("rubygems")
+    require(path)
+  end
+end
 )RUBY");
 }
 
