@@ -376,8 +376,8 @@ namespace robottestingframework {
 namespace languages {
 
 // What a test does, on a script of nothing: its code compiled in a module of its own, its
-// TestCase made and called, the output flushed. The first time a process does it, it faults in
-// (and, in a fork, copies) the pages it touches; a rehearsal does that ahead of the test.
+// TestCase made and called, the output flushed; done once by the pre-started VM, so that what
+// Ruby does the first time is not done again in every fork.
 namespace {
 void rehearse() {
     protect([] {
@@ -428,10 +428,6 @@ pid_t forkRuby() {
     return pid;
 }
 
-void rehearseRuby() {
-    RubyVm::run([] { rehearse(); });
-}
-
 int hostRuby(int (*serve)(void*), void* context) {
     int code = 0;
     RubyVm::run([&] { code = serve(context); });
@@ -450,6 +446,6 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
         robottestingframework::languages::prestartRuby,
         robottestingframework::languages::forkRuby,
         robottestingframework::languages::hostRuby,
-        robottestingframework::languages::rehearseRuby};
+        nullptr};  // a Ruby test loads little: rehearsing it in each spare cost more than it saved
     return &module;
 }
