@@ -451,3 +451,27 @@ fi
         output = proc.stdout + proc.stderr
         assert proc.returncode == 0, output
         assert f"LD_BIND_NOW={users} mark=None" in output, output
+
+
+def test_traceback_is_imported_by_the_prestarted_interpreter_or_when_a_test_fails(tmp_path):
+    # traceback (with re, tokenize, linecache...) is most of what a Python test that starts its
+    # own interpreter imports: only a failing test needs it, and a pre-started one has it.
+    tests = {"passing_test.py": """import sys
+
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("traceback imported: %s" % ("traceback" in sys.modules))
+""", "raising_test.py": """def helper():
+    raise ValueError("deliberate")
+
+class TestCase:
+    def run(self):
+        helper()
+"""}
+    for prestart, imported in (("1", "True"), ("0", "False")):
+        r, junit = run_suite(tmp_path, tests, env={"RTF_PRESTART": prestart})
+        assert f"traceback imported: {imported}" in r.output, (prestart, r)
+        raised = junit["raising_test.py"]
+        assert raised.get("status") == "error", (prestart, r)
+        text = message(raised) + "".join(raised.itertext())
+        assert "ValueError: deliberate" in text and "in helper" in text, (prestart, text)

@@ -312,7 +312,6 @@ void ensureInterpreter() {
         {
             // Keeps test folders free of __pycache__ (tests may live in read-only trees).
             py::module_::import("sys").attr("dont_write_bytecode") = true;
-            py::module_::import("traceback");
             py::module_::import("robottestingframework");
             py::dict globals;
             globals["__builtins__"] = py::module_::import("builtins");
@@ -335,7 +334,9 @@ bool prestartInterpreter(std::string& error) {
         // alone, so a test's first collection does not copy every page of it.
         py::gil_scoped_acquire gil;
         // What running a script does the first time (lazy imports, caches) is done once here
-        // instead of in every test.
+        // instead of in every test; so is importing traceback (with re, tokenize...), which only
+        // a failing test needs: a test that starts its own interpreter imports it then.
+        py::module_::import("traceback");
         rehearse();
         py::module_::import("gc").attr("freeze")();
         return true;
