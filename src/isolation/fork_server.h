@@ -42,6 +42,10 @@ private:
     std::mutex mutex_;
 };
 
+// Set beside LD_BIND_NOW when the runner set it for the server (not the user): the server
+// takes both out of its environment, which the tests inherit.
+constexpr const char* kBindNowMark = "RTF_WORKER_BIND_NOW";
+
 // Where robottestingframework-worker is: $RTF_WORKER when set, next to the running program,
 // in ../libexec beside it, then where it was installed. Empty when not found.
 std::string findWorker();

@@ -99,8 +99,9 @@ void prepareChild(pid_t server) {
 }
 
 // A spare: forked ahead of time, so the fork is not on the path of the next test. It waits
-// on `link` for its request and the two descriptors, then becomes that worker.
-[[noreturn]] void waitAsSpare(int link, pid_t server) {
+// on `link` for its request and the two descriptors, then becomes that worker. `language`: the
+// script runtime it was forked from, which rehearses a test meanwhile; empty for the server.
+[[noreturn]] void waitAsSpare(int link, pid_t server, const std::string& language) {
     prepareChild(server);
     if (g_runtimeDescriptors.empty()) {
         ::dup2(link, 4);
@@ -110,6 +111,9 @@ void prepareChild(pid_t server) {
         closeFrom(4, link);
     }
     ::close(3);
+    if (!language.empty()) {
+        languages::rehearseLanguage(language);
+    }
     std::string packet;
     std::vector<FileDescriptor> fds;
     WorkRequest request;
@@ -134,7 +138,7 @@ bool makeSpare(Spare& spare, pid_t server, const std::string& language) {
     }
     pid_t pid = language.empty() ? ::fork() : languages::forkLanguage(language);
     if (pid == 0) {
-        waitAsSpare(theirs.get(), server);
+        waitAsSpare(theirs.get(), server, language);
     }
     if (pid < 0) {
         return false;

@@ -6,9 +6,16 @@
 #include <cstring>
 #include <string>
 
+#include "fork_server.h"
 #include "fork_server_loop.h"
 
 int main(int argc, char** argv) {
+    // The loader has bound every symbol already (see ForkServer::start); the tests' own
+    // programs start as the user's environment says.
+    if (std::getenv(robottestingframework::isolation::kBindNowMark) != nullptr) {
+        ::unsetenv("LD_BIND_NOW");
+        ::unsetenv(robottestingframework::isolation::kBindNowMark);
+    }
     bool verbose = argc == 4 && std::strcmp(argv[3], "--verbose") == 0;
     if ((argc == 3 || verbose) && std::strcmp(argv[1], "--fork-server") == 0) {
         char* end = nullptr;

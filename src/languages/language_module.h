@@ -26,10 +26,13 @@ using ForkFunction = pid_t (*)();
 // Runs `serve(context)` on the thread that may call the runtime and fork it, and returns what
 // it returned (a runtime that must be called from one thread of its own).
 using HostFunction = int (*)(int (*serve)(void*), void* context);
+// In a fork waiting for its test (a spare): does what a test does first, on a script of
+// nothing, so that the pages a test touches are copied before the test, not during it.
+using RehearseFunction = void (*)();
 
 // Changes whenever LanguageModule or Loaded<> changes: a module built for another layout is
 // refused instead of crashing.
-constexpr int kLanguageModuleVersion = 2;
+constexpr int kLanguageModuleVersion = 3;
 
 struct LanguageModule {
     int version;
@@ -38,6 +41,7 @@ struct LanguageModule {
     PrestartFunction prestart;          // nullptr: every worker starts the runtime itself
     ForkFunction fork;                  // nullptr: plain fork()
     HostFunction host;                  // nullptr: any thread (the process's only one)
+    RehearseFunction rehearse;          // nullptr: nothing to do ahead of a test
 };
 
 }  // namespace languages

@@ -134,6 +134,14 @@ pid_t forkLanguage(const std::string& type) {
     return module != nullptr && module->fork != nullptr ? module->fork() : ::fork();
 }
 
+void rehearseLanguage(const std::string& type) {
+    std::string error;
+    const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;
+    if (module != nullptr && module->rehearse != nullptr) {
+        module->rehearse();
+    }
+}
+
 int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted) {
     std::string error;
     const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;

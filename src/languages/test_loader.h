@@ -40,6 +40,9 @@ std::unique_ptr<LoadedFixture> loadFixture(const std::string& type, const std::s
 bool prestartLanguage(const std::string& type, std::string& error);
 // Forks this process once prestartLanguage(type) succeeded, with the runtime's own hooks.
 pid_t forkLanguage(const std::string& type);
+// In a fork made by forkLanguage(type) that waits for its test: what the runtime does ahead of
+// a test (see language_module.h).
+void rehearseLanguage(const std::string& type);
 // Runs `serve(context)` where forkLanguage(type) may be called: on the runtime's own thread
 // when it has one (`hosted` true: this thread then waits), else right here.
 int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted);

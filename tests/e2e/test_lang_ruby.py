@@ -101,3 +101,26 @@ class TestRuby(ScriptLanguageCases):
         path = self.write(tmp_path, "exception")
         r = run_isolated(isolation, "--test", path, "-v")
         assert f"{path}:7:in `run'" in r.output, r
+
+    def test_core_methods_written_in_ruby_and_installed_gems_work(self, tmp_path, isolation):
+        # ruby_setup() alone leaves out what Ruby defines in Ruby (Kernel#class, Dir.glob,
+        # GC.start...); rubygems is not loaded at start but by the first require that needs it.
+        path = tmp_path / "core_test.rb"
+        path.write_text("""class TestCase
+  def run
+    RobotTestingFramework::testCheck(!defined?(Gem), "rubygems waits for a require")
+    RobotTestingFramework::testCheck(1.class == Integer, "Kernel#class")
+    RobotTestingFramework::testCheck([1].tap { |a| a << 2 } == [1, 2], "Kernel#tap")
+    RobotTestingFramework::testCheck(Dir.glob(__FILE__) == [__FILE__], "Dir.glob")
+    GC.start
+    require "json"   # in the standard library
+    require "prime"  # a bundled gem: found through rubygems
+    RobotTestingFramework::testCheck(Prime.first(3) == [2, 3, 5], "a gem")
+    RobotTestingFramework::testReport("core methods and gems: #{JSON.generate([Gem::VERSION.class])}")
+  end
+end
+""")
+        for prestart in ("1", "0"):
+            r = run_isolated(isolation, "--test", path, "-v", env={"RTF_PRESTART": prestart})
+            assert r.returncode == 0, (prestart, r)
+            assert 'core methods and gems: ["String"]' in r.output, (prestart, r)

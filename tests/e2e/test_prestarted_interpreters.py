@@ -4,12 +4,13 @@ isolation promises (crash, exit, hang, Ctrl-C, SIGKILL of the runner) still hold
 import os
 import re
 import signal
+import subprocess
 import time
 import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import leftover_processes, marked, run_runner, start_runner
+from conftest import RUNNER, leftover_processes, marked, run_runner, start_runner
 from test_isolation_interrupts import finish, wait_for
 
 PRESTARTED = re.compile(r"(\w+) tests run in forks of a pre-started interpreter \(pid (\d+)\)")
@@ -354,3 +355,123 @@ class TestCase:
     assert junit["b_test.py"].get("status") == "passed", r
     assert PRESTARTED.search(r.stderr), r
     assert leftover_processes(marker) == []
+
+
+# Reads /proc: the minor page faults of a process, and the spare waiting beside this test (the
+# other child of the pre-started interpreter).
+SPARE_FAULTS = """import os
+import time
+
+
+def faults(pid):
+    with open("/proc/%d/stat" % pid) as f:
+        return int(f.read().rsplit(")", 1)[1].split()[7])
+
+
+def spare_beside(me):
+    parent = os.getppid()
+    deadline = time.monotonic() + 10
+    while time.monotonic() < deadline:
+        with open("/proc/%d/task/%d/children" % (parent, parent)) as f:
+            others = [int(pid) for pid in f.read().split() if int(pid) != me]
+        if others:
+            return others[0]
+        time.sleep(0.02)
+    raise RuntimeError("no spare beside the test")
+"""
+
+
+def test_a_python_spare_rehearses_a_test_before_its_own_comes(tmp_path):
+    # The spare forked for the next test runs a script of nothing while this one runs, so the
+    # pages a test touches are copied before its request: it has already faulted in a good part
+    # of what a whole test (this one) faulted in. Without the rehearsal it only has its fork's.
+    tests = {"a_test.py": SPARE_FAULTS + """
+
+class TestCase:
+    def run(self):
+        me = os.getpid()
+        spare = spare_beside(me)
+        deadline = time.monotonic() + 10  # the spare may not have had a processor yet
+        while faults(spare) <= 0.3 * faults(me) and time.monotonic() < deadline:
+            time.sleep(0.05)
+        ratio = faults(spare) / faults(me)
+        robottestingframework.testCheck(ratio > 0.3, "the spare rehearsed a test (%.2f)" % ratio)
+""", "b_test.py": """import sys
+
+class TestCase:
+    def run(self):
+        # Nothing of the rehearsal is left: no other script module, no "/dev" on the path.
+        scripts = [name for name in sys.modules if name.startswith("_rtf_script_")]
+        robottestingframework.testCheck(scripts == [__name__], "modules: %s" % scripts)
+        robottestingframework.testCheck("/dev" not in sys.path, "path: %s" % sys.path)
+"""}
+    r, junit = run_suite(tmp_path, tests)
+    assert PRESTARTED.search(r.stderr), r
+    assert junit["a_test.py"].get("status") == "passed", r
+    assert junit["b_test.py"].get("status") == "passed", r
+
+
+BIND_NOW = """import os
+
+
+class TestCase:
+    def run(self):
+        with open("/proc/self/environ", "rb") as f:
+            started = f.read().split(b"\\0")
+        robottestingframework.testCheck(b"LD_BIND_NOW=1" in started,
+                                        "the worker started with every symbol bound")
+        robottestingframework.testReport(
+            "LD_BIND_NOW=%s mark=%s" % (os.environ.get("LD_BIND_NOW"),
+                                        os.environ.get("RTF_WORKER_BIND_NOW")))
+"""
+
+
+def test_workers_start_bound_yet_tests_see_the_users_environment(tmp_path):
+    # The runner starts its worker with LD_BIND_NOW=1 (no symbol resolved again in each fork)
+    # and takes it out of the environment the tests see; a user's own LD_BIND_NOW stays.
+    (tmp_path / "bind_test.py").write_text(BIND_NOW)
+    env = {k: v for k, v in os.environ.items() if k not in ("LD_BIND_NOW", "RTF_WORKER_BIND_NOW")}
+    for users in (None, "1"):
+        shell = tmp_path / "env_test.sh"
+        shell.write_text(f"""#!/bin/sh
+echo "1..1"
+if [ "${{LD_BIND_NOW-unset}}" = "{users or 'unset'}" ] && [ -z "${{RTF_WORKER_BIND_NOW+x}}" ]; then
+    echo "ok 1"
+else
+    echo "not ok 1 - LD_BIND_NOW=${{LD_BIND_NOW-unset}} mark=${{RTF_WORKER_BIND_NOW-unset}}"
+fi
+""")
+        shell.chmod(0o755)
+        suite = tmp_path / "suite.xml"
+        suite.write_text(f'<suite name="env"><test>{tmp_path / "bind_test.py"}</test>'
+                         f"<test>{shell}</test></suite>\n")
+        proc = subprocess.run([RUNNER, "--suite", str(suite), "-v"],
+                              env=dict(env, LD_BIND_NOW=users) if users else env,
+                              capture_output=True, text=True, timeout=120)
+        output = proc.stdout + proc.stderr
+        assert proc.returncode == 0, output
+        assert f"LD_BIND_NOW={users} mark=None" in output, output
+
+
+def test_traceback_is_imported_by_the_prestarted_interpreter_or_when_a_test_fails(tmp_path):
+    # traceback (with re, tokenize, linecache...) is most of what a Python test that starts its
+    # own interpreter imports: only a failing test needs it, and a pre-started one has it.
+    tests = {"passing_test.py": """import sys
+
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("traceback imported: %s" % ("traceback" in sys.modules))
+""", "raising_test.py": """def helper():
+    raise ValueError("deliberate")
+
+class TestCase:
+    def run(self):
+        helper()
+"""}
+    for prestart, imported in (("1", "True"), ("0", "False")):
+        r, junit = run_suite(tmp_path, tests, env={"RTF_PRESTART": prestart})
+        assert f"traceback imported: {imported}" in r.output, (prestart, r)
+        raised = junit["raising_test.py"]
+        assert raised.get("status") == "error", (prestart, r)
+        text = message(raised) + "".join(raised.itertext())
+        assert "ValueError: deliberate" in text and "in helper" in text, (prestart, text)

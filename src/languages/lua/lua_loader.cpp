@@ -312,6 +312,7 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
         nullptr,
         robottestingframework::languages::prestartLua,
         nullptr,
+        nullptr,
         nullptr};
     return &module;
 }

@@ -250,6 +250,7 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
         robottestingframework::languages::loadPythonFixture,
         robottestingframework::languages::python::prestartInterpreter,
         robottestingframework::languages::python::forkInterpreter,
-        nullptr};
+        nullptr,
+        robottestingframework::languages::python::rehearseInFork};
     return &module;
 }

@@ -276,6 +276,20 @@ void guardProcessExit() {
     g_exitGuard = globals.release().ptr();  // never released, like the interpreter
 }
 
+// What a test does, on a script of nothing: compile, run it as a module, make its TestCase and
+// call it, in its Scope. The first time a process does it, it faults in (and, in a fork, copies)
+// the pages it touches; a rehearsal does that ahead of the test (GIL held).
+void rehearse() {
+    std::string ignored;
+    std::unique_ptr<ScriptModule> script = ScriptModule::fromSource(
+        "class TestCase:\n    def run(self):\n        pass\n", "/dev/null", ignored);
+    if (!script) {
+        return;
+    }
+    ScriptModule::Call call(*script);
+    script->attribute("TestCase")().attr("run")();
+}
+
 }  // namespace
 
 void ensureInterpreter() {
@@ -298,7 +312,6 @@ void ensureInterpreter() {
         {
             // Keeps test folders free of __pycache__ (tests may live in read-only trees).
             py::module_::import("sys").attr("dont_write_bytecode") = true;
-            py::module_::import("traceback");
             py::module_::import("robottestingframework");
             py::dict globals;
             globals["__builtins__"] = py::module_::import("builtins");
@@ -320,10 +333,11 @@ bool prestartInterpreter(std::string& error) {
         // What the interpreter made so far is shared by every fork: the collector leaves it
         // alone, so a test's first collection does not copy every page of it.
         py::gil_scoped_acquire gil;
-        // A rehearsal on an empty script: what loading one does the first time (lazy imports,
-        // caches) is done once here instead of in every test.
-        std::string ignored;
-        ScriptModule::load("/dev/null", ignored);
+        // What running a script does the first time (lazy imports, caches) is done once here
+        // instead of in every test; so is importing traceback (with re, tokenize...), which only
+        // a failing test needs: a test that starts its own interpreter imports it then.
+        py::module_::import("traceback");
+        rehearse();
         py::module_::import("gc").attr("freeze")();
         return true;
     } catch (const std::exception& e) {
@@ -349,6 +363,15 @@ pid_t forkInterpreter() {
     }
     PyGILState_Release(gil);
     return pid;
+}
+
+void rehearseInFork() {
+    py::gil_scoped_acquire gil;
+    try {
+        rehearse();
+    } catch (const std::exception&) {
+        PyErr_Clear();  // nothing of it is kept: the test does its own
+    }
 }
 
 void wakeScript(unsigned long thread) {
@@ -424,7 +447,6 @@ void rethrow(py::error_already_set& error) {
 }
 
 std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::string& error) {
-    static unsigned long counter = 0;
     std::ifstream file(path, std::ios::binary);
     if (!file) {
         error = "cannot read " + path;
@@ -432,7 +454,13 @@ std::unique_ptr<ScriptModule> ScriptModule::load(const std::string& path, std::s
     }
     std::stringstream source;
     source << file.rdbuf();
-    const std::string text = source.str();
+    return fromSource(source.str(), path, error);
+}
+
+std::unique_ptr<ScriptModule> ScriptModule::fromSource(const std::string& text,
+                                                       const std::string& path,
+                                                       std::string& error) {
+    static unsigned long counter = 0;
     // compile() would only say "source code string cannot contain null bytes", without where.
     const std::size_t nul = text.find('\0');
     if (nul != std::string::npos) {

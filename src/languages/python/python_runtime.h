@@ -29,6 +29,8 @@ bool prestartInterpreter(std::string& error);
 // fork() with the interpreter's own hooks (os.register_at_fork, its locks, threading's state),
 // as os.fork() does; the GIL is released again on both sides.
 pid_t forkInterpreter();
+// In a fork waiting for its test: rehearses a test (language_module.h).
+void rehearseInFork();
 
 // Wakes the script running on `thread` (a PyThread ident) out of a blocking call (time.sleep,
 // a wait) so that an exception set for it is raised now: a signal whose Python handler raises
@@ -63,6 +65,9 @@ public:
     // nullptr and `error` set (a syntax error as Python shows it, or the traceback of the
     // exception the module raised) on failure. GIL held.
     static std::unique_ptr<ScriptModule> load(const std::string& path, std::string& error);
+    // The same from `text`, the content of `path`.
+    static std::unique_ptr<ScriptModule> fromSource(const std::string& text,
+                                                    const std::string& path, std::string& error);
     ~ScriptModule();  // takes the GIL
 
     // The module's attribute `name`, or None (GIL held).

@@ -3,6 +3,7 @@
 // anonymous module, so two tests' classes and top-level methods never meet.
 #include <ruby.h>
 #include <ruby/encoding.h>
+#include <unistd.h>
 
 #include <string>
 
@@ -340,6 +341,18 @@ end
 module Kernel
   private def exit!(status = false) = Process.exit!(status)
 end
+# Rubygems (left out at start, as it would cost every test) comes with the first require that
+# does not find its file: it then looks among the installed gems, as with ruby.
+module Kernel
+  alias_method :__rtf_require_without_gems, :require
+  private def require(path)
+    __rtf_require_without_gems(path)
+  rescue LoadError
+    raise if defined?(::Gem)
+    __rtf_require_without_gems("rubygems")
+    require(path)
+  end
+end
 )RUBY");
 }
 
@@ -362,12 +375,35 @@ std::unique_ptr<LoadedTest> loadRubyTest(const std::string& path, std::string& e
 namespace robottestingframework {
 namespace languages {
 
+// What a test does, on a script of nothing: its code compiled in a module of its own, its
+// TestCase made and called, the output flushed; done once by the pre-started VM, so that what
+// Ruby does the first time is not done again in every fork.
+namespace {
+void rehearse() {
+    protect([] {
+        VALUE module = rb_module_new();
+        rb_funcall(module, rb_intern("module_eval"), 3,
+                   rb_str_new_cstr("class TestCase\n  def run\n  end\nend\n"),
+                   rb_str_new_cstr("/dev/null"), INT2FIX(1));
+        VALUE type = rb_const_get_at(module, rb_intern("TestCase"));
+        rb_include_module(type, module);
+        VALUE instance = rb_class_new_instance(0, nullptr, type);
+        if (rb_respond_to(instance, rb_intern("run"))) {
+            rb_funcall(instance, rb_intern("run"), 0);
+        }
+    });
+    flushOutput();
+}
+}  // namespace
+
 // The pre-started VM: its thread (ruby_vm.h) runs the fork server's loop and forks each
 // worker, so a worker's only thread is the one Ruby knows. The process's first thread only
 // waits for it, and is not in any worker.
 bool prestartRuby(std::string& error) {
     try {
         RubyVm::start();
+        // What running a script does the first time is done once here, not in every test.
+        RubyVm::run([] { rehearse(); });
         return true;
     } catch (const std::exception& e) {
         error = e.what();
@@ -378,13 +414,15 @@ bool prestartRuby(std::string& error) {
 pid_t forkRuby() {
     pid_t pid = RubyVm::fork();
     if (pid == 0) {
-        // A worker is the process exit! must not end (see the guard above).
         RubyVm::run([] {
-            int state = 0;
-            rb_eval_string_protect(
-                "RobotTestingFramework.send(:remove_const, :PROCESS_ID)\n"
-                "RobotTestingFramework.const_set(:PROCESS_ID, Process.pid)\n",
-                &state);
+            // A worker is the process exit! must not end (see the guard above); set from C, as
+            // compiling Ruby code here would cost every test.
+            protect([] {
+                VALUE module = rb_const_get(rb_cObject, rb_intern("RobotTestingFramework"));
+                ID name = rb_intern("PROCESS_ID");
+                rb_const_remove(module, name);
+                rb_const_set(module, name, PIDT2NUM(::getpid()));
+            });
         });
     }
     return pid;
@@ -407,6 +445,7 @@ const robottestingframework::languages::LanguageModule* rtf_language_module() {
         nullptr,
         robottestingframework::languages::prestartRuby,
         robottestingframework::languages::forkRuby,
-        robottestingframework::languages::hostRuby};
+        robottestingframework::languages::hostRuby,
+        nullptr};  // a Ruby test loads little: rehearsing it in each spare cost more than it saved
     return &module;
 }

@@ -85,7 +85,13 @@ private:
             sigaction(kHostSignals[i], nullptr, &saved[i]);
         }
         ruby_setup();
-        ruby_init_loadpath();
+        // What `ruby` does before it runs a script, on an empty one that is never run: the load
+        // path, RUBYOPT, and the core methods written in Ruby (Kernel#class, Dir.glob,
+        // GC.start...), which ruby_setup() alone leaves out. Rubygems is loaded by the first
+        // require that needs it (defineRubyModule), not by every test.
+        char program[] = "ruby", noGems[] = "--disable-gems", script[] = "-e", empty[] = "";
+        char* arguments[] = {program, noGems, script, empty};
+        ruby_options(4, arguments);
         ruby_script("robottestingframework");
         // Files and strings read by scripts are UTF-8, as with ruby itself on a UTF-8 system,
         // whatever the runner's locale (it never calls setlocale: Ruby would see ASCII-8BIT).
