@@ -12,6 +12,7 @@ packages=(
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
     python3-yaml
+    gcovr
 )
 
 missing=()

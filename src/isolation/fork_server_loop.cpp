@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "clock.h"
+#include "coverage.h"
 #include "fd_passing.h"
 #include "file_descriptor.h"
 #include "process.h"
@@ -95,6 +96,7 @@ void prepareChild(pid_t server) {
                                                           : runTestWorker(request, 3);
     ::fflush(stdout);
     ::fflush(stderr);
+    platform::flushCoverage();
     ::_exit(code);
 }
 
@@ -213,6 +215,7 @@ int serve(int control, const std::string& language, bool verbose);
     }
     if (!ready) {
         platform::sendWithFds(3, "refused: " + error, {});
+        platform::flushCoverage();
         ::_exit(0);
     }
     for (int fd : platform::openDescriptors()) {
@@ -246,6 +249,7 @@ int serve(int control, const std::string& language, bool verbose);
             return serve(3, context->language, false);
         },
         &context, context.hosted);
+    platform::flushCoverage();
     ::_exit(code);
 }
 

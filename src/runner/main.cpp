@@ -16,6 +16,7 @@
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/WebProgressListener.h>
 
+#include "coverage.h"
 #include "in_process_executor.h"
 #include "isolated_executor.h"
 #include "listing.h"
@@ -103,6 +104,7 @@ private:
                 // we are gone; what the runner itself started (in-process tests) is killed here.
                 platform::killDescendants(::getpid());
                 quit_();
+                platform::flushCoverage();
                 ::_exit(interruptedBy(received_));
             }
             if (received_ != 0) {

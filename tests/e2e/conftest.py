@@ -13,6 +13,8 @@ RUNNER = os.environ.get("RTF_TESTRUNNER", "")
 PLUGIN_DIR = Path(os.environ.get("RTF_TEST_PLUGIN_DIR", "."))
 SOURCE_DIR = Path(os.environ.get("RTF_SOURCE_DIR", "."))
 BUILD_DIR = Path(os.environ.get("RTF_BUILD_DIR", "."))
+# Set by ctest in a build with RTF_SANITIZE=ON (tests/sanitizers/environment.cmake.in).
+SANITIZED = os.environ.get("RTF_SANITIZED") == "1"
 # The JUnit schema this project writes and owns (schemas/junit.xsd at the root).
 SCHEMA = SOURCE_DIR / "schemas" / "junit.xsd"
 
@@ -33,13 +35,42 @@ class Run:
         return f"<exit {self.returncode}>\n--- stdout\n{self.stdout}\n--- stderr\n{self.stderr}"
 
 
+def _hosts_ruby(args):
+    """True when a run of the runner with `args` starts the Ruby VM in its own process: in
+    process (--isolation none) with a Ruby script named, or named in a suite file given."""
+    args = [str(a) for a in args]
+    in_process = "--isolation=none" in args or any(
+        a == "--isolation" and b == "none" for a, b in zip(args, args[1:]))
+    if not in_process:
+        return False
+    for arg in args:
+        if arg.endswith(".rb"):
+            return True
+        if arg.endswith(".xml") and os.path.isfile(arg):
+            with open(arg, errors="replace") as f:
+                if ".rb" in f.read():
+                    return True
+    return False
+
+
+def runner_environment(args, env):
+    """The environment of one run of the runner: ours with `env` applied. Under the sanitizer
+    job (ctest in build-asan/, tests/sanitizers/), a runner that hosts the Ruby VM runs without
+    leak checks: LeakSanitizer crashes on the VM's thread at exit. ASan and UBSan stay on."""
+    full_env = dict(os.environ)
+    if env:
+        full_env.update(env)
+    asan = full_env.get("ASAN_OPTIONS", "")
+    if "detect_leaks=1" in asan and _hosts_ruby(args):
+        full_env["ASAN_OPTIONS"] = asan.replace("detect_leaks=1", "detect_leaks=0")
+    return full_env
+
+
 def run_runner(*args, timeout=120, cwd=None, env=None, input=None):
     """Runs the runner with `args`; returns Run (exit status, stdout, stderr).
     The runner is killed (its whole process group) if it outlives `timeout`."""
     assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
-    full_env = dict(os.environ)
-    if env:
-        full_env.update(env)
+    full_env = runner_environment(args, env)
     proc = subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.PIPE if input else subprocess.DEVNULL,
@@ -140,9 +171,7 @@ def start_runner(*args, cwd=None, env=None):
     """Starts the runner without waiting (for tests that signal it): a Popen in a session of
     its own, text stdout/stderr pipes."""
     assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
-    full_env = dict(os.environ)
-    if env:
-        full_env.update(env)
+    full_env = runner_environment(args, env)
     return subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.DEVNULL, start_new_session=True, text=True)

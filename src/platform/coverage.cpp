@@ -1,0 +1,18 @@
+#include "coverage.h"
+
+#ifdef RTF_COVERAGE
+// libgcov's, linked in by --coverage: writes the counters so far to the .gcda files.
+extern "C" void __gcov_dump(void);
+#endif
+
+namespace robottestingframework {
+namespace platform {
+
+void flushCoverage() {
+#ifdef RTF_COVERAGE
+    __gcov_dump();
+#endif
+}
+
+}  // namespace platform
+}  // namespace robottestingframework
