@@ -2,10 +2,14 @@
 
 #include <cxxabi.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <exception>
+#include <iterator>
 #include <memory>
+#include <mutex>
 #include <typeinfo>
+#include <vector>
 
 #include <robottestingframework/Arguments.h>
 #include <robottestingframework/Exception.h>
@@ -15,8 +19,26 @@ namespace robottestingframework {
 
 namespace {
 
-// Process-wide, not per thread: helper threads a test starts report to it too.
-std::atomic<TestCase*> runningTest{nullptr};
+// The test the calling thread runs, if it runs one; otherwise the test started last among those
+// running in the process, so helper threads a test starts report to it too. A list, not one
+// pointer: runs in several threads of one process (TestRunner in two threads, the scheduler's
+// lanes) end in any order, and each must take out only itself.
+thread_local TestCase* threadTest = nullptr;
+std::mutex runningMutex;
+std::vector<TestCase*> runningTests;
+
+void startRunning(TestCase* test) {
+    std::lock_guard<std::mutex> lock(runningMutex);
+    runningTests.push_back(test);
+}
+
+void stopRunning(TestCase* test) {
+    std::lock_guard<std::mutex> lock(runningMutex);
+    auto found = std::find(runningTests.rbegin(), runningTests.rend(), test);
+    if (found != runningTests.rend()) {
+        runningTests.erase(std::next(found).base());
+    }
+}
 
 std::string typeName(const std::type_info& type) {
     int status = 0;
@@ -30,8 +52,12 @@ std::string typeName(const std::type_info& type) {
 TestCase::TestCase(std::string name, std::string param) : Test(std::move(name)), param_(param) {}
 
 TestCase::~TestCase() {
-    TestCase* self = this;
-    runningTest.compare_exchange_strong(self, nullptr);
+    if (threadTest == this) {
+        threadTest = nullptr;
+    }
+    std::lock_guard<std::mutex> lock(runningMutex);
+    runningTests.erase(std::remove(runningTests.begin(), runningTests.end(), this),
+                       runningTests.end());
 }
 
 bool TestCase::setup(int /*argc*/, char** /*argv*/) {
@@ -41,7 +67,11 @@ bool TestCase::setup(int /*argc*/, char** /*argv*/) {
 void TestCase::tearDown() {}
 
 TestCase* TestCase::current() {
-    return runningTest.load();
+    if (threadTest != nullptr) {
+        return threadTest;
+    }
+    std::lock_guard<std::mutex> lock(runningMutex);
+    return runningTests.empty() ? nullptr : runningTests.back();
 }
 
 void TestCase::interrupt() {
@@ -95,7 +125,9 @@ void TestCase::run(TestResult& result) {
     failureReported_ = false;
     clearCriticalError();
     result_ = &result;
-    TestCase* const previous = runningTest.exchange(this);
+    TestCase* const previous = threadTest;
+    threadTest = this;
+    startRunning(this);
 
     result.startTest(this);
     reportRenamesTo(&result);
@@ -143,7 +175,8 @@ void TestCase::run(TestResult& result) {
     reportRenamesTo(nullptr);
     result.endTest(this);
 
-    runningTest.store(previous);
+    stopRunning(this);
+    threadTest = previous;
     result_ = nullptr;
     interrupted_ = false;
 }

@@ -1,3 +1,4 @@
+#include <future>
 #include <stdexcept>
 #include <thread>
 
@@ -219,6 +220,33 @@ TEST(TestCase, HelperThreadsOfATestReportToIt) {
     });
     test.run(r.result);
     EXPECT_TRUE(contains(eventLines(r.collector), "report t: from a helper thread"));
+}
+
+// Two runs in two threads of one process (the scheduler's lanes, or two TestRunners): the first
+// to end must not take the other's test away from it.
+TEST(TestCase, RunsInTwoThreadsEachKeepTheirCurrentTestWhicheverEndsFirst) {
+    Harness first;
+    Harness second;
+    std::promise<void> secondStarted;
+    std::promise<void> firstEnded;
+    TestCase* seenBySecond = nullptr;
+    LambdaTest a("a", [&] { secondStarted.get_future().wait(); });
+    LambdaTest b("b", [&] {
+        secondStarted.set_value();
+        firstEnded.get_future().wait();
+        seenBySecond = TestCase::current();
+        ROBOTTESTINGFRAMEWORK_TEST_REPORT("after a ended");
+    });
+    std::thread one([&] {
+        a.run(first.result);
+        firstEnded.set_value();
+    });
+    std::thread two([&] { b.run(second.result); });
+    one.join();
+    two.join();
+    EXPECT_EQ(seenBySecond, &b);
+    EXPECT_TRUE(contains(eventLines(second.collector), "report b: after a ended"));
+    EXPECT_EQ(TestCase::current(), nullptr);
 }
 
 TEST(Exception, WhatHasMessageDetailAndLocation) {
