@@ -264,3 +264,24 @@ def test_shard_variables_never_reach_the_tests(tmp_path, isolation):
     assert status.exists()
     validate_junit(xml)
     assert suites_of(xml) == ["s00"]
+
+
+def test_suites_sharing_a_lock_go_to_the_same_shard(tmp_path):
+    # Round-robin would put s00 and s01 on different shards; their common lock keeps them
+    # together (and s02, which shares another lock with s01, follows them).
+    suites = make_suites(tmp_path / "suites", count=4, failing=())
+    locks = {0: ["robot:arm"], 1: ["robot:arm", "robot:base"], 2: ["robot:base"], 3: []}
+    for i, names in locks.items():
+        path = suites / f"suite-{i:02d}.xml"
+        resources = "".join(f'  <resource lock="{name}"/>\n' for name in names)
+        path.write_text(path.read_text().replace(">\n", ">\n" + resources, 1))
+    listing = tmp_path / "list.json"
+    r = run("--suites", suites, "--list", "--shard-index", 0, "--shard-count", 2, "-o",
+            f"json:{listing}")
+    assert r.returncode == 0, r
+    shard = [s["shard"] for s in json.loads(listing.read_text())["suites"]]
+    assert shard[0] == shard[1] == shard[2], shard
+    assert shard[3] != shard[0], shard
+    # And the runs of both shards hold every suite once.
+    xmls, _ = shard_reports(tmp_path, suites, 2)
+    assert sorted(name for xml in xmls for name in suites_of(xml)) == ["s00", "s01", "s02", "s03"]
