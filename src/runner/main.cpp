@@ -322,6 +322,7 @@ int main(int argc, char** argv) {
     console.setColors(colours);
     console.showChecks(options.detail);
     console.showSummary(!options.noSummary);
+    console.setRetries(options.retries);
     if (!options.verbose) {
         console.hideUncriticalMessages();
     }
