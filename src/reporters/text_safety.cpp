@@ -104,5 +104,56 @@ std::string jsonString(const std::string& text) {
     return out;
 }
 
+std::string escapeMarkup(const std::string& text, Markup where) {
+    const bool attribute = where == Markup::Attribute;
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x80) {
+            const std::size_t length = validSequence(text, i);
+            if (length == 0) {
+                ++i;
+            } else {
+                out.append(text, i, length);
+                i += length;
+            }
+            continue;
+        }
+        ++i;
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += where == Markup::Text ? "\"" : "&quot;";
+                break;
+            case '\'':
+                out += where == Markup::Quoted ? "&#39;" : "'";
+                break;
+            case '\r':
+                out += "&#13;";
+                break;
+            case '\n':
+                out += attribute ? "&#10;" : "\n";
+                break;
+            case '\t':
+                out += attribute ? "&#9;" : "\t";
+                break;
+            default:
+                if (c >= 0x20) {
+                    out += static_cast<char>(c);
+                }
+        }
+    }
+    return out;
+}
+
 }  // namespace reporters
 }  // namespace robottestingframework

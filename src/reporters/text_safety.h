@@ -16,5 +16,17 @@ std::string validUtf8(const std::string& text);
 // `>` and `&` as \u escapes so the literal stays inert inside an HTML <script>.
 std::string jsonString(const std::string& text);
 
+// Where escapeMarkup's result goes.
+enum class Markup {
+    Text,       // XML or HTML element content: `&`, `<`, `>` as entities
+    Quoted,     // content that may end up inside quotes: `"` and `'` as entities too
+    Attribute,  // a "-quoted attribute value: `"` as an entity, and tab and newline as
+                // character references so that attribute normalisation keeps them
+};
+// `text` as XML 1.0 / HTML text for `where`: markup characters as entities, and what XML 1.0
+// cannot hold (control characters other than tab, newline and carriage return, bytes that are
+// not valid UTF-8) dropped. The one escaping of the JUnit report and the web page's log.
+std::string escapeMarkup(const std::string& text, Markup where);
+
 }  // namespace reporters
 }  // namespace robottestingframework
