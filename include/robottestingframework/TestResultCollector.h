@@ -21,6 +21,16 @@ struct TestAttempt {
     double duration = 0;  // seconds
 };
 
+// One repetition of a test that runs several times (repetition="N"); its id is
+// repetitionId(test id, index).
+struct TestRepetition {
+    unsigned int index = 0;  // 1..count
+    unsigned int count = 0;
+    TestStatus status = TestStatus::Passed;  // the highest state its events gave
+    double start = 0;                        // seconds since the collector started
+    double duration = 0;                     // seconds
+};
+
 // One test as the outputs show it.
 struct TestRecord {
     std::uint64_t id = 0;  // the test's Test::getId()
@@ -34,6 +44,8 @@ struct TestRecord {
     // The earlier failed attempts, oldest first, when the test ran again (--retries); the
     // state, events and output above are the last attempt's, start and duration all of them.
     std::vector<TestAttempt> attempts;
+    // Its repetitions in order (of the last attempt), when it runs several times; else empty.
+    std::vector<TestRepetition> repetitions;
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
 };
@@ -107,6 +119,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by
@@ -116,11 +129,13 @@ private:
         const Test* test;  // only to end it when the run is cut short
         std::size_t suite;
         std::size_t index;
+        unsigned int repetition = 0;  // the one its events now belong to; 0: runs once
     };
     static constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     double now() const;
     void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
+    OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
 
     std::chrono::steady_clock::time_point origin_;

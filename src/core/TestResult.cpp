@@ -80,6 +80,10 @@ void TestResult::retryTest(const Test* test, TestMessage msg) {
     RTF_DISPATCH(retryTest(test, msg))
 }
 
+void TestResult::startRepetition(const Test* test, unsigned int index, unsigned int count) {
+    RTF_DISPATCH(startRepetition(test, index, count))
+}
+
 void TestResult::addInterrupted(const Test* test, TestMessage msg) {
     RTF_DISPATCH(addInterrupted(test, msg))
 }

@@ -127,17 +127,21 @@ SuiteRecord& TestResultCollector::currentSuite() {
     return suites_[looseSuite_];
 }
 
-void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
-    // A test's own event goes to its record; anything else open (a fixture's report from a
-    // watcher thread, a collapse) belongs to the suite.
-    TestRecord* owner = nullptr;
+TestResultCollector::OpenTest* TestResultCollector::findOpen(const Test* test) {
     const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
         if (it->id == id) {
-            owner = &suites_[it->suite].tests[it->index];
-            break;
+            return &*it;
         }
     }
+    return nullptr;
+}
+
+void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
+    // A test's own event goes to its record (and its repetition); anything else open (a
+    // fixture's report from a watcher thread, a collapse) belongs to the suite.
+    const OpenTest* open = findOpen(test);
+    TestRecord* owner = open != nullptr ? &suites_[open->suite].tests[open->index] : nullptr;
     const bool logged = keepEvents_ && keepLog_;
     // Most events of a passing test are checks: without the log they need not be copied.
     if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
@@ -145,10 +149,15 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
     }
     ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
     if (owner != nullptr) {
+        event.repetition = open->repetition;
         if (kind == Kind::Output) {
             owner->output += event.message.getMessage();
         } else if (kind != Kind::Check || keepChecks_) {
             owner->status = std::max(owner->status, stateOf(kind));
+            if (event.repetition != 0 && !owner->repetitions.empty()) {
+                TestStatus& state = owner->repetitions.back().status;
+                state = std::max(state, stateOf(kind));
+            }
             owner->events.push_back(logged ? event : std::move(event));
         }
     } else if (!openSuites_.empty()) {
@@ -213,6 +222,25 @@ void TestResultCollector::renameTest(const Test* test, const std::string& name) 
     }
 }
 
+void TestResultCollector::startRepetition(const Test* test, unsigned int index,
+                                          unsigned int count) {
+    OpenTest* open = findOpen(test);
+    if (open != nullptr) {
+        const double time = now();
+        TestRecord& owner = suites_[open->suite].tests[open->index];
+        if (!owner.repetitions.empty()) {
+            owner.repetitions.back().duration = time - owner.repetitions.back().start;
+        }
+        TestRepetition repetition;
+        repetition.index = index;
+        repetition.count = count;
+        repetition.start = time;
+        owner.repetitions.push_back(repetition);
+        open->repetition = index;
+    }
+    record(Kind::Report, test, repetitionMessage(index, count));
+}
+
 void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     if (test == nullptr || lastEnded_.id != test->getId() || lastEnded_.suite >= suites_.size() ||
         lastEnded_.index >= suites_[lastEnded_.suite].tests.size()) {
@@ -242,6 +270,7 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     record.status = TestStatus::Passed;
     record.events.clear();
     record.output.clear();
+    record.repetitions.clear();
     retrying_ = lastEnded_;
     lastEnded_ = {0, nullptr, none, none};
 }
@@ -254,6 +283,7 @@ void TestResultCollector::startTest(const Test* test) {
     if (test != nullptr && retrying_.id != 0 && retrying_.id == test->getId()) {
         OpenTest reopened = retrying_;
         reopened.test = test;
+        reopened.repetition = 0;
         openTests_.push_back(reopened);  // the same record, one attempt more
         retrying_ = {0, nullptr, none, none};
         return;
@@ -288,6 +318,9 @@ void TestResultCollector::endTest(const Test* test) {
         }
         TestRecord& record = suites_[open.suite].tests[open.index];
         record.duration = time - record.start;
+        if (!record.repetitions.empty()) {
+            record.repetitions.back().duration = time - record.repetitions.back().start;
+        }
         if (!record.attempts.empty() && record.status == TestStatus::Passed) {
             record.status = TestStatus::Flaky;
         }

@@ -444,3 +444,44 @@ TEST(CollectorRetries, FailingRetriesStayOneFailedRecord) {
     EXPECT_EQ(c.failedCount(), 1u);
     EXPECT_EQ(c.failedSuiteCount(), 1u);
 }
+
+TEST(CollectorRepetitions, EachRepetitionIsKeyedWithItsOwnStateAndEvents) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named a("a");
+    Named b("b");
+    result.startTest(&a);
+    result.startTest(&b);  // another test open meanwhile does not take a's repetitions
+    for (unsigned int k = 1; k <= 3; ++k) {
+        result.startRepetition(&a, k, 3);
+        if (k == 2) {
+            result.addFailure(&a, TestMessage("second fails"));
+        }
+        result.addReport(&b, TestMessage("b talks"));
+    }
+    result.endTest(&b);
+    result.endTest(&a);
+
+    const TestRecord& ra = c.suites()[0].tests[0];
+    ASSERT_EQ(ra.repetitions.size(), 3u);
+    EXPECT_EQ(ra.repetitions[0].status, TestStatus::Passed);
+    EXPECT_EQ(ra.repetitions[1].status, TestStatus::Failed);
+    EXPECT_EQ(ra.repetitions[2].status, TestStatus::Passed);
+    EXPECT_EQ(ra.repetitions[1].index, 2u);
+    EXPECT_EQ(ra.repetitions[1].count, 3u);
+    EXPECT_EQ(ra.status, TestStatus::Failed);
+    // The repetition's start is still the report RTF 2.x listeners saw; every event carries it.
+    ASSERT_EQ(ra.events.size(), 4u);
+    EXPECT_EQ(ra.events[0].message.getMessage(), "repetition 1/3");
+    EXPECT_EQ(ra.events[2].message.getMessage(), "second fails");
+    EXPECT_EQ(ra.events[2].repetition, 2u);
+    EXPECT_EQ(ra.events[3].repetition, 3u);
+    EXPECT_EQ(repetitionId(a.getId(), 2), std::to_string(a.getId()) + "#2");
+
+    const TestRecord& rb = c.suites()[0].tests[1];
+    EXPECT_TRUE(rb.repetitions.empty());
+    for (const ResultEvent& event : rb.events) {
+        EXPECT_EQ(event.repetition, 0u);
+    }
+}
