@@ -1,5 +1,6 @@
 #include "text_safety.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace robottestingframework {
@@ -64,6 +65,18 @@ std::string validUtf8(const std::string& text) {
             i += length;
         }
     }
+    return out;
+}
+
+std::string plainText(const std::string& text) {
+    std::string out = validUtf8(text);
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](char ch) {
+                                 const auto c = static_cast<unsigned char>(ch);
+                                 return (c < 0x20 && c != '\t' && c != '\n' && c != '\r') ||
+                                        c == 0x7F;
+                             }),
+              out.end());
     return out;
 }
 

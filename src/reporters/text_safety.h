@@ -12,6 +12,9 @@ namespace reporters {
 std::size_t validSequence(const std::string& s, std::size_t i);
 // `text` with every byte that does not start such a sequence replaced by U+FFFD.
 std::string validUtf8(const std::string& text);
+// `text` as a plain text file should hold it: invalid UTF-8 replaced as validUtf8 does, and
+// control characters other than tab, newline and carriage return (a NUL, an escape) dropped.
+std::string plainText(const std::string& text);
 // `text` as a quoted JSON string: invalid UTF-8 replaced, control characters escaped, and `<`,
 // `>` and `&` as \u escapes so the literal stays inert inside an HTML <script>.
 std::string jsonString(const std::string& text);

@@ -123,6 +123,10 @@ TEST(TextSafety, InvalidUtf8IsReplacedAndJsonStaysInertInHtml) {
     EXPECT_EQ(jsonString("</script>\n\"\\\x01"), "\"\\u003c/script\\u003e\\n\\\"\\\\\\u0001\"");
 }
 
+TEST(TextSafety, PlainTextIsValidUtf8WithoutControlCharacters) {
+    EXPECT_EQ(plainText(std::string("a\0b\xff\tc\x1b[31m\r\n", 13)), "ab\xEF\xBF\xBD\tc[31m\r\n");
+}
+
 TEST(TextSafety, OneMarkupEscapingForEachPlaceTextGoes) {
     const std::string text = "<a href=\"x\">it's & \x01\xff\ttab\nline\r";
     EXPECT_EQ(escapeMarkup(text, Markup::Text), "&lt;a href=\"x\"&gt;it's &amp; \ttab\nline&#13;");
