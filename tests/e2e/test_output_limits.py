@@ -165,3 +165,31 @@ def test_a_flood_of_output_keeps_memory_bounded_and_every_file_valid(tmp_path, i
 
     text = files["txt"].read_bytes()
     assert b"\x00" not in text and text.decode("utf-8")  # valid UTF-8, no NUL
+
+
+BIG_REPORT = """class TestCase:
+    def run(self):
+        robottestingframework.testReport("m" * (20 * 1000 * 1000))
+        robottestingframework.testCheck(False, "the check after the big report")
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_20_mb_message_is_cut_and_what_follows_it_is_kept(tmp_path, isolation):
+    # Isolated, the message broke the worker's event stream (the test became "unreadable
+    # events", its check lost); in process it went whole into every report.
+    test = tmp_path / "big.py"
+    test.write_text(BIG_REPORT)
+    junit = tmp_path / "r.xml"
+    status, out, err, peak = run_measured(
+        ["--isolation", isolation, "--verbose", "-t", test, "--output", f"junit:{junit}"],
+        cwd=tmp_path, env={})
+    assert status == 1, (out[-2000:], err[-2000:])
+    validate_junit(junit)
+    assert junit.stat().st_size < 1 * MB, junit.stat().st_size
+    case = next(ET.parse(junit).getroot().iter("testcase"))
+    assert case.find("failure") is not None, ET.tostring(case)[:2000]
+    text = ET.tostring(case, encoding="unicode")
+    assert "the check after the big report" in text and "more bytes of this message dropped" \
+        in text, text[-2000:]
+    assert len(out) < 1 * MB, len(out)

@@ -485,3 +485,20 @@ TEST(CollectorRepetitions, EachRepetitionIsKeyedWithItsOwnStateAndEvents) {
         EXPECT_EQ(event.repetition, 0u);
     }
 }
+
+TEST(TestResult, CutsAMessageLongerThan64KiBSayingSo) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named a("a");
+    result.startTest(&a);
+    result.addFailure(&a, TestMessage(std::string(1000000, 'm'), std::string(10, 'd')));
+    result.endTest(&a);
+    const ResultEvent& failure = c.suites()[0].tests[0].events.at(0);
+    EXPECT_EQ(failure.message.getMessage().compare(0, 65536, std::string(65536, 'm')), 0);
+    EXPECT_NE(failure.message.getMessage().find("[... 934464 more bytes of this message dropped]"),
+              std::string::npos);
+    EXPECT_LT(failure.message.getMessage().size(), 70000u);
+    EXPECT_EQ(failure.message.getDetail(), std::string(10, 'd'));
+    EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Failed);
+}
