@@ -92,7 +92,8 @@ class Sampler:
                     if line.startswith("VmHWM:"):
                         self.peak_kib = max(self.peak_kib, int(line.split()[1]))
             fds = len(os.listdir(f"/proc/{self.pid}/fd"))
-            self.fds.append((time.monotonic() - self.start, fds))
+            if fds > 0:  # 0: it has exited (a zombie lists none)
+                self.fds.append((time.monotonic() - self.start, fds))
         except (OSError, ValueError):
             pass
 
@@ -111,8 +112,7 @@ def run_mode(runner, folder, suite, isolation):
     marker = uuid.uuid4().hex
     env = {**os.environ, MARKER: marker, "TMPDIR": folder}
     start = time.monotonic()
-    # Stopped (SIGSTOP) at the end? No: the runner exits by itself; the last descriptor count is
-    # read while it writes its outputs, after the last test.
+    # The last descriptor count is read while it writes its outputs, after the last test.
     proc = subprocess.Popen([runner, "--isolation", isolation, "--suite", suite,
                              "--output", f"junit:{junit}", "--no-summary"],
                             cwd=folder, env=env, stdout=subprocess.PIPE,

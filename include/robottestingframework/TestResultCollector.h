@@ -97,6 +97,10 @@ public:
     void setKeepEventLog(bool keep) { keepLog_ = keep; }
     // Keeps check events in the records only when true (the outputs show them only verbose).
     void setKeepChecks(bool keep) { keepChecks_ = keep; }
+    // Keeps at most `bytes` of what the tests printed over the whole run (0: no limit, the
+    // default): once that is spent, each test that ends keeps the last 4 KiB of its output
+    // only, saying so. Bounds the runner's memory on runs of many talkative tests.
+    void setOutputBudget(std::size_t bytes) { outputBudget_ = bytes; }
 
     // Ends the tests and suites still open, each open test interrupted with `why`: for the
     // outputs of a run cut short. The collector must receive no more events meanwhile.
@@ -137,6 +141,8 @@ private:
     void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
+    // Cuts a test's output to its tail once the run's output budget is spent.
+    void keepWithinBudget(std::string& output);
 
     std::chrono::steady_clock::time_point origin_;
     std::chrono::system_clock::time_point wallOrigin_;
@@ -145,6 +151,8 @@ private:
     bool keepEvents_ = true;
     bool keepLog_ = true;
     bool keepChecks_ = true;
+    std::size_t outputBudget_ = 0;
+    std::size_t outputKept_ = 0;  // bytes of test output the records hold
     std::vector<ResultEvent> events_;
     std::vector<SuiteRecord> suites_;
     // A suite between its startTestSuite and endTestSuite; `failed` survives dropped records.

@@ -64,6 +64,7 @@ void TestResultCollector::reset() {
     retrying_ = {0, nullptr, none, none};
     looseSuite_ = none;
     std::fill(std::begin(counts_), std::end(counts_), 0);
+    outputKept_ = 0;
     suitesRun_ = 0;
     suitesFailed_ = 0;
 }
@@ -324,6 +325,7 @@ void TestResultCollector::endTest(const Test* test) {
         if (!record.attempts.empty() && record.status == TestStatus::Passed) {
             record.status = TestStatus::Flaky;
         }
+        keepWithinBudget(record.output);
         ++counts_[static_cast<std::size_t>(record.status)];
         if (isFailure(record.status)) {
             for (OpenSuite& suite : openSuites_) {
@@ -339,6 +341,20 @@ void TestResultCollector::endTest(const Test* test) {
         openTests_.erase(openTests_.begin() + static_cast<std::ptrdiff_t>(i - 1), openTests_.end());
         break;
     }
+}
+
+void TestResultCollector::keepWithinBudget(std::string& output) {
+    constexpr std::size_t tail = 4096;
+    if (!keepEvents_) {
+        return;  // the records are dropped test by test anyway
+    }
+    if (outputBudget_ != 0 && outputKept_ + output.size() > outputBudget_ && output.size() > tail) {
+        output = "[... " + std::to_string(output.size() - tail) +
+                 " bytes of output left out: the run's reports keep " +
+                 std::to_string(outputBudget_ / 1024) + " KiB of output in all]\n" +
+                 output.substr(output.size() - tail);
+    }
+    outputKept_ += output.size();
 }
 
 void TestResultCollector::startTestSuite(const TestSuite* suite) {

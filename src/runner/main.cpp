@@ -330,6 +330,8 @@ int main(int argc, char** argv) {
     // The outputs read the per-test records only, and show checks only when verbose.
     collector.setKeepEventLog(false);
     collector.setKeepChecks(options.verbose);
+    // 64 KiB per test, but not for every one of 10 000 talkative tests (README: Output limits).
+    collector.setOutputBudget(8 * 1024 * 1024);
     result.addListener(&console);
     result.addListener(&collector);
     result.addListener(&plan.gate());

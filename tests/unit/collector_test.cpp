@@ -502,3 +502,23 @@ TEST(TestResult, CutsAMessageLongerThan64KiBSayingSo) {
     EXPECT_EQ(failure.message.getDetail(), std::string(10, 'd'));
     EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Failed);
 }
+
+TEST(TestResultCollector, OnceTheOutputBudgetIsSpentEachTestKeepsItsTail) {
+    TestResultCollector c;
+    c.setOutputBudget(100 * 1024);
+    Named a("a");
+    Named b("b");
+    const std::string chunk(64 * 1024, 'x');
+    c.startTest(&a);
+    c.addOutput(&a, chunk);
+    c.endTest(&a);
+    c.startTest(&b);
+    c.addOutput(&b, chunk + "the end\n");
+    c.endTest(&b);
+    const auto& tests = c.suites()[0].tests;
+    EXPECT_EQ(tests[0].output, chunk);  // within the budget: whole
+    const std::string& cut = tests[1].output;
+    EXPECT_LT(cut.size(), 4096u + 200u);
+    EXPECT_NE(cut.find("keep 100 KiB of output in all]"), std::string::npos) << cut.substr(0, 200);
+    EXPECT_EQ(cut.substr(cut.size() - 8), "the end\n");
+}
