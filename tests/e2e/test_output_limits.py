@@ -193,3 +193,26 @@ def test_a_20_mb_message_is_cut_and_what_follows_it_is_kept(tmp_path, isolation)
     assert "the check after the big report" in text and "more bytes of this message dropped" \
         in text, text[-2000:]
     assert len(out) < 1 * MB, len(out)
+
+
+def test_the_reports_keep_8_mib_of_output_in_all(tmp_path):
+    # Before, each of many talkative tests kept its 64 KiB: the soak bench's 400 tests printing
+    # 1 MB held 25 MiB, and the runner peaked at 94 MiB writing its reports.
+    talker = tmp_path / "talker"
+    talker.write_text("#!/bin/sh\nyes 'a line printed again' | head -c 100000\necho ' end'\n")
+    talker.chmod(0o755)
+    tests = "\n".join(f'  <test type="exec" name="talker {i}">{talker}</test>' for i in range(160))
+    (tmp_path / "suite.xml").write_text(f'<suite name="talkers">\n{tests}\n</suite>\n')
+    junit = tmp_path / "r.xml"
+    status, out, err, peak = run_measured(
+        ["--suite", tmp_path / "suite.xml", "--output", f"junit:{junit}"], cwd=tmp_path, env={})
+    assert status == 0, (out[-2000:], err[-2000:])
+    validate_junit(junit)
+    outputs = [c.findtext("system-out") or "" for c in ET.parse(junit).getroot().iter("testcase")]
+    assert len(outputs) == 160 and all(o.endswith(" end\n") for o in outputs)
+    whole = [o for o in outputs if "of output in all]" not in o]
+    # 8 MiB hold 127 tails of 64 KiB; the later tests keep their last 4 KiB, saying so.
+    assert 100 <= len(whole) <= 130, len(whole)
+    assert "the run's reports keep 8192 KiB of output in all]" in outputs[-1], outputs[-1][:200]
+    assert len(outputs[-1]) < 4096 + 200
+    assert junit.stat().st_size < 10 * MB
