@@ -10,8 +10,9 @@ namespace {
 
 // A message or detail longer than this is cut, saying so: a test that reports megabytes can
 // neither fill the memory of the runner nor break a worker's event stream (README: Output
-// limits). The start is kept: it says what the message is about.
-constexpr std::size_t maxMessageText = 64 * 1024;
+// limits). The start is kept: it says what the message is about. Above the 64 KiB a TAP line
+// of an exec test is cut to, so that such a line keeps its own note.
+constexpr std::size_t maxMessageText = 128 * 1024;
 
 std::string cut(const std::string& text) {
     return text.substr(0, maxMessageText) + " [... " +

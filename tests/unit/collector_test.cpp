@@ -486,7 +486,7 @@ TEST(CollectorRepetitions, EachRepetitionIsKeyedWithItsOwnStateAndEvents) {
     }
 }
 
-TEST(TestResult, CutsAMessageLongerThan64KiBSayingSo) {
+TEST(TestResult, CutsAMessageLongerThan128KiBSayingSo) {
     TestResultCollector c;
     TestResult result;
     result.addListener(&c);
@@ -495,10 +495,10 @@ TEST(TestResult, CutsAMessageLongerThan64KiBSayingSo) {
     result.addFailure(&a, TestMessage(std::string(1000000, 'm'), std::string(10, 'd')));
     result.endTest(&a);
     const ResultEvent& failure = c.suites()[0].tests[0].events.at(0);
-    EXPECT_EQ(failure.message.getMessage().compare(0, 65536, std::string(65536, 'm')), 0);
-    EXPECT_NE(failure.message.getMessage().find("[... 934464 more bytes of this message dropped]"),
+    EXPECT_EQ(failure.message.getMessage().compare(0, 131072, std::string(131072, 'm')), 0);
+    EXPECT_NE(failure.message.getMessage().find("[... 868928 more bytes of this message dropped]"),
               std::string::npos);
-    EXPECT_LT(failure.message.getMessage().size(), 70000u);
+    EXPECT_LT(failure.message.getMessage().size(), 140000u);
     EXPECT_EQ(failure.message.getDetail(), std::string(10, 'd'));
     EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Failed);
 }
