@@ -28,6 +28,10 @@ public:
     // Beyond RTF 2.x: false leaves the summary out at the end (the runner's --no-summary); the
     // closing line "N passed, N failed" is always printed.
     void showSummary(bool show) { showSummary_ = show; }
+    // Beyond RTF 2.x: a failing test runs again up to `retries` times (the runner's
+    // --retries). An attempt that will run again is shown as RETRY, not FAILED: only the
+    // last attempt's line says how the test ended.
+    void setRetries(unsigned int retries) { retries_ = retries; }
 
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;
@@ -62,6 +66,7 @@ private:
     bool showChecks_ = false;
     bool showSummary_ = true;
     bool colors_ = false;
+    unsigned int retries_ = 0;
     // Enough of the current test to print its line at the end, and counts for the summary.
     TestResultCollector record_;
 };

@@ -37,7 +37,16 @@ struct ResultEvent {
     TestMessage message;       // for Output, the printed text is the message
     bool passed = true;        // for Check: whether the check held
     double time = 0;           // seconds since the collector started, when it was received
+    // The repetition of its test it happened in (1..N, see TestListener::startRepetition);
+    // 0 when the test runs once, and for runner and suite events.
+    unsigned int repetition = 0;
 };
+
+// The id of repetition `index` of the test `testId`: "<testId>#<index>". Given by the plan
+// (test ids) and the repetition count, so the same in every output of one run.
+std::string repetitionId(std::uint64_t testId, unsigned int index);
+// What the start of a repetition says: "repetition <index>/<count>".
+TestMessage repetitionMessage(unsigned int index, unsigned int count);
 
 // "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats).
 const char* toString(ResultEvent::Kind kind);

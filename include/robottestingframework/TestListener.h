@@ -47,6 +47,11 @@ public:
     // The test just ended failing and runs again (--retries); the message says which attempt.
     // Its next startTest/endTest are the same test, not another one.
     virtual void retryTest(const Test* /*test*/, TestMessage /*msg*/) {}
+    // Repetition `index` of `count` of the test starts (count > 1: repetition="N",
+    // --repetition N). The test's events up to its next startRepetition or endTest belong to it;
+    // its id is repetitionId(test->getId(), index). By default it is the report
+    // "repetition index/count", as RTF 2.x's listeners saw it.
+    virtual void startRepetition(const Test* test, unsigned int index, unsigned int count);
 };
 
 }  // namespace robottestingframework

@@ -38,6 +38,7 @@ public:
     void addOutput(const Test* test, const std::string& text);
     void renameTest(const Test* test, const std::string& name);
     void retryTest(const Test* test, TestMessage msg);
+    void startRepetition(const Test* test, unsigned int index, unsigned int count);
 
 private:
     std::vector<TestListener*> listeners_;

@@ -21,6 +21,16 @@ struct TestAttempt {
     double duration = 0;  // seconds
 };
 
+// One repetition of a test that runs several times (repetition="N"); its id is
+// repetitionId(test id, index).
+struct TestRepetition {
+    unsigned int index = 0;  // 1..count
+    unsigned int count = 0;
+    TestStatus status = TestStatus::Passed;  // the highest state its events gave
+    double start = 0;                        // seconds since the collector started
+    double duration = 0;                     // seconds
+};
+
 // One test as the outputs show it.
 struct TestRecord {
     std::uint64_t id = 0;  // the test's Test::getId()
@@ -34,6 +44,8 @@ struct TestRecord {
     // The earlier failed attempts, oldest first, when the test ran again (--retries); the
     // state, events and output above are the last attempt's, start and duration all of them.
     std::vector<TestAttempt> attempts;
+    // Its repetitions in order (of the last attempt), when it runs several times; else empty.
+    std::vector<TestRepetition> repetitions;
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
 };
@@ -85,6 +97,10 @@ public:
     void setKeepEventLog(bool keep) { keepLog_ = keep; }
     // Keeps check events in the records only when true (the outputs show them only verbose).
     void setKeepChecks(bool keep) { keepChecks_ = keep; }
+    // Keeps at most `bytes` of what the tests printed over the whole run (0: no limit, the
+    // default): once that is spent, each test that ends keeps the last 4 KiB of its output
+    // only, saying so. Bounds the runner's memory on runs of many talkative tests.
+    void setOutputBudget(std::size_t bytes) { outputBudget_ = bytes; }
 
     // Ends the tests and suites still open, each open test interrupted with `why`: for the
     // outputs of a run cut short. The collector must receive no more events meanwhile.
@@ -107,6 +123,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by
@@ -116,12 +133,16 @@ private:
         const Test* test;  // only to end it when the run is cut short
         std::size_t suite;
         std::size_t index;
+        unsigned int repetition = 0;  // the one its events now belong to; 0: runs once
     };
     static constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     double now() const;
     void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
+    OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
+    // Cuts a test's output to its tail once the run's output budget is spent.
+    void keepWithinBudget(std::string& output);
 
     std::chrono::steady_clock::time_point origin_;
     std::chrono::system_clock::time_point wallOrigin_;
@@ -130,6 +151,8 @@ private:
     bool keepEvents_ = true;
     bool keepLog_ = true;
     bool keepChecks_ = true;
+    std::size_t outputBudget_ = 0;
+    std::size_t outputKept_ = 0;  // bytes of test output the records hold
     std::vector<ResultEvent> events_;
     std::vector<SuiteRecord> suites_;
     // A suite between its startTestSuite and endTestSuite; `failed` survives dropped records.

@@ -57,6 +57,7 @@ public:
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
 
 private:
     struct State;

@@ -150,8 +150,7 @@ void TestCase::run(TestResult& result) {
             const unsigned int count = repetition_ == 0 ? 1 : repetition_;
             for (unsigned int k = 1; k <= count && !interrupted_; ++k) {
                 if (count > 1) {
-                    result.addReport(this, TestMessage("repetition " + std::to_string(k) + "/" +
-                                                       std::to_string(count)));
+                    result.startRepetition(this, k, count);
                 }
                 if (!guarded(*this, result, [this] { run(); })) {
                     reported = true;

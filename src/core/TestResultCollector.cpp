@@ -64,6 +64,7 @@ void TestResultCollector::reset() {
     retrying_ = {0, nullptr, none, none};
     looseSuite_ = none;
     std::fill(std::begin(counts_), std::end(counts_), 0);
+    outputKept_ = 0;
     suitesRun_ = 0;
     suitesFailed_ = 0;
 }
@@ -127,17 +128,21 @@ SuiteRecord& TestResultCollector::currentSuite() {
     return suites_[looseSuite_];
 }
 
-void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
-    // A test's own event goes to its record; anything else open (a fixture's report from a
-    // watcher thread, a collapse) belongs to the suite.
-    TestRecord* owner = nullptr;
+TestResultCollector::OpenTest* TestResultCollector::findOpen(const Test* test) {
     const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
         if (it->id == id) {
-            owner = &suites_[it->suite].tests[it->index];
-            break;
+            return &*it;
         }
     }
+    return nullptr;
+}
+
+void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
+    // A test's own event goes to its record (and its repetition); anything else open (a
+    // fixture's report from a watcher thread, a collapse) belongs to the suite.
+    const OpenTest* open = findOpen(test);
+    TestRecord* owner = open != nullptr ? &suites_[open->suite].tests[open->index] : nullptr;
     const bool logged = keepEvents_ && keepLog_;
     // Most events of a passing test are checks: without the log they need not be copied.
     if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
@@ -145,10 +150,15 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
     }
     ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
     if (owner != nullptr) {
+        event.repetition = open->repetition;
         if (kind == Kind::Output) {
             owner->output += event.message.getMessage();
         } else if (kind != Kind::Check || keepChecks_) {
             owner->status = std::max(owner->status, stateOf(kind));
+            if (event.repetition != 0 && !owner->repetitions.empty()) {
+                TestStatus& state = owner->repetitions.back().status;
+                state = std::max(state, stateOf(kind));
+            }
             owner->events.push_back(logged ? event : std::move(event));
         }
     } else if (!openSuites_.empty()) {
@@ -213,6 +223,25 @@ void TestResultCollector::renameTest(const Test* test, const std::string& name) 
     }
 }
 
+void TestResultCollector::startRepetition(const Test* test, unsigned int index,
+                                          unsigned int count) {
+    OpenTest* open = findOpen(test);
+    if (open != nullptr) {
+        const double time = now();
+        TestRecord& owner = suites_[open->suite].tests[open->index];
+        if (!owner.repetitions.empty()) {
+            owner.repetitions.back().duration = time - owner.repetitions.back().start;
+        }
+        TestRepetition repetition;
+        repetition.index = index;
+        repetition.count = count;
+        repetition.start = time;
+        owner.repetitions.push_back(repetition);
+        open->repetition = index;
+    }
+    record(Kind::Report, test, repetitionMessage(index, count));
+}
+
 void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     if (test == nullptr || lastEnded_.id != test->getId() || lastEnded_.suite >= suites_.size() ||
         lastEnded_.index >= suites_[lastEnded_.suite].tests.size()) {
@@ -242,6 +271,7 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     record.status = TestStatus::Passed;
     record.events.clear();
     record.output.clear();
+    record.repetitions.clear();
     retrying_ = lastEnded_;
     lastEnded_ = {0, nullptr, none, none};
 }
@@ -254,6 +284,7 @@ void TestResultCollector::startTest(const Test* test) {
     if (test != nullptr && retrying_.id != 0 && retrying_.id == test->getId()) {
         OpenTest reopened = retrying_;
         reopened.test = test;
+        reopened.repetition = 0;
         openTests_.push_back(reopened);  // the same record, one attempt more
         retrying_ = {0, nullptr, none, none};
         return;
@@ -288,9 +319,13 @@ void TestResultCollector::endTest(const Test* test) {
         }
         TestRecord& record = suites_[open.suite].tests[open.index];
         record.duration = time - record.start;
+        if (!record.repetitions.empty()) {
+            record.repetitions.back().duration = time - record.repetitions.back().start;
+        }
         if (!record.attempts.empty() && record.status == TestStatus::Passed) {
             record.status = TestStatus::Flaky;
         }
+        keepWithinBudget(record.output);
         ++counts_[static_cast<std::size_t>(record.status)];
         if (isFailure(record.status)) {
             for (OpenSuite& suite : openSuites_) {
@@ -306,6 +341,20 @@ void TestResultCollector::endTest(const Test* test) {
         openTests_.erase(openTests_.begin() + static_cast<std::ptrdiff_t>(i - 1), openTests_.end());
         break;
     }
+}
+
+void TestResultCollector::keepWithinBudget(std::string& output) {
+    constexpr std::size_t tail = 4096;
+    if (!keepEvents_) {
+        return;  // the records are dropped test by test anyway
+    }
+    if (outputBudget_ != 0 && outputKept_ + output.size() > outputBudget_ && output.size() > tail) {
+        output = "[... " + std::to_string(output.size() - tail) +
+                 " bytes of output left out: the run's reports keep " +
+                 std::to_string(outputBudget_ / 1024) + " KiB of output in all]\n" +
+                 output.substr(output.size() - tail);
+    }
+    outputKept_ += output.size();
 }
 
 void TestResultCollector::startTestSuite(const TestSuite* suite) {

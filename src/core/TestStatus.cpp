@@ -83,6 +83,14 @@ const char* toString(ResultEvent::Kind kind) {
     return "unknown";
 }
 
+std::string repetitionId(std::uint64_t testId, unsigned int index) {
+    return std::to_string(testId) + "#" + std::to_string(index);
+}
+
+TestMessage repetitionMessage(unsigned int index, unsigned int count) {
+    return TestMessage("repetition " + std::to_string(index) + "/" + std::to_string(count));
+}
+
 TestStatus stateOf(ResultEvent::Kind kind) {
     using Kind = ResultEvent::Kind;
     switch (kind) {

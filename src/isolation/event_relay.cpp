@@ -60,10 +60,6 @@ void EventRelay::note(Kind kind, const TestMessage& message) {
         kind == Kind::Error) {
         lastSaid_ = message.toString();
     }
-    // TestCase::run reports each repetition's start so: a crash names the one it ended.
-    if (kind == Kind::Report && message.getMessage().compare(0, 11, "repetition ") == 0) {
-        repetition_ = message.getMessage();
-    }
 }
 
 void EventRelay::relay(const WireRecord& record) {
@@ -74,6 +70,19 @@ void EventRelay::relay(const WireRecord& record) {
     if (record.kind == WireKind::Described) {
         rename(record.name);
         self_.setDescription(record.message.getMessage());
+        return;
+    }
+    if (record.kind == WireKind::Repetition) {
+        const auto number = static_cast<std::uint64_t>(record.number);
+        const auto index = static_cast<unsigned int>(number & 0xffffffffu);
+        const auto count = static_cast<unsigned int>(number >> 32);
+        if (ended_ || index == 0 || index > count) {
+            return;  // garbage from a broken worker: not a repetition
+        }
+        start();
+        // A crash or timeout names the repetition it ended.
+        repetition_ = repetitionMessage(index, count).getMessage();
+        result_.startRepetition(&self_, index, count);
         return;
     }
     if (record.kind == WireKind::CriticalError) {

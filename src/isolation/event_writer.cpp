@@ -71,6 +71,14 @@ void EventWriter::addInterrupted(const Test* test, TestMessage msg) {
 void EventWriter::addOutput(const Test* test, const std::string& text) {
     sendEvent(Kind::Output, test, TestMessage(text));
 }
+void EventWriter::startRepetition(const Test* test, unsigned int index, unsigned int count) {
+    WireRecord record;
+    record.kind = WireKind::Repetition;
+    record.name = test != nullptr ? test->getName() : std::string();
+    record.message = repetitionMessage(index, count);
+    record.number = static_cast<std::int64_t>((static_cast<std::uint64_t>(count) << 32) | index);
+    send(record);
+}
 void EventWriter::renameTest(const Test* test, const std::string& name) {
     sendEvent(Kind::Rename, test, TestMessage(name));
 }

@@ -35,6 +35,7 @@ public:
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
 
 private:
     int fd_;

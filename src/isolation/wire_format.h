@@ -31,6 +31,8 @@ enum class WireKind : std::uint8_t {
     Call,              // runner → fixture worker: `name` is setup/check/tearDown; `message`
                        // holds setup's argv joined by '\0'
     Described,         // worker → runner: the loaded test's `name` and description (`message`)
+    Repetition,        // worker → runner: repetition `number` & 0xffffffff of `number` >> 32
+                       // starts (`message` says so, as TestListener::startRepetition)
 };
 
 struct WireRecord {

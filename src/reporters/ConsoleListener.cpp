@@ -185,11 +185,16 @@ void ConsoleListener::endTest(const Test* test) {
         return;
     }
     const TestRecord& record = *found;
+    // The runner runs a failed attempt again while it has retries left (an interrupted one
+    // never): that attempt did not decide the test's state.
+    const bool retried = isFailure(record.status) && record.status != TestStatus::Interrupted &&
+                         record.attempts.size() < retries_;
     char word[16];
-    std::snprintf(word, sizeof(word), "%-11s", reporters::statusWord(record.status));
+    std::snprintf(word, sizeof(word), "%-11s",
+                  retried ? "RETRY" : reporters::statusWord(record.status));
     std::string text = "  ";
     if (colors_) {
-        text += colourOf(record.status);
+        text += retried ? yellow : colourOf(record.status);
         text += word;
         text += plain;
     } else {

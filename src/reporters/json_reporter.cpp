@@ -121,6 +121,29 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
         }
         out += "]";
     }
+    if (!test.repetitions.empty()) {
+        // repetition="N": each repetition by its id, with its state and its first problem.
+        out += ",\"repetitions\":[";
+        for (std::size_t i = 0; i < test.repetitions.size(); ++i) {
+            const TestRepetition& repetition = test.repetitions[i];
+            out += std::string(i == 0 ? "" : ",") + "{\"id\":\"" +
+                   repetitionId(test.id, repetition.index) +
+                   "\",\"index\":" + std::to_string(repetition.index) +
+                   ",\"count\":" + std::to_string(repetition.count) +
+                   ",\"state\":" + jsonString(toString(repetition.status)) +
+                   ",\"duration\":" + std::to_string(milliseconds(repetition.duration));
+            for (const ResultEvent& event : test.events) {
+                if (event.repetition == repetition.index &&
+                    stateOf(event.kind) != TestStatus::Passed &&
+                    stateOf(event.kind) == repetition.status) {
+                    out += ",\"message\":" + jsonString(event.message.toString());
+                    break;
+                }
+            }
+            out += "}";
+        }
+        out += "]";
+    }
     if (const ResultEvent* reason = test.reason()) {
         if (test.status == TestStatus::Crashed) {
             out += ",\"crash\":" + jsonString(reason->message.toString());

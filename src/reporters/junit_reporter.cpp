@@ -15,53 +15,8 @@ namespace {
 
 using Kind = ResultEvent::Kind;
 
-// Escapes for XML and drops what XML cannot hold: control characters other than tab, newline
-// and carriage return, and bytes that are not valid UTF-8.
 std::string escape(const std::string& text, bool attribute) {
-    std::string out;
-    out.reserve(text.size());
-    for (std::size_t i = 0; i < text.size();) {
-        const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (c >= 0x80) {
-            const std::size_t length = validSequence(text, i);
-            if (length == 0) {
-                ++i;
-            } else {
-                out.append(text, i, length);
-                i += length;
-            }
-            continue;
-        }
-        ++i;
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += attribute ? "&quot;" : "\"";
-                break;
-            case '\r':
-                out += "&#13;";
-                break;
-            case '\n':
-                out += attribute ? "&#10;" : "\n";
-                break;
-            case '\t':
-                out += attribute ? "&#9;" : "\t";
-                break;
-            default:
-                if (c >= 0x20) {
-                    out += static_cast<char>(c);
-                }
-        }
-    }
-    return out;
+    return escapeMarkup(text, attribute ? Markup::Attribute : Markup::Text);
 }
 
 std::string attr(const char* name, const std::string& value) {

@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "summary.h"
+#include "text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {
@@ -78,7 +79,8 @@ std::string TextReporter::document() {
         }
         out += closingLine(collector_) + "\n";
     }
-    return out;
+    // What tests print and say is bytes; the report is a text file whatever they were.
+    return plainText(out);
 }
 
 }  // namespace reporters

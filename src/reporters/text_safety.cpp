@@ -1,5 +1,6 @@
 #include "text_safety.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace robottestingframework {
@@ -67,6 +68,18 @@ std::string validUtf8(const std::string& text) {
     return out;
 }
 
+std::string plainText(const std::string& text) {
+    std::string out = validUtf8(text);
+    out.erase(std::remove_if(out.begin(), out.end(),
+                             [](char ch) {
+                                 const auto c = static_cast<unsigned char>(ch);
+                                 return (c < 0x20 && c != '\t' && c != '\n' && c != '\r') ||
+                                        c == 0x7F;
+                             }),
+              out.end());
+    return out;
+}
+
 std::string jsonString(const std::string& text) {
     const std::string valid = validUtf8(text);
     std::string out;
@@ -101,6 +114,57 @@ std::string jsonString(const std::string& text) {
         }
     }
     out += '"';
+    return out;
+}
+
+std::string escapeMarkup(const std::string& text, Markup where) {
+    const bool attribute = where == Markup::Attribute;
+    std::string out;
+    out.reserve(text.size());
+    for (std::size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c >= 0x80) {
+            const std::size_t length = validSequence(text, i);
+            if (length == 0) {
+                ++i;
+            } else {
+                out.append(text, i, length);
+                i += length;
+            }
+            continue;
+        }
+        ++i;
+        switch (c) {
+            case '&':
+                out += "&amp;";
+                break;
+            case '<':
+                out += "&lt;";
+                break;
+            case '>':
+                out += "&gt;";
+                break;
+            case '"':
+                out += where == Markup::Text ? "\"" : "&quot;";
+                break;
+            case '\'':
+                out += where == Markup::Quoted ? "&#39;" : "'";
+                break;
+            case '\r':
+                out += "&#13;";
+                break;
+            case '\n':
+                out += attribute ? "&#10;" : "\n";
+                break;
+            case '\t':
+                out += attribute ? "&#9;" : "\t";
+                break;
+            default:
+                if (c >= 0x20) {
+                    out += static_cast<char>(c);
+                }
+        }
+    }
     return out;
 }
 

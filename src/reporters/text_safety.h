@@ -12,9 +12,24 @@ namespace reporters {
 std::size_t validSequence(const std::string& s, std::size_t i);
 // `text` with every byte that does not start such a sequence replaced by U+FFFD.
 std::string validUtf8(const std::string& text);
+// `text` as a plain text file should hold it: invalid UTF-8 replaced as validUtf8 does, and
+// control characters other than tab, newline and carriage return (a NUL, an escape) dropped.
+std::string plainText(const std::string& text);
 // `text` as a quoted JSON string: invalid UTF-8 replaced, control characters escaped, and `<`,
 // `>` and `&` as \u escapes so the literal stays inert inside an HTML <script>.
 std::string jsonString(const std::string& text);
+
+// Where escapeMarkup's result goes.
+enum class Markup {
+    Text,       // XML or HTML element content: `&`, `<`, `>` as entities
+    Quoted,     // content that may end up inside quotes: `"` and `'` as entities too
+    Attribute,  // a "-quoted attribute value: `"` as an entity, and tab and newline as
+                // character references so that attribute normalisation keeps them
+};
+// `text` as XML 1.0 / HTML text for `where`: markup characters as entities, and what XML 1.0
+// cannot hold (control characters other than tab, newline and carriage return, bytes that are
+// not valid UTF-8) dropped. The one escaping of the JUnit report and the web page's log.
+std::string escapeMarkup(const std::string& text, Markup where);
 
 }  // namespace reporters
 }  // namespace robottestingframework

@@ -146,6 +146,9 @@ public:
         target_->addOutput(sync(test), text);
     }
     void renameTest(const Test* test, const std::string& /*name*/) override { sync(test); }
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override {
+        target_->startRepetition(sync(test), index, count);
+    }
 
 private:
     void worsen(TestStatus status) {

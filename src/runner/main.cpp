@@ -454,6 +454,7 @@ int main(int argc, char** argv) {
     console.setColors(colours);
     console.showChecks(options.detail);
     console.showSummary(!options.noSummary);
+    console.setRetries(options.retries);
     if (!options.verbose) {
         console.hideUncriticalMessages();
     }
@@ -469,6 +470,8 @@ int main(int argc, char** argv) {
     ParallelConsole parallelConsole(capture.console(), collector, parallelSettings);
     // One line per test as it ends, from any suite (-j N); else the console of one suite at a
     // time.
+    // 64 KiB per test, but not for every one of 10 000 talkative tests (README: Output limits).
+    collector.setOutputBudget(8 * 1024 * 1024);
     if (!parallel) {
         result.addListener(&console);
     }

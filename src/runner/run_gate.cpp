@@ -170,7 +170,7 @@ bool RunGate::skip(const Test* test, TestMessage& reason) {
     if (failFast_) {
         std::lock_guard<std::mutex> lock(mutex_);
         if (!firstFailure_.empty()) {
-            reason = TestMessage("skipped: --fail-fast, " + firstFailure_ + " failed");
+            reason = TestMessage("--fail-fast, " + firstFailure_ + " failed");
             return true;
         }
     }
@@ -199,7 +199,7 @@ bool RunGate::skip(const Test* test, TestMessage& reason) {
             ran = true;
             if (other.status() != TestStatus::Passed && other.status() != TestStatus::Flaky) {
                 reason = TestMessage(
-                    "skipped: depends on " + dependency + ", which " +
+                    "depends on " + dependency + ", which " +
                     (other.status() == TestStatus::Skipped
                          ? std::string("was skipped")
                          : std::string("did not pass (") + toString(other.status()) + ")"));
@@ -207,7 +207,7 @@ bool RunGate::skip(const Test* test, TestMessage& reason) {
             }
         }
         if (!ran) {
-            reason = TestMessage("skipped: depends on " + dependency + ", which did not run");
+            reason = TestMessage("depends on " + dependency + ", which did not run");
             return true;
         }
     }

@@ -318,8 +318,7 @@ void applySelection(std::vector<SuiteSpec>& suites, const Selection& selection) 
                 if (std::none_of(kept.begin(), kept.end(), namedBy) &&
                     std::any_of(left.begin(), left.end(), namedBy)) {
                     if (test.skipReason.empty()) {
-                        test.skipReason =
-                            "skipped: depends on " + dependency + ", which is not selected";
+                        test.skipReason = "depends on " + dependency + ", which is not selected";
                     }
                 } else {
                     depends.push_back(dependency);

@@ -113,6 +113,11 @@ void WebProgressListener::retryTest(const Test* test, TestMessage /*msg*/) {
     state_->view.retryTest(State::idOf(test));
 }
 
+void WebProgressListener::startRepetition(const Test* test, unsigned int index,
+                                          unsigned int count) {
+    state_->view.startRepetition(State::idOf(test), index, count);
+}
+
 void WebProgressListener::startTest(const Test* test) {
     state_->view.startTest(State::idOf(test), test != nullptr ? test->getName() : std::string());
 }

@@ -2,6 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
+#include <robottestingframework/ResultEvent.h>
+
+#include "text_safety.h"
+
 namespace robottestingframework {
 namespace web {
 
@@ -32,33 +36,6 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 // Test output may hold anything; invalid UTF-8 becomes U+FFFD instead of an exception.
 std::string dump(const Json& json) {
     return json.dump(-1, ' ', false, Json::error_handler_t::replace);
-}
-
-std::string escapeHtml(const std::string& text) {
-    std::string out;
-    out.reserve(text.size());
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            case '\'':
-                out += "&#39;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
 }
 
 // RTF 2.x's /status codes.
@@ -260,9 +237,22 @@ void RunView::retryTest(std::uint64_t id) {
         }
     }
     test.worst = TestStatus::Passed;
+    test.repetition.clear();
     test.state = "not run";  // its next startTest finds it again
     ++test.retries;
     ended_ = Ended();
+}
+
+void RunView::startRepetition(std::uint64_t id, unsigned int index, unsigned int count) {
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        std::size_t suiteIndex = none;
+        std::size_t test = none;
+        if (findOpen(id, suiteIndex, test)) {
+            suites_[suiteIndex].tests[test].repetition = repetitionId(id, index);
+        }
+    }
+    addMessage(id, "report", repetitionMessage(index, count), TestStatus::Passed);
 }
 
 void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& msg,
@@ -297,6 +287,7 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
     if (status > test.worst) {
         test.worst = status;
     }
+    message.repetition = test.repetition;
     if (keep(message, test.messages, test.hiddenReports)) {
         publishTest(suiteIndex, index);
     }
@@ -347,9 +338,21 @@ namespace {
 Json toJson(const std::vector<RunView::Message>& messages) {
     Json list = Json::array();
     for (const auto& message : messages) {
-        list.push_back({{"kind", message.kind}, {"text", message.text}, {"where", message.where}});
+        Json item = {{"kind", message.kind}, {"text", message.text}, {"where", message.where}};
+        if (!message.repetition.empty()) {
+            item["repetition"] = message.repetition;
+        }
+        list.push_back(std::move(item));
     }
     return list;
+}
+
+// A test that runs several times says which repetition it is in; one that runs once is shown
+// as it always was.
+void withRepetition(Json& test, const std::string& repetition) {
+    if (!repetition.empty()) {
+        test["repetition"] = repetition;
+    }
 }
 
 }  // namespace
@@ -377,6 +380,7 @@ void RunView::publishSuite(std::size_t index) {
                                           {"messages", toJson(test.messages)},
                                           {"hiddenReports", test.hiddenReports},
                                           {"output", test.output}});
+        withRepetition(json["suite"]["tests"].back(), test.repetition);
     }
     publish(dump(json));
 }
@@ -394,6 +398,7 @@ void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
                    {"messages", toJson(test.messages)},
                    {"hiddenReports", test.hiddenReports},
                    {"output", test.output}}}};
+    withRepetition(json["test"], test.repetition);
     publish(dump(json));
 }
 
@@ -420,6 +425,7 @@ std::string RunView::snapshotJson() const {
                              {"messages", toJson(test.messages)},
                              {"hiddenReports", test.hiddenReports},
                              {"output", test.output}});
+            withRepetition(tests.back(), test.repetition);
         }
         suites.push_back({{"name", suite.name},
                           {"state", suite.state},
@@ -448,7 +454,7 @@ std::string RunView::statusJson() const {
 
 std::string RunView::logText() const {
     std::lock_guard<std::mutex> lock(mutex_);
-    return escapeHtml(log_);
+    return reporters::escapeMarkup(log_, reporters::Markup::Quoted);
 }
 
 std::uint64_t RunView::waitForChanges(std::uint64_t since, std::chrono::milliseconds timeout,

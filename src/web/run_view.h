@@ -42,6 +42,9 @@ public:
     // The test `id` just ended failing and runs again (--retries): it is open again at its
     // next startTest, and flaky if that attempt passes.
     void retryTest(std::uint64_t id);
+    // Repetition `index` of `count` of the running test `id` starts: its later messages carry
+    // the repetition's id (repetitionId), and the test shows the one it is in.
+    void startRepetition(std::uint64_t id, unsigned int index, unsigned int count);
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -58,7 +61,8 @@ public:
     struct Message {
         std::string kind;  // "failure", "error", "report", ...
         std::string text;
-        std::string where;  // "file:line" when known
+        std::string where;       // "file:line" when known
+        std::string repetition;  // the id of the repetition it came in; empty for none
     };
 
 private:
@@ -73,6 +77,7 @@ private:
         std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
         std::string output;
         std::size_t retries = 0;  // earlier failed attempts
+        std::string repetition;   // the id of the repetition it is in; empty when it runs once
     };
     struct SuiteView {
         std::string name;

@@ -374,3 +374,19 @@ class TestCase:
     assert r.returncode == 1, r
     assert "timed out after 2 s" in r.output, r
     assert "woke up by itself" not in r.output, r
+
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_children_left_behind_are_stopped_without_waiting_the_whole_grace(tmp_path, isolation):
+    # With --isolation none the runner adopts the orphans and must reap them as they die: a
+    # zombie still answers kill(), which held each such test for the 1 s grace (soak bench).
+    leaver = shell(tmp_path, "sleep 60 &\n(sleep 60 &)\nexit 0\n")
+    tests = "\n".join(f'  <test type="exec" name="leaver {i}">{leaver}</test>' for i in range(5))
+    (tmp_path / "suite.xml").write_text(f'<suite name="leavers">\n{tests}\n</suite>\n')
+    junit = tmp_path / "r.xml"
+    r = run_runner("--isolation", isolation, "--suite", tmp_path / "suite.xml",
+                   "--output", f"junit:{junit}", cwd=tmp_path, timeout=60)
+    assert r.returncode == 0, r
+    times = [float(c.get("time")) for c in ET.parse(junit).getroot().iter("testcase")]
+    # Each took at least the 1 s grace before; now a few milliseconds (a loaded machine aside).
+    assert len(times) == 5 and sum(times) < 2.5, times

@@ -163,6 +163,7 @@ def test_fail_fast_stops_the_run_at_the_first_failure(tmp_path, isolation, suite
         status, problem = cases[name]
         assert status == "skipped", (name, r)
         assert "--fail-fast" in (problem.text or ""), name
+    assert "skipped: --fail-fast, bad failed" in r.stdout and "skipped: skipped" not in r.stdout, r
     # Without --fail-fast everything runs.
     r = run_runner("--isolation", isolation, "--suite", suite, "--suite", other,
                    "--output", f"junit:{junit}", timeout=60)
@@ -188,6 +189,9 @@ def test_depends_runs_only_after_its_dependency_passed(tmp_path, isolation, suit
         status, problem = cases[name]
         assert status == "skipped", (name, r)
         assert reason in (problem.text or ""), (name, problem.text)
+    # The console says "skipped" once, then why.
+    assert "skipped: depends on bad, which did not pass (failed)" in r.stdout, r
+    assert "skipped: skipped" not in r.stdout, r
 
 
 def test_depends_on_a_plugin_named_without_its_folder(tmp_path, suite_file):

@@ -196,3 +196,17 @@ def test_flaky_is_its_own_state_on_the_console_and_in_html(tmp_path):
     assert "retry: attempt 1 of 2 failed" in r.stdout, r
     page = html.read_text()
     assert '"state":"flaky"' in page and '"flaky":1' in page
+
+
+def test_a_retried_attempt_is_shown_as_retry_and_only_the_last_line_decides(tmp_path, isolation):
+    flaky, _ = counting_script(tmp_path, "flaky", 1)
+    broken, _ = counting_script(tmp_path, "broken", 99)
+    r = run_runner("--isolation", isolation, "--no-output", "--retries", "2",
+                   "--suite", suite_of(tmp_path, [("flaky", flaky), ("broken", broken)]))
+    assert r.returncode == 1, r
+    words = [line.split()[0] for line in r.stdout.splitlines()
+             if line.startswith("  ") and not line.startswith("   ")
+             and line.split()[0] in ("RETRY", "FAILED", "FLAKY", "passed", "flaky")
+             and line.rstrip().endswith(" s)")]
+    # flaky: one retried attempt then its final line; broken: two retried, then FAILED once.
+    assert words == ["RETRY", "FLAKY", "RETRY", "RETRY", "FAILED"], r.stdout

@@ -94,7 +94,8 @@ def test_a_selected_test_depending_on_one_not_selected_is_skipped(tmp_path, isol
                      "--no-output", cwd=tmp_path)
     assert run.returncode == 0, run
     assert re.search(r"^\s+skipped\s+head\s+\(", run.stdout, re.MULTILINE), run
-    assert "depends on left, which is not selected" in run.stdout, run
+    assert "skipped: depends on left, which is not selected" in run.stdout, run
+    assert "skipped: skipped" not in run.stdout, run
     assert re.search(r"^0 passed, 0 failed, 1 skipped$", run.stdout, re.MULTILINE), run
 
 

@@ -1,13 +1,16 @@
 """Every result goes to the test it is about, by the id its events carry: two tests of one
 name in one suite stay apart, and a script that renames itself mid-run is followed, in every
-output and in both isolation modes."""
+output and in both isolation modes. Each repetition of a test has an id of its own too."""
 import json
 import re
+import socket
+import time
 import xml.etree.ElementTree as ET
 
 import pytest
 
 from conftest import run_runner, validate_ctrf, validate_junit, validate_tap
+from web_run import WebRun, request
 
 TWIN = """import robottestingframework
 class TestCase:
@@ -108,3 +111,97 @@ def test_same_named_tests_and_a_mid_run_rename_are_attributed_right_everywhere(
     assert any("the failing twin fails" in m for m in texts[0]), texts
     assert not any("twin" in m for m in texts[1]), texts
     assert any("fails before the rename" in m for m in texts[2]), texts
+
+
+# Fails in its second run only; says which run each message comes from.
+SECOND_FAILS = """class TestCase:
+    def setup(self, param):
+        self.k = 0
+        return True
+    def run(self):
+        self.k += 1
+        robottestingframework.testReport("inside run %d" % self.k)
+        robottestingframework.testCheck(self.k != 2, "run %d holds" % self.k)
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_each_repetition_has_its_own_id_in_the_json_and_the_shapes_stay(
+        tmp_path, isolation, suite_file):
+    (tmp_path / "second.py").write_text(SECOND_FAILS)
+    suite = suite_file("""<suite name="reps">
+  <test type="python" repetition="3">second.py</test>
+  <test type="python">second.py</test>
+</suite>""")
+    json_file, xml, tap = tmp_path / "r.json", tmp_path / "r.xml", tmp_path / "r.tap"
+    r = run_runner("--isolation", isolation, "--suite", suite, "--output", f"json:{json_file}",
+                   "--output", f"junit:{xml}", "--output", f"tap:{tap}", cwd=tmp_path, timeout=90)
+    assert r.returncode == 1, r
+    validate_ctrf(json_file)
+    tests = json.loads(json_file.read_text())["results"]["tests"]
+    repeated, once = tests
+    rid = repeated["executionId"]
+    repetitions = repeated["extra"]["rtf"]["repetitions"]
+    assert [(p["id"], p["index"], p["count"], p["state"]) for p in repetitions] == [
+        (f"{rid}#1", 1, 3, "passed"), (f"{rid}#2", 2, 3, "failed"), (f"{rid}#3", 3, 3, "passed")]
+    assert "run 2 holds" in repetitions[1]["message"], repetitions
+    assert "message" not in repetitions[0] and "message" not in repetitions[2], repetitions
+    assert all(p["duration"] >= 0 for p in repetitions)
+    # A test that runs once is written as it always was.
+    assert once["status"] == "passed" and "repetitions" not in once["extra"]["rtf"], once
+
+    # JUnit and TAP keep one entry per test, the repetitions in its messages as before.
+    validate_junit(xml)
+    cases = list(ET.parse(xml).getroot().iter("testcase"))
+    assert len(cases) == 2 and cases[0].find("failure") is not None, ET.tostring(cases[0])
+    validate_tap(tap)
+    points = [line.strip() for line in tap.read_text().splitlines()
+              if re.match(r"^\s+(not )?ok \d", line)]
+    assert [p.split(" - ")[0] for p in points] == ["not ok 1", "ok 2"], points
+
+
+def web_events(port):
+    """Every change the page's event stream replays from the start, as JSON."""
+    stream = socket.create_connection(("127.0.0.1", port), timeout=10)
+    stream.sendall(f"GET /events?since=0 HTTP/1.1\r\nHost: 127.0.0.1:{port}\r\n\r\n".encode())
+    received = b""
+    deadline = time.monotonic() + 30
+    while b'"state":"finished"' not in received and time.monotonic() < deadline:
+        received += stream.recv(65536)
+    stream.close()
+    return [json.loads(line[6:]) for line in received.decode().splitlines()
+            if line.startswith("data: ")]
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_the_web_page_shows_the_repetition_each_message_came_in(tmp_path, isolation, suite_file):
+    (tmp_path / "second.py").write_text(SECOND_FAILS)
+    suite = suite_file("""<suite name="reps">
+  <test type="python" repetition="3">second.py</test>
+  <test type="python">second.py</test>
+</suite>""")
+    run = WebRun("--isolation", isolation, "-s", suite, "--web-linger", "60", cwd=tmp_path)
+    try:
+        run.wait_for_line("final page stays")
+        snapshot = json.loads(request(run.port, "/snapshot")[2])
+        repeated, once = snapshot["suites"][0]["tests"]
+        rid = repeated["id"]
+        assert repeated["repetition"] == f"{rid}#3", repeated
+        came_in = {m["text"]: m.get("repetition") for m in repeated["messages"]}
+        for k in (1, 2, 3):
+            assert came_in[f"repetition {k}/3"] == f"{rid}#{k}", came_in
+        # The failed check and its failure, both in the second repetition.
+        assert {m["repetition"] for m in repeated["messages"]
+                if "run 2 holds" in m["text"]} == {f"{rid}#2"}, came_in
+        # A test that runs once is shown as it always was.
+        assert "repetition" not in once and all("repetition" not in m for m in once["messages"])
+
+        # The event stream carries the same ids, change by change.
+        changes = [c["test"] for c in web_events(run.port)
+                   if c.get("type") == "test" and c["test"]["id"] == rid]
+        running = [c.get("repetition") for c in changes if c["state"] == "running"]
+        assert [f"{rid}#{k}" for k in (1, 2, 3)] == sorted(set(r for r in running if r)), running
+        run.proc.send_signal(2)
+        assert run.wait(timeout=10) == 1, run.output()
+    finally:
+        run.kill()

@@ -444,3 +444,81 @@ TEST(CollectorRetries, FailingRetriesStayOneFailedRecord) {
     EXPECT_EQ(c.failedCount(), 1u);
     EXPECT_EQ(c.failedSuiteCount(), 1u);
 }
+
+TEST(CollectorRepetitions, EachRepetitionIsKeyedWithItsOwnStateAndEvents) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named a("a");
+    Named b("b");
+    result.startTest(&a);
+    result.startTest(&b);  // another test open meanwhile does not take a's repetitions
+    for (unsigned int k = 1; k <= 3; ++k) {
+        result.startRepetition(&a, k, 3);
+        if (k == 2) {
+            result.addFailure(&a, TestMessage("second fails"));
+        }
+        result.addReport(&b, TestMessage("b talks"));
+    }
+    result.endTest(&b);
+    result.endTest(&a);
+
+    const TestRecord& ra = c.suites()[0].tests[0];
+    ASSERT_EQ(ra.repetitions.size(), 3u);
+    EXPECT_EQ(ra.repetitions[0].status, TestStatus::Passed);
+    EXPECT_EQ(ra.repetitions[1].status, TestStatus::Failed);
+    EXPECT_EQ(ra.repetitions[2].status, TestStatus::Passed);
+    EXPECT_EQ(ra.repetitions[1].index, 2u);
+    EXPECT_EQ(ra.repetitions[1].count, 3u);
+    EXPECT_EQ(ra.status, TestStatus::Failed);
+    // The repetition's start is still the report RTF 2.x listeners saw; every event carries it.
+    ASSERT_EQ(ra.events.size(), 4u);
+    EXPECT_EQ(ra.events[0].message.getMessage(), "repetition 1/3");
+    EXPECT_EQ(ra.events[2].message.getMessage(), "second fails");
+    EXPECT_EQ(ra.events[2].repetition, 2u);
+    EXPECT_EQ(ra.events[3].repetition, 3u);
+    EXPECT_EQ(repetitionId(a.getId(), 2), std::to_string(a.getId()) + "#2");
+
+    const TestRecord& rb = c.suites()[0].tests[1];
+    EXPECT_TRUE(rb.repetitions.empty());
+    for (const ResultEvent& event : rb.events) {
+        EXPECT_EQ(event.repetition, 0u);
+    }
+}
+
+TEST(TestResult, CutsAMessageLongerThan128KiBSayingSo) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named a("a");
+    result.startTest(&a);
+    result.addFailure(&a, TestMessage(std::string(1000000, 'm'), std::string(10, 'd')));
+    result.endTest(&a);
+    const ResultEvent& failure = c.suites()[0].tests[0].events.at(0);
+    EXPECT_EQ(failure.message.getMessage().compare(0, 131072, std::string(131072, 'm')), 0);
+    EXPECT_NE(failure.message.getMessage().find("[... 868928 more bytes of this message dropped]"),
+              std::string::npos);
+    EXPECT_LT(failure.message.getMessage().size(), 140000u);
+    EXPECT_EQ(failure.message.getDetail(), std::string(10, 'd'));
+    EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Failed);
+}
+
+TEST(TestResultCollector, OnceTheOutputBudgetIsSpentEachTestKeepsItsTail) {
+    TestResultCollector c;
+    c.setOutputBudget(100 * 1024);
+    Named a("a");
+    Named b("b");
+    const std::string chunk(64 * 1024, 'x');
+    c.startTest(&a);
+    c.addOutput(&a, chunk);
+    c.endTest(&a);
+    c.startTest(&b);
+    c.addOutput(&b, chunk + "the end\n");
+    c.endTest(&b);
+    const auto& tests = c.suites()[0].tests;
+    EXPECT_EQ(tests[0].output, chunk);  // within the budget: whole
+    const std::string& cut = tests[1].output;
+    EXPECT_LT(cut.size(), 4096u + 200u);
+    EXPECT_NE(cut.find("keep 100 KiB of output in all]"), std::string::npos) << cut.substr(0, 200);
+    EXPECT_EQ(cut.substr(cut.size() - 8), "the end\n");
+}

@@ -122,3 +122,17 @@ TEST(TextSafety, InvalidUtf8IsReplacedAndJsonStaysInertInHtml) {
     EXPECT_EQ(validUtf8("caf\xC3\xA9"), "caf\xC3\xA9");
     EXPECT_EQ(jsonString("</script>\n\"\\\x01"), "\"\\u003c/script\\u003e\\n\\\"\\\\\\u0001\"");
 }
+
+TEST(TextSafety, PlainTextIsValidUtf8WithoutControlCharacters) {
+    EXPECT_EQ(plainText(std::string("a\0b\xff\tc\x1b[31m\r\n", 13)), "ab\xEF\xBF\xBD\tc[31m\r\n");
+}
+
+TEST(TextSafety, OneMarkupEscapingForEachPlaceTextGoes) {
+    const std::string text = "<a href=\"x\">it's & \x01\xff\ttab\nline\r";
+    EXPECT_EQ(escapeMarkup(text, Markup::Text), "&lt;a href=\"x\"&gt;it's &amp; \ttab\nline&#13;");
+    EXPECT_EQ(escapeMarkup(text, Markup::Quoted),
+              "&lt;a href=&quot;x&quot;&gt;it&#39;s &amp; \ttab\nline&#13;");
+    EXPECT_EQ(escapeMarkup(text, Markup::Attribute),
+              "&lt;a href=&quot;x&quot;&gt;it's &amp; &#9;tab&#10;line&#13;");
+    EXPECT_EQ(escapeMarkup("caf\xC3\xA9", Markup::Quoted), "caf\xC3\xA9");
+}

@@ -99,6 +99,9 @@ TEST(RunView, TestTextIsEscapedDataAndInvalidUtf8IsReplaced) {
     EXPECT_EQ(snapshot["suites"][0]["tests"][0]["name"], "line\nbreak \"quoted\" \xef\xbf\xbd");
     EXPECT_EQ(view.logText().find('<'), std::string::npos) << view.logText();
     EXPECT_NE(view.logText().find("&lt;/script&gt;"), std::string::npos);
+    // Escaped as the reports are: what XML cannot hold is not served either.
+    EXPECT_EQ(view.logText().find('\xff'), std::string::npos) << view.logText();
+    EXPECT_NE(view.logText().find("&quot;quoted&quot;"), std::string::npos) << view.logText();
 }
 
 TEST(RunView, CloseEndsAWaitingReader) {

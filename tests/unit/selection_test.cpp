@@ -90,5 +90,5 @@ TEST(Selection, DropsUnselectedTestsAndEmptySuitesAndSaysWhyADependencyIsMissing
     ASSERT_EQ(suites[0].tests.size(), 1u);
     EXPECT_EQ(suites[0].tests[0].name, "head");
     EXPECT_TRUE(suites[0].tests[0].depends.empty());
-    EXPECT_EQ(suites[0].tests[0].skipReason, "skipped: depends on left, which is not selected");
+    EXPECT_EQ(suites[0].tests[0].skipReason, "depends on left, which is not selected");
 }

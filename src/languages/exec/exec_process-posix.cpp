@@ -57,15 +57,29 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 // The program led its own process group; what it started in the background may still be in
 // it after it ended. SIGTERM, a short grace, then SIGKILL, so a test never leaves them behind.
+// Members of the group that are our children (with --isolation none the runner adopts the
+// orphans a test leaves) are reaped as they die: a zombie still answers kill(), and would hold
+// every such test for the whole grace.
+bool groupAlive(pid_t group) {
+    while (::waitpid(-group, nullptr, WNOHANG) > 0) {
+    }
+    return ::kill(-group, 0) == 0;
+}
+
 void stopGroup(pid_t group) {
     if (!platform::signalProcessGroup(group, SIGTERM)) {
         return;  // nothing left
     }
     const auto start = std::chrono::steady_clock::now();
-    while (::kill(-group, 0) == 0 && secondsSince(start) < kStopGrace) {
+    while (groupAlive(group) && secondsSince(start) < kStopGrace) {
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
-    platform::signalProcessGroup(group, SIGKILL);
+    if (platform::signalProcessGroup(group, SIGKILL)) {
+        const auto killed = std::chrono::steady_clock::now();
+        while (groupAlive(group) && secondsSince(killed) < 0.2) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        }
+    }
 }
 
 }  // namespace
