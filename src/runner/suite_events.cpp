@@ -36,6 +36,9 @@ public:
         result_.renameTest(test, name);
     }
     void retryTest(const Test* test, TestMessage msg) override { result_.retryTest(test, msg); }
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override {
+        result_.startRepetition(test, index, count);
+    }
 
 private:
     TestResult& result_;
@@ -116,6 +119,9 @@ void SuiteEvents::renameTest(const Test* test, const std::string& name) {
 }
 void SuiteEvents::retryTest(const Test* test, TestMessage msg) {
     add([=](TestListener& to) { to.retryTest(test, msg); });
+}
+void SuiteEvents::startRepetition(const Test* test, unsigned int index, unsigned int count) {
+    add([=](TestListener& to) { to.startRepetition(test, index, count); });
 }
 
 }  // namespace runner

@@ -42,6 +42,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
 
 private:
     void add(Event event);
