@@ -70,17 +70,28 @@ std::vector<FailedTest> fromJson(const std::string& path, const std::string& tex
                                  runnerName + "\" and results.tests)");
     }
     std::vector<FailedTest> failed;
+    std::size_t index = 0;
     for (const auto& test : document["results"]["tests"]) {
-        const auto state = test.value("/extra/rtf/state"_json_pointer, std::string());
-        if (!rerunState(state)) {
-            continue;
+        // value() throws a bare type error for a test that is not an object or a state or
+        // name that is not a string: say which test of which file.
+        try {
+            const auto state = test.value("/extra/rtf/state"_json_pointer, std::string());
+            if (rerunState(state)) {
+                std::string suite;
+                if (test.contains("suite") && test["suite"].is_array() && !test["suite"].empty() &&
+                    test["suite"][0].is_string()) {
+                    suite = test["suite"][0].get<std::string>();
+                }
+                failed.push_back({suite, test.value("name", std::string())});
+            }
+        } catch (const nlohmann::json::exception& e) {
+            throw std::runtime_error("--rerun-failed " + path + ": results.tests[" +
+                                     std::to_string(index) +
+                                     "] is not a test of this runner (expected an object with "
+                                     "a string \"name\" and extra.rtf.state; " +
+                                     e.what() + ")");
         }
-        std::string suite;
-        if (test.contains("suite") && test["suite"].is_array() && !test["suite"].empty() &&
-            test["suite"][0].is_string()) {
-            suite = test["suite"][0].get<std::string>();
-        }
-        failed.push_back({suite, test.value("name", std::string())});
+        ++index;
     }
     return failed;
 }
@@ -94,7 +105,10 @@ std::vector<FailedTest> readFailedTests(const std::string& path) {
     }
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    return parseFailedTests(buffer.str(), path);
+}
+
+std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path) {
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     if (first != std::string::npos && text[first] == '<') {
         return fromJUnit(path, text);
