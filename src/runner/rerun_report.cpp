@@ -61,9 +61,11 @@ std::vector<FailedTest> fromJson(const std::string& path, const std::string& tex
     } catch (const nlohmann::json::exception& e) {
         throw std::runtime_error("--rerun-failed " + path + ": not valid JSON (" + e.what() + ")");
     }
-    if (!document.is_object() || document.value("reportFormat", "") != "CTRF" ||
-        !document["generatedBy"].is_string() || document["generatedBy"] != runnerName ||
-        !document["results"].is_object() || !document["results"]["tests"].is_array()) {
+    // value() would throw a bare type error for a "reportFormat" that is not a string.
+    if (!document.is_object() || !document["reportFormat"].is_string() ||
+        document["reportFormat"] != "CTRF" || !document["generatedBy"].is_string() ||
+        document["generatedBy"] != runnerName || !document["results"].is_object() ||
+        !document["results"]["tests"].is_array()) {
         throw std::runtime_error("--rerun-failed " + path +
                                  ": not a JSON (CTRF) output of this runner (expected "
                                  "\"generatedBy\": \"" +

@@ -143,6 +143,8 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
     ('{"reportFormat": "CTRF", "generatedBy": "robottestingframework-testrunner", '
      '"results": {"tests": [{"name": "a", "extra": {"rtf": {"state": "failed"}}}, 7]}}',
      "results.tests[1] is not a test of this runner"),
+    ('{"reportFormat": {}, "generatedBy": "robottestingframework-testrunner", '
+     '"results": {"tests": []}}', "not a JSON (CTRF) output of this runner"),
 ])
 def test_rerun_failed_on_a_missing_or_foreign_report_exits_2(tmp_path, content, why):
     steady, _ = counting_script(tmp_path, "steady", 0)
