@@ -5,9 +5,9 @@
 #                       build/example-reports/
 #   ./run.sh test       runs every test (ctest); last line "N passed, N failed"
 #   ./run.sh sanitize   builds build-asan/ with -DRTF_SANITIZE=ON and runs the unit tests
-#   ./run.sh fuzz [SECONDS]  builds build-fuzz/ with clang and -DRTF_FUZZ=ON and runs every
-#                       fuzz target SECONDS (default 60), two at a time; findings in
-#                       build-fuzz/findings/<target>/
+#   ./run.sh fuzz [SECONDS [TARGET...]]  builds build-fuzz/ with clang and -DRTF_FUZZ=ON and
+#                       runs every fuzz target (or those named) SECONDS (default 60), two at a
+#                       time; findings in build-fuzz/findings/<target>/
 # The build folder can be moved with RTF_BUILD_DIR (default build).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -15,7 +15,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|sanitize|fuzz [SECONDS]" >&2
+    echo "usage: $0 example|test|sanitize|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -124,7 +124,7 @@ fuzz_target() {
     return $status
 }
 
-[[ $# -eq 1 || ( $# -eq 2 && "$1" == fuzz ) ]] || usage
+[[ $# -eq 1 || "$1" == fuzz ]] || usage
 case "$1" in
 example)
     scripts/install-deps.sh
@@ -192,6 +192,17 @@ fuzz)
         -DRTF_ENABLE_PYTHON=OFF -DRTF_ENABLE_LUA=OFF -DRTF_ENABLE_RUBY=OFF
     cmake --build build-fuzz -j2 --target fuzz
     targets=$(cd build-fuzz/bin && ls fuzz-* | sed 's/^fuzz-//')
+    if [[ $# -gt 2 ]]; then
+        for target in "${@:3}"; do
+            grep -qx "$target" <<<"$targets" || {
+                echo "run.sh: no fuzz target '$target' (there are: $(echo $targets))" >&2
+                exit 2
+            }
+        done
+        targets="${*:3}"
+    fi
+    # Each run's findings are its own; the corpus (build-fuzz/corpus/) keeps growing.
+    rm -rf build-fuzz/findings
     # Leaks are findings; undefined behaviour halts (-fno-sanitize-recover=all) with a trace.
     export ASAN_OPTIONS=detect_leaks=1
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
