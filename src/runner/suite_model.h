@@ -62,8 +62,8 @@ struct SuiteSpec {
     std::vector<std::string> tags;  // tags="..." of the suite: given to each of its tests
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
-    std::vector<ResourceSpec> resources;  // as written, in document order
-    bool exclusive = false;               // exclusive="true": runs alone
+    std::vector<ResourceSpec> resources;     // as written, in document order
+    bool exclusive = false;                  // exclusive="true": runs alone
     std::vector<VariableValue> variables;    // by name
     std::vector<std::string> variablesUsed;  // the names its ${...} looked up
     SourceLocation where;
