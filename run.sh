@@ -10,6 +10,9 @@
 #                       end-to-end tests and the fuzz regression inputs under it
 #   ./run.sh coverage   builds build-coverage/ with -DRTF_COVERAGE=ON, runs every test and
 #                       writes build-coverage/coverage/index.html and coverage.txt
+#   ./run.sh fuzz [SECONDS [TARGET...]]  builds build-fuzz/ with clang and -DRTF_FUZZ=ON and
+#                       runs every fuzz target (or those named) SECONDS (default 60), two at a
+#                       time; findings in build-fuzz/findings/<target>/
 # The build folder can be moved with RTF_BUILD_DIR (default build).
 set -euo pipefail
 cd "$(dirname "$0")"
@@ -17,7 +20,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|sanitize|coverage" >&2
+    echo "usage: $0 example|test|sanitize|coverage|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -159,7 +162,60 @@ sanitized_ruby='^RubyLoader\.|^Languages/ScriptPluginLoader\..*/rb'
 # sanitizers. A parse-time ratio, and a plug-in that must ignore SIGTERM within 0.3 s.
 unsanitized='^TapParser\.NestedSubtestsParseInTimeLinearInTheStream$|^Isolation\.TestIgnoringSigtermIsKilledAfterTheGrace$'
 
-[[ $# -eq 1 ]] || usage
+
+# fuzz_target <build dir> <target> <seconds>: runs one libFuzzer program of <build dir>/bin for
+# <seconds> in all; its log is <build dir>/logs/<target>.log, what it found goes to
+# <build dir>/findings/<target>/. Prints one line: the target, its executions and its result.
+# libFuzzer's -timeout is wall-clock time, so a busy machine can stop it on an input that is
+# not slow: an input that timed out is run again alone, and only one that times out again is a
+# finding. Otherwise it is set aside (findings/<target>/unconfirmed/) and fuzzing goes on, from
+# the corpus kept in <build dir>/corpus/<target>/, for the rest of the time.
+fuzz_target() {
+    local dir=$1 target=$2 seconds=$3
+    local log=$dir/logs/$target.log findings=$dir/findings/$target/
+    local options=(-timeout=1 -rss_limit_mb=2048 -print_final_stats=1
+        -artifact_prefix="$findings")
+    mkdir -p "$findings/unconfirmed" "$dir/corpus/$target" "$dir/logs"
+    : >"$log"
+    if [[ -f tests/fuzz-corpus/$target.dict ]]; then
+        options+=(-dict="tests/fuzz-corpus/$target.dict")
+    fi
+    local end=$((SECONDS + seconds)) runs=0 status=0 slow=0 left artifact
+    while ((status == 0 && (left = end - SECONDS) > 0)); do
+        touch "$dir/logs/$target.start"
+        # New inputs go to the first folder (build tree); the seeds stay as they are.
+        nice -n 19 "$dir/bin/fuzz-$target" "${options[@]}" -max_total_time="$left" \
+            "$dir/corpus/$target" "tests/fuzz-corpus/$target" >>"$log" 2>&1 || status=$?
+        local executed
+        executed=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -n 1)
+        runs=$((runs + ${executed:-0}))
+        sed -i 's/^stat::number_of_executed_units:/counted &/' "$log"
+        artifact=$(find "$findings" -maxdepth 1 -type f -newer "$dir/logs/$target.start" |
+            head -n 1)
+        if [[ $status -eq 70 && "$artifact" == */timeout-* ]] &&
+            "$dir/bin/fuzz-$target" -timeout=1 "$artifact" >>"$log" 2>&1; then
+            echo "run.sh: $artifact did not time out when run alone: machine load" >>"$log"
+            mv "$artifact" "$findings/unconfirmed/"
+            slow=$((slow + 1))
+            status=0
+        fi
+    done
+    rm -f "$dir/logs/$target.start"
+    local note=""
+    if ((slow > 0)); then
+        note=" ($slow timeouts not reproduced alone, set aside)"
+    fi
+    if [[ $status -eq 0 ]]; then
+        echo "fuzz $target: $runs executions in $seconds s, no finding$note"
+    else
+        echo "fuzz $target: $runs executions, FINDING (exit $status): $(
+            grep -E 'ERROR: |runtime error:' "$log" | tail -n 1)$note"
+        echo "  log: $log; input: ${artifact:-none}"
+    fi
+    return $status
+}
+
+[[ $# -eq 1 || "$1" == fuzz ]] || usage
 case "$1" in
 example)
     scripts/install-deps.sh
@@ -201,6 +257,42 @@ sanitize)
 coverage)
     scripts/install-deps.sh
     coverage_job
+    ;;
+fuzz)
+    seconds=${2:-60}
+    [[ "$seconds" =~ ^[1-9][0-9]*$ ]] || usage
+    scripts/install-deps.sh
+    # Only what the fuzz targets need: no tests, examples, benchmarks nor embedded languages.
+    configure build-fuzz -DRTF_FUZZ=ON -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ \
+        -DRTF_BUILD_TESTS=OFF -DRTF_BUILD_EXAMPLES=OFF -DRTF_BUILD_BENCH=OFF \
+        -DRTF_ENABLE_PYTHON=OFF -DRTF_ENABLE_LUA=OFF -DRTF_ENABLE_RUBY=OFF
+    cmake --build build-fuzz -j2 --target fuzz
+    targets=$(cd build-fuzz/bin && ls fuzz-* | sed 's/^fuzz-//')
+    if [[ $# -gt 2 ]]; then
+        for target in "${@:3}"; do
+            grep -qx "$target" <<<"$targets" || {
+                echo "run.sh: no fuzz target '$target' (there are: $(echo $targets))" >&2
+                exit 2
+            }
+        done
+        targets="${*:3}"
+    fi
+    # Each run's findings are its own; the corpus (build-fuzz/corpus/) keeps growing.
+    rm -rf build-fuzz/findings
+    # Leaks are findings; undefined behaviour halts (-fno-sanitize-recover=all) with a trace.
+    export ASAN_OPTIONS=detect_leaks=1
+    export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    export -f fuzz_target
+    status=0
+    # Two at a time; each prints its line when it ends.
+    printf '%s\n' $targets | xargs -P 2 -I{} bash -c 'fuzz_target build-fuzz "$1" "$2"' _ {} \
+        "$seconds" | tee build-fuzz/fuzz-summary.log || status=$?
+    count=$(wc -w <<<"$targets")
+    found=$(grep -c 'FINDING' build-fuzz/fuzz-summary.log || true)
+    runs=$(sed -nE 's/^fuzz [^:]+: ([0-9]+) executions.*/\1/p' build-fuzz/fuzz-summary.log |
+        awk '{ total += $1 } END { print total + 0 }')
+    echo "fuzz: $count targets, ${runs:-0} executions, $found with findings (build-fuzz/findings/)"
+    [[ $status -eq 0 && $found -eq 0 ]]
     ;;
 *)
     usage

@@ -13,6 +13,7 @@ packages=(
     libcpp-httplib-dev chromium chromium-driver python3-selenium
     python3-yaml
     gcovr
+    clang libclang-rt-14-dev
 )
 
 missing=()

@@ -46,7 +46,7 @@ std::string languageName(const std::string& type) {
 }
 
 // The script languages of this build: each in a module of its own, loaded on first use.
-bool isScriptLanguage(const std::string& type) {
+bool isScriptLanguage([[maybe_unused]] const std::string& type) {  // unused without languages
 #ifdef RTF_HAVE_PYTHON
     if (type == "python") {
         return true;

@@ -153,6 +153,8 @@ void readJUnit(Report& report, const std::string& text, const Place& place) {
     }
 }
 
+void readJsonShape(Report& report, const Place& place);
+
 void readJson(Report& report, const std::string& text, const Place& place) {
     try {
         report.json = nlohmann::ordered_json::parse(text);
@@ -160,11 +162,23 @@ void readJson(Report& report, const std::string& text, const Place& place) {
         throw place.error(static_cast<long>(e.byte) - 1,
                           std::string("not valid JSON (") + e.what() + ")");
     }
+    // The checks below test each value's type before reading it; should one be missed, a bare
+    // JSON type error must still name the file.
+    try {
+        readJsonShape(report, place);
+    } catch (const nlohmann::json::exception& e) {
+        throw place.error(
+            -1, std::string("not a JSON (CTRF) output of this runner (") + e.what() + ")");
+    }
+}
+
+void readJsonShape(Report& report, const Place& place) {
     const auto& document = report.json;
-    if (!document.is_object() || document.value("reportFormat", "") != "CTRF" ||
-        !document.contains("generatedBy") || document["generatedBy"] != runnerName ||
-        !document.contains("results") || !document["results"].is_object() ||
-        !document["results"].contains("tests") || !document["results"]["tests"].is_array()) {
+    if (!document.is_object() || !document.contains("reportFormat") ||
+        document["reportFormat"] != "CTRF" || !document.contains("generatedBy") ||
+        document["generatedBy"] != runnerName || !document.contains("results") ||
+        !document["results"].is_object() || !document["results"].contains("tests") ||
+        !document["results"]["tests"].is_array()) {
         throw place.error(-1, std::string("not a JSON (CTRF) output of this runner (expected "
                                           "\"generatedBy\": \"") +
                                   runnerName + "\" and results.tests)");
@@ -182,6 +196,9 @@ void readJson(Report& report, const std::string& text, const Place& place) {
         report.shard.known = true;
         report.shard.index = shard["index"].get<unsigned int>();
         report.shard.count = shard["count"].get<unsigned int>();
+    }
+    if (extra.contains("rerun") && !extra["rerun"].is_boolean()) {
+        throw place.error(-1, "results.extra.rtf.rerun: expected true or false");
     }
     report.shard.rerun = extra.value("rerun", false);
     checkShard(report.shard, place, -1);
@@ -253,7 +270,10 @@ Report readReport(const std::string& option, const std::string& path) {
     }
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    const std::string text = buffer.str();
+    return parseReport(option, buffer.str(), path);
+}
+
+Report parseReport(const std::string& option, const std::string& text, const std::string& path) {
     const Place place(option, path, text);
     Report report;
     report.path = path;

@@ -51,6 +51,9 @@ struct Report {
 // this runner, or out of shape.
 Report readReport(const std::string& option, const std::string& path);
 
+// The same from text already read; `path` names it in messages.
+Report parseReport(const std::string& option, const std::string& text, const std::string& path);
+
 // The JUnit <property> names and CTRF keys of the shard a report comes from.
 extern const char* const shardIndexProperty;  // "rtf.shard.index"
 extern const char* const shardCountProperty;  // "rtf.shard.count"

@@ -30,6 +30,10 @@ std::vector<FailedTest> readFailedTests(const std::string& path) {
     return failedTests(readReport("--rerun-failed", path));
 }
 
+std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path) {
+    return failedTests(parseReport("--rerun-failed", text, path));
+}
+
 void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed) {
     std::vector<SuiteSpec> chosen;
     for (auto& suite : suites) {

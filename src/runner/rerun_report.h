@@ -22,6 +22,8 @@ std::vector<FailedTest> failedTests(const Report& report);
 // The failed tests of `path`. Throws std::runtime_error saying why when the file is missing,
 // unreadable, not JUnit or JSON, or not written by this runner.
 std::vector<FailedTest> readFailedTests(const std::string& path);
+// The same from the report's text (`path` names it in messages).
+std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path);
 
 // Keeps in `suites` only the tests `failed` names (by name="..." or plug-in, in their suite),
 // and only the suites left with a test, whose fixtures then run as usual.

@@ -689,6 +689,18 @@ SuiteSpec parseSuite(const std::string& text, const std::string& path,
     return reader.readSuite(reader.parseRoot(document, "<suite name=\"...\">"));
 }
 
+TestSpec parseTestFile(const std::string& text, const std::string& path,
+                       std::vector<std::string>& warnings,
+                       const std::vector<variables::Variable>& suiteVariables) {
+    variables::VariableTable table;
+    for (const auto& variable : suiteVariables) {
+        table.define(variable);
+    }
+    SuiteReader reader(text, path, warnings, table);
+    pugi::xml_document document;
+    return reader.readTestDocument(reader.parseRoot(document, "<test>"), pugi::xml_node());
+}
+
 SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings,
                         const std::vector<variables::Variable>& commandLine) {
     return parseSuite(readBoundedFile(path, "suite file"), path, warnings, commandLine);

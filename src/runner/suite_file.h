@@ -37,5 +37,11 @@ SuiteSpec parseSuite(const std::string& text, const std::string& path,
                      std::vector<std::string>& warnings,
                      const std::vector<variables::Variable>& commandLine = {});
 
+// A test file's text (what <test file="..."/> reads) on its own, as a suite naming it without
+// attributes would read it with `suiteVariables` defined. `path` names it in messages.
+TestSpec parseTestFile(const std::string& text, const std::string& path,
+                       std::vector<std::string>& warnings,
+                       const std::vector<variables::Variable>& suiteVariables = {});
+
 }  // namespace runner
 }  // namespace robottestingframework

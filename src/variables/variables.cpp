@@ -235,6 +235,11 @@ bool readVariableFile(const std::string& path, std::vector<Variable>& out, std::
         error = path + ": cannot read the variable file (" + std::strerror(errno) + ")";
         return false;
     }
+    return readVariables(in, path, out, error);
+}
+
+bool readVariables(std::istream& in, const std::string& path, std::vector<Variable>& out,
+                   std::string& error) {
     std::string line;
     unsigned int number = 0;
     std::size_t bytes = 0;

@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <istream>
 #include <map>
 #include <string>
 #include <vector>
@@ -87,6 +88,9 @@ bool isVariableName(const std::string& name);
 // lines starting with # ignored. The variables are appended to `out` with Source::VarFile and
 // "FILE:LINE" as their origin. False, with `error` ("FILE:LINE: what"), when it cannot.
 bool readVariableFile(const std::string& path, std::vector<Variable>& out, std::string& error);
+// The same from a stream (`path` names it in messages).
+bool readVariables(std::istream& in, const std::string& path, std::vector<Variable>& out,
+                   std::string& error);
 
 // `value` written so that expanding it gives it back ("${" becomes "$${").
 std::string escape(const std::string& value);

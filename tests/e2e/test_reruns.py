@@ -136,6 +136,16 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
     ("<testsuites", "not valid XML"),
     ("{", "not valid JSON"),
     ("TAP version 14\n1..0\n", "not a JUnit (XML) or JSON (CTRF)"),
+    # Found by fuzzing (tests/fuzz-regressions/rerun_report/): a bare JSON type error.
+    ('{"reportFormat": "CTRF", "generatedBy": "robottestingframework-testrunner", '
+     '"results": {"tests": [{"name": "a", "extra": {"rtf": {"state": 3}}}]}}',
+     "results.tests[0]: expected a test"),
+    ('{"reportFormat": "CTRF", "generatedBy": "robottestingframework-testrunner", '
+     '"results": {"tests": [{"name": "a", "testId": "1.1", "duration": 1, '
+     '"extra": {"rtf": {"state": "failed"}}}, 7]}}',
+     "results.tests[1]: expected a test"),
+    ('{"reportFormat": {}, "generatedBy": "robottestingframework-testrunner", '
+     '"results": {"tests": []}}', "not a JSON (CTRF) output of this runner"),
 ])
 def test_rerun_failed_on_a_missing_or_foreign_report_exits_2(tmp_path, content, why):
     steady, _ = counting_script(tmp_path, "steady", 0)

@@ -7,6 +7,7 @@
 #include "suite_file.h"
 
 using robottestingframework::runner::parseSuite;
+using robottestingframework::runner::parseTestFile;
 using robottestingframework::runner::readSuiteFile;
 using robottestingframework::runner::SuiteFileError;
 using robottestingframework::runner::SuiteSpec;
@@ -224,4 +225,25 @@ TEST(SuiteFile, AVariableNameMustBeAName) {
                       "</variable></suite>")
                   .find(":3: <variable name=\"a\"> given twice (first at line 2)"),
               std::string::npos);
+}
+
+// The text entry point of test files (the fuzz target's): the suite's variables win over the
+// file's defaults, and errors name the test file.
+TEST(SuiteFile, ParsesATestFileOnItsOwnWithTheSuitesVariables) {
+    using robottestingframework::variables::Source;
+    std::vector<std::string> warnings;
+    const auto test = parseTestFile(
+        "<test param=\"--robot ${robot} --speed ${speed}\">\n"
+        "  <variable name=\"robot\">default</variable><variable name=\"speed\">1</variable>\n"
+        "  arm_test\n</test>\n",
+        "/nowhere/tests/arm.xml", warnings, {{"robot", "icubSim", Source::Suite, "suite.xml:2"}});
+    EXPECT_EQ(test.plugin, "arm_test");
+    EXPECT_EQ(test.param, "--robot icubSim --speed 1");
+    try {
+        parseTestFile("<test>\n<fixture/></test>", "/nowhere/tests/arm.xml", warnings);
+        FAIL() << "a <fixture> inside a test file's <test> was accepted";
+    } catch (const SuiteFileError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("/nowhere/tests/arm.xml:2: <fixture>", 0), 0u)
+            << e.what();
+    }
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <sstream>
 
 #include "variables.h"
 
@@ -137,4 +138,15 @@ TEST(Variables, ReadsAVariableFileWithCommentsAndNamesABadLine) {
     EXPECT_FALSE(readVariableFile(path, found, error));
     EXPECT_NE(error.find(path + ":2: no '='"), std::string::npos) << error;
     std::remove(path.c_str());
+}
+
+// The stream entry point (the fuzz target's) reads as the file does.
+TEST(Variables, ReadsVariablesFromAStreamNamingTheLineOfAnError) {
+    std::istringstream in("# c\nrobot = icubSim\n\nbad line\n");
+    std::vector<Variable> found;
+    std::string error;
+    EXPECT_FALSE(readVariables(in, "vars.env", found, error));
+    ASSERT_EQ(found.size(), 1u);
+    EXPECT_EQ(found[0].origin, "vars.env:2");
+    EXPECT_NE(error.find("vars.env:4: no '='"), std::string::npos) << error;
 }
