@@ -475,3 +475,22 @@ class TestCase:
         assert raised.get("status") == "error", (prestart, r)
         text = message(raised) + "".join(raised.itertext())
         assert "ValueError: deliberate" in text and "in helper" in text, (prestart, text)
+
+
+def test_python_workers_find_the_prestarted_interpreters_objects_frozen(tmp_path):
+    # gc.freeze() before the fork point: a test's collections leave the objects every fork
+    # shares alone instead of writing to (and so copying) each of their pages.
+    tests = {"frozen_test.py": """import gc
+
+class TestCase:
+    def run(self):
+        robottestingframework.testReport("frozen objects: %d" % gc.get_freeze_count())
+"""}
+    for prestart in ("1", "0"):
+        r, junit = run_suite(tmp_path, tests, env={"RTF_PRESTART": prestart})
+        assert junit["frozen_test.py"].get("status") != "failure", (prestart, r)
+        found = re.search(r"frozen objects: (\d+)", r.output)
+        assert found, (prestart, r)
+        frozen = int(found.group(1))
+        # Without a pre-started interpreter nothing is frozen; with one, all it made (thousands).
+        assert (frozen > 1000) if prestart == "1" else (frozen == 0), (prestart, frozen)
