@@ -161,6 +161,9 @@ void readJson(Report& report, const std::string& text, const Place& place) {
     } catch (const nlohmann::json::parse_error& e) {
         throw place.error(static_cast<long>(e.byte) - 1,
                           std::string("not valid JSON (") + e.what() + ")");
+    } catch (const nlohmann::json::exception& e) {
+        // Not a parse_error: a number too large for a double (found by fuzzing).
+        throw place.error(-1, std::string("not valid JSON (") + e.what() + ")");
     }
     // The checks below test each value's type before reading it; should one be missed, a bare
     // JSON type error must still name the file.

@@ -49,7 +49,8 @@ ResourcePools readResourceFile(const std::string& path) {
     json document;
     try {
         document = json::parse(text.str());
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {
+        // parse_error, or out_of_range for a number too large for a double.
         fail(path, std::string("not valid JSON: ") + e.what());
     }
     const std::string shape =

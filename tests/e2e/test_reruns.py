@@ -136,6 +136,8 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
     ("<testsuites", "not valid XML"),
     ("{", "not valid JSON"),
     ("TAP version 14\n1..0\n", "not a JUnit (XML) or JSON (CTRF)"),
+    # Found by fuzzing (tests/fuzz-regressions/rerun_report/): a number too large for a double.
+    ('{"reportFormat": "CTRF", "results": {"tests": []}, "x": 1e999}', "not valid JSON"),
     # Found by fuzzing (tests/fuzz-regressions/rerun_report/): a bare JSON type error.
     ('{"reportFormat": "CTRF", "generatedBy": "robottestingframework-testrunner", '
      '"results": {"tests": [{"name": "a", "extra": {"rtf": {"state": 3}}}]}}',

@@ -156,7 +156,8 @@ TEST(SchedulerResources, ResourceFileIsReadLikeCTestsAndCheckedAgainstSuites) {
     for (const char* bad :
          {"[]", R"({"version": {"major": 1}, "local": []})",
           R"({"version": {"major": 1}, "local": [{"gpus": [{"slots": 1}]}]})",
-          R"({"version": {"major": 1}, "local": [{"gpus": [{"id": "0", "slots": 0}]}]})"}) {
+          R"({"version": {"major": 1}, "local": [{"gpus": [{"id": "0", "slots": 0}]}]})",
+          R"({"version": {"major": 1e999}, "local": []})"}) {
         writeFile("bad.json", bad);
         EXPECT_THROW(readResourceFile(std::string(RTF_UNIT_TEST_TMPDIR) + "/bad.json"),
                      std::runtime_error)
