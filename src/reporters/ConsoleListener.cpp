@@ -11,18 +11,8 @@ namespace robottestingframework {
 
 namespace {
 
-const char* const red = "\033[31m";
-const char* const green = "\033[32m";
-const char* const yellow = "\033[33m";
-const char* const bold = "\033[1m";
-const char* const plain = "\033[0m";
-
-const char* colourOf(TestStatus status) {
-    if (status == TestStatus::Passed) {
-        return green;
-    }
-    return status == TestStatus::Skipped ? yellow : red;
-}
+using namespace reporters::colour;
+using reporters::colourOf;
 
 const char* colourOf(ResultEvent::Kind kind, bool passed) {
     using Kind = ResultEvent::Kind;

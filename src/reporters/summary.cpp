@@ -5,6 +5,13 @@
 namespace robottestingframework {
 namespace reporters {
 
+const char* colourOf(TestStatus status) {
+    if (status == TestStatus::Passed) {
+        return colour::green;
+    }
+    return status == TestStatus::Skipped ? colour::yellow : colour::red;
+}
+
 const char* statusWord(TestStatus status) {
     return toLabel(status);
 }

@@ -12,6 +12,17 @@
 namespace robottestingframework {
 namespace reporters {
 
+// The console's colours (ANSI), and a test's by its state: green passed, yellow skipped, red
+// any failure.
+namespace colour {
+constexpr const char* red = "\033[31m";
+constexpr const char* green = "\033[32m";
+constexpr const char* yellow = "\033[33m";
+constexpr const char* bold = "\033[1m";
+constexpr const char* plain = "\033[0m";
+}  // namespace colour
+const char* colourOf(TestStatus status);
+
 // "passed", "skipped", then the failing states in capitals: "FAILED", "TIMED OUT", ...
 const char* statusWord(TestStatus status);
 // What a message line starts with: "failure", "error", "check FAILED", ...

@@ -9,10 +9,8 @@ namespace runner {
 
 namespace {
 
-const char* const red = "\033[31m";
-const char* const green = "\033[32m";
-const char* const yellow = "\033[33m";
-const char* const plain = "\033[0m";
+using namespace reporters::colour;
+
 const char* const clearLine = "\r\033[K";
 
 }  // namespace
@@ -39,9 +37,7 @@ public:
         std::snprintf(word, sizeof(word), "%-11s", reporters::statusWord(open.status));
         std::string text = "  ";
         if (console_.settings_.colours) {
-            text += open.status == TestStatus::Passed
-                        ? green
-                        : (open.status == TestStatus::Skipped ? yellow : red);
+            text += reporters::colourOf(open.status);
             text += word;
             text += plain;
         } else {
