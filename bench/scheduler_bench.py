@@ -72,6 +72,8 @@ def main():
     parser.add_argument("--build", default="build", help="the build tree")
     parser.add_argument("--rounds", type=int, default=3)
     parser.add_argument("--tests", type=int, default=10000, help="tests of part 2")
+    parser.add_argument("--workdir", default=None,
+                        help="where its temporary folder goes (default: the system's)")
     args = parser.parse_args()
     runner = os.path.join(args.build, "bin", "robottestingframework-testrunner")
     plugin = os.path.join(args.build, "bench", "rtf_bench_trivial_test.so")
@@ -79,7 +81,7 @@ def main():
         if not os.path.exists(path):
             sys.exit(f"{path} is missing: build the tree first")
     print(f"cores: {os.cpu_count()}, best of {args.rounds} rounds")
-    with tempfile.TemporaryDirectory(prefix="rtf-sched-bench-") as folder:
+    with tempfile.TemporaryDirectory(prefix="rtf-sched-bench-", dir=args.workdir) as folder:
         fixture = os.path.join(folder, "wait_fixture.py")
         with open(fixture, "w") as f:
             f.write(FIXTURE)
