@@ -227,7 +227,7 @@ int serve(int control, const std::string& language, bool verbose);
         std::string language;
         std::size_t threads;
         bool hosted;
-    } context{language, platform::threadCount(), false};
+    } context{language, platform::threadCountSettled(1, 200), false};
     int code = languages::hostLanguage(
         language,
         [](void* opaque) {

@@ -301,6 +301,16 @@ std::size_t threadCount() {
     return 0;
 }
 
+std::size_t threadCountSettled(std::size_t atMost, int waitMs) {
+    double end = monotonicSeconds() + waitMs / 1000.0;
+    std::size_t count = threadCount();
+    while (count > atMost && monotonicSeconds() < end) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        count = threadCount();
+    }
+    return count;
+}
+
 std::vector<int> openDescriptors() {
     std::vector<int> found;
     DIR* folder = ::opendir("/proc/self/fd");

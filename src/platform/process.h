@@ -53,6 +53,10 @@ bool setParentDeathSignal(int signal);
 // How many threads this process has (/proc/self/task); 0 when unknown. A fork keeps only the
 // calling one.
 std::size_t threadCount();
+// threadCount(), waiting up to `waitMs` for it to fall to `atMost`: a thread that was just
+// joined is still counted for a moment (the kernel wakes the joiner before it unlinks the
+// thread). Returns the last count read.
+std::size_t threadCountSettled(std::size_t atMost, int waitMs);
 // The descriptors this process has open (/proc/self/fd), in increasing order.
 std::vector<int> openDescriptors();
 

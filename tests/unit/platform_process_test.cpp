@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <condition_variable>
 #include <cstdio>
 #include <cstring>
@@ -276,5 +277,14 @@ TEST(Process, ThreadCountSeesAThreadStartAndEnd) {
     }
     changed.notify_all();
     thread.join();
-    EXPECT_EQ(robottestingframework::platform::threadCount(), before);
+    // Joined is not yet unlinked: the count falls a moment later.
+    EXPECT_EQ(robottestingframework::platform::threadCountSettled(before, 2000), before);
+}
+
+TEST(Process, ThreadCountSettledReturnsAtOnceWhenTheCountIsLowEnough) {
+    std::size_t now = robottestingframework::platform::threadCount();
+    auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(robottestingframework::platform::threadCountSettled(now, 0), now);
+    EXPECT_EQ(robottestingframework::platform::threadCountSettled(now + 1, 5000), now);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
 }
