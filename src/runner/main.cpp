@@ -466,6 +466,7 @@ int main(int argc, char** argv) {
     parallelSettings.verbose = options.verbose;
     parallelSettings.colours = colours;
     parallelSettings.summary = !options.noSummary;
+    parallelSettings.retries = options.retries;
     parallelSettings.statusLine = ::isatty(::fileno(capture.console())) == 1;
     ParallelConsole parallelConsole(capture.console(), collector, parallelSettings);
     // One line per test as it ends, from any suite (-j N); else the console of one suite at a

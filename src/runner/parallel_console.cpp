@@ -22,8 +22,10 @@ public:
 
     void startTest(const Test* test) override {
         Open& open = open_()[test];
+        const unsigned int attempts = open.attempts;  // a retry starts again
         open = Open();
         open.started = std::chrono::steady_clock::now();
+        open.attempts = attempts;
     }
     void endTest(const Test* test) override {
         auto found = open_().find(test);
@@ -33,11 +35,19 @@ public:
         const Open& open = found->second;
         const double took =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - open.started).count();
+        // As the -j1 console: an attempt that will run again did not decide the test's state
+        // (an interrupted one never runs again), and a pass after a retry is flaky.
+        const bool retried = isFailure(open.status) && open.status != TestStatus::Interrupted &&
+                             open.attempts < console_.settings_.retries;
+        const TestStatus shown = open.status == TestStatus::Passed && open.attempts > 0
+                                     ? TestStatus::Flaky
+                                     : open.status;
         char word[16];
-        std::snprintf(word, sizeof(word), "%-11s", reporters::statusWord(open.status));
+        std::snprintf(word, sizeof(word), "%-11s",
+                      retried ? "RETRY" : reporters::statusWord(shown));
         std::string text = "  ";
         if (console_.settings_.colours) {
-            text += reporters::colourOf(open.status);
+            text += retried ? yellow : reporters::colourOf(shown);
             text += word;
             text += plain;
         } else {
@@ -49,7 +59,14 @@ public:
         for (const auto& said : open.lines) {
             console_.line(said);
         }
-        open_().erase(found);
+        if (retried) {
+            // retryTest comes after endTest: keep the count of attempts for it.
+            const unsigned int attempts = found->second.attempts;
+            found->second = Open();
+            found->second.attempts = attempts;
+        } else {
+            open_().erase(found);
+        }
     }
     void addFailure(const Test* test, TestMessage msg) override {
         raise(test, TestStatus::Failed, "failure", msg);
@@ -98,8 +115,11 @@ public:
         console_.line("  retry       " + suite_.getName() +
                       " :: " + (test != nullptr ? test->getName() : "") + ": " +
                       reporters::messageText(msg));
-        open_()[test] = Open();
-        open_()[test].started = std::chrono::steady_clock::now();
+        Open& open = open_()[test];
+        const unsigned int attempts = open.attempts + 1;
+        open = Open();
+        open.started = std::chrono::steady_clock::now();
+        open.attempts = attempts;
     }
     void endTestSuite(const TestSuite* suite) override {
         if (suite == nullptr) {

@@ -20,10 +20,11 @@ namespace robottestingframework {
 namespace runner {
 
 struct ParallelConsoleSettings {
-    bool verbose = false;     // reports and output too
-    bool colours = false;     // status words in colour
-    bool summary = true;      // the summary at the end
-    bool statusLine = false;  // the stream is a terminal: show what runs now
+    bool verbose = false;      // reports and output too
+    bool colours = false;      // status words in colour
+    bool summary = true;       // the summary at the end
+    bool statusLine = false;   // the stream is a terminal: show what runs now
+    unsigned int retries = 0;  // --retries: a failed attempt with retries left is a RETRY
 };
 
 class ParallelConsole : public SchedulerView, public TestListener {
@@ -46,6 +47,7 @@ private:
         TestStatus status = TestStatus::Passed;
         std::vector<std::string> lines;  // its messages, shown under its line
         std::chrono::steady_clock::time_point started;
+        unsigned int attempts = 0;  // earlier attempts (--retries)
     };
     void line(const std::string& text);
 

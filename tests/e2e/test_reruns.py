@@ -210,10 +210,13 @@ def test_flaky_is_its_own_state_on_the_console_and_in_html(tmp_path):
     assert '"state":"flaky"' in page and '"flaky":1' in page
 
 
-def test_a_retried_attempt_is_shown_as_retry_and_only_the_last_line_decides(tmp_path, isolation):
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_retried_attempt_is_shown_as_retry_and_only_the_last_line_decides(tmp_path, isolation,
+                                                                            jobs):
+    # -j2 has a console of its own (one line per test as it ends, from any suite).
     flaky, _ = counting_script(tmp_path, "flaky", 1)
     broken, _ = counting_script(tmp_path, "broken", 99)
-    r = run_runner("--isolation", isolation, "--no-output", "--retries", "2",
+    r = run_runner("--isolation", isolation, "--no-output", "--retries", "2", "-j", jobs,
                    "--suite", suite_of(tmp_path, [("flaky", flaky), ("broken", broken)]))
     assert r.returncode == 1, r
     words = [line.split()[0] for line in r.stdout.splitlines()
