@@ -27,13 +27,13 @@ std::string shardName(const ReportedShard& shard) {
 }
 
 // Every report of the requested format; with --expect-shards, each shard once and of that count.
-// The shards' own reports come first, then the reruns, each in command-line order.
-std::vector<Report> readAll(const MergeRequest& request) {
+// The shards' own reports come first, then the reruns, each in the order given.
+std::vector<Report> checkAll(const MergeRequest& request, std::vector<Report> given) {
     std::vector<Report> base;
     std::vector<Report> reruns;
     const ReportFormat format = request.type == "junit" ? ReportFormat::JUnit : ReportFormat::Json;
-    for (const auto& path : request.reports) {
-        Report report = readReport("--merge", path);
+    for (Report& report : given) {
+        const std::string& path = report.path;
         if (report.format != format) {
             throw problem(path + ": a " +
                           std::string(report.format == ReportFormat::JUnit ? "JUnit" : "JSON") +
@@ -418,7 +418,15 @@ std::string mergeJson(const std::vector<Report>& reports) {
 }  // namespace
 
 std::string mergeReports(const MergeRequest& request) {
-    const std::vector<Report> reports = readAll(request);
+    std::vector<Report> reports;
+    for (const auto& path : request.reports) {
+        reports.push_back(readReport("--merge", path));
+    }
+    return mergeReports(request, std::move(reports));
+}
+
+std::string mergeReports(const MergeRequest& request, std::vector<Report> reports) {
+    reports = checkAll(request, std::move(reports));
     return request.type == "junit" ? mergeJUnit(reports) : mergeJson(reports);
 }
 

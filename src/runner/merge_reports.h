@@ -24,5 +24,9 @@ struct MergeRequest {
 // given twice, or of another count.
 std::string mergeReports(const MergeRequest& request);
 
+// The same over reports already read (request.reports is not read; the reports' own paths name
+// them in messages).
+std::string mergeReports(const MergeRequest& request, std::vector<Report> reports);
+
 }  // namespace runner
 }  // namespace robottestingframework
