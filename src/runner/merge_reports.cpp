@@ -404,7 +404,8 @@ std::string mergeJson(const std::vector<Report>& reports) {
 
     Json merged = Json::object();
     merged["reportFormat"] = "CTRF";
-    merged["specVersion"] = reports.empty() ? Json("0.0.0") : reports[0].json["specVersion"];
+    merged["specVersion"] =
+        reports.empty() ? std::string("0.0.0") : reports[0].json.value("specVersion", "0.0.0");
     merged["timestamp"] =
         timestamp.empty() && !reports.empty() ? reports[0].json.value("timestamp", "") : timestamp;
     merged["generatedBy"] = "robottestingframework-testrunner";

@@ -25,6 +25,13 @@ bool knownState(const std::string& state) {
                        [&](const char* known) { return state == known; });
 }
 
+// CTRF's test statuses.
+bool ctrfStatus(const std::string& status) {
+    static const char* const statuses[] = {"passed", "failed", "skipped", "pending", "other"};
+    return std::any_of(std::begin(statuses), std::end(statuses),
+                       [&](const char* known) { return status == known; });
+}
+
 // Reads what a problem needs to name where it is.
 class Place {
 public:
@@ -175,6 +182,55 @@ void readJson(Report& report, const std::string& text, const Place& place) {
     }
 }
 
+// What --merge reads of the run as a whole, when the report has it: the timestamp and the
+// summary's times and counts, and the failed fixtures.
+void readJsonRun(const nlohmann::ordered_json& document, const Place& place) {
+    for (const char* key : {"specVersion", "timestamp"}) {
+        if (document.contains(key) && !document[key].is_string()) {
+            throw place.error(-1, std::string(key) + ": expected a string");
+        }
+    }
+    const auto& results = document["results"];
+    if (results.contains("summary")) {
+        const auto& summary = results["summary"];
+        if (!summary.is_object()) {
+            throw place.error(-1, "results.summary: expected an object");
+        }
+        for (const char* key : {"start", "stop"}) {
+            if (summary.contains(key) && !summary[key].is_number_integer()) {
+                throw place.error(-1, std::string("results.summary.") + key +
+                                          ": expected milliseconds since the Unix epoch");
+            }
+        }
+        if (summary.contains("suites") && !summary["suites"].is_number_unsigned()) {
+            throw place.error(-1, "results.summary.suites: expected a whole number");
+        }
+        const auto failed = summary.value("/extra/rtf"_json_pointer, nlohmann::ordered_json());
+        if (failed.is_object() && failed.contains("suitesFailed") &&
+            !failed["suitesFailed"].is_number_unsigned()) {
+            throw place.error(-1,
+                              "results.summary.extra.rtf.suitesFailed: expected a whole number");
+        }
+    }
+    const auto extra = results.value("/extra/rtf"_json_pointer, nlohmann::ordered_json::object());
+    if (!extra.is_object()) {
+        throw place.error(-1, "results.extra.rtf: expected an object");
+    }
+    if (extra.contains("fixtureFailures")) {
+        const auto& fixtures = extra["fixtureFailures"];
+        for (std::size_t i = 0; i < (fixtures.is_array() ? fixtures.size() : 0); ++i) {
+            if (!fixtures[i].is_object() ||
+                (fixtures[i].contains("suite") && !fixtures[i]["suite"].is_string())) {
+                throw place.error(-1, "results.extra.rtf.fixtureFailures[" + std::to_string(i) +
+                                          "]: expected an object naming its suite");
+            }
+        }
+        if (!fixtures.is_array()) {
+            throw place.error(-1, "results.extra.rtf.fixtureFailures: expected an array");
+        }
+    }
+}
+
 void readJsonShape(Report& report, const Place& place) {
     const auto& document = report.json;
     if (!document.is_object() || !document.contains("reportFormat") ||
@@ -187,6 +243,7 @@ void readJsonShape(Report& report, const Place& place) {
                                   runnerName + "\" and results.tests)");
     }
     const auto& results = document["results"];
+    readJsonRun(document, place);
     const auto extra = results.value("/extra/rtf"_json_pointer, nlohmann::ordered_json::object());
     if (extra.contains("shard")) {
         const auto& shard = extra["shard"];
@@ -211,14 +268,16 @@ void readJsonShape(Report& report, const Place& place) {
         const std::string where = "results.tests[" + std::to_string(i) + "]";
         if (!test.is_object() || !test.contains("name") || !test["name"].is_string() ||
             !test.contains("duration") || !test["duration"].is_number() ||
-            !test.contains("testId") || !test["testId"].is_string() ||
-            !isTestId(test["testId"].get<std::string>()) ||
+            !test.contains("status") || !test["status"].is_string() ||
+            !ctrfStatus(test["status"].get<std::string>()) || !test.contains("testId") ||
+            !test["testId"].is_string() || !isTestId(test["testId"].get<std::string>()) ||
             !test.contains("/extra/rtf/state"_json_pointer) ||
             !test["extra"]["rtf"]["state"].is_string() ||
             !knownState(test["extra"]["rtf"]["state"].get<std::string>())) {
             throw place.error(-1, where +
-                                      ": expected a test with a name, a testId \"S.T\" (its "
-                                      "place in the run), a duration and extra.rtf.state");
+                                      ": expected a test with a name, a CTRF status, a testId "
+                                      "\"S.T\" (its place in the run), a duration and "
+                                      "extra.rtf.state");
         }
         std::string suite;
         if (test.contains("suite")) {

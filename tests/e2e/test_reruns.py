@@ -143,7 +143,7 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
      '"results": {"tests": [{"name": "a", "extra": {"rtf": {"state": 3}}}]}}',
      "results.tests[0]: expected a test"),
     ('{"reportFormat": "CTRF", "generatedBy": "robottestingframework-testrunner", '
-     '"results": {"tests": [{"name": "a", "testId": "1.1", "duration": 1, '
+     '"results": {"tests": [{"name": "a", "testId": "1.1", "duration": 1, "status": "failed", '
      '"extra": {"rtf": {"state": "failed"}}}, 7]}}',
      "results.tests[1]: expected a test"),
     ('{"reportFormat": {}, "generatedBy": "robottestingframework-testrunner", '

@@ -232,6 +232,28 @@ def test_merge_bad_input_exits_2(tmp_path):
     assert not out.exists()
 
 
+@pytest.mark.parametrize("edit,why", [
+    (lambda report: report.pop("specVersion") and report["results"]["tests"][0].pop("status"),
+     "results.tests[0]: expected a test with a name, a CTRF status"),
+    (lambda report: report["results"]["summary"].update(start="soon"),
+     "results.summary.start: expected milliseconds since the Unix epoch"),
+    (lambda report: report["results"]["extra"]["rtf"].update(fixtureFailures=[1, 2]),
+     "results.extra.rtf.fixtureFailures[0]: expected an object naming its suite"),
+])
+def test_merge_of_a_json_report_edited_out_of_shape_exits_2_naming_it(tmp_path, edit, why):
+    # Found by fuzzing the merge: these reached the merge and read past a JSON object's end.
+    suites = make_suites(tmp_path / "suites", count=2)
+    _, jsons = shard_reports(tmp_path, suites, 2)
+    report = json.loads(jsons[1].read_text())
+    edit(report)
+    jsons[1].write_text(json.dumps(report))
+    out = tmp_path / "merged.json"
+    r = run("--merge", f"json:{out}", "--expect-shards", 2, *jsons)
+    assert r.returncode == 2, r
+    assert f"--merge {jsons[1]}: {why}" in r.stderr, r
+    assert not out.exists()
+
+
 PYTHON_CLEAN_ENV = """import os
 import robottestingframework
 NAMES = %r

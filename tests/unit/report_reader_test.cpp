@@ -75,7 +75,7 @@ TEST_F(ReportReader, ReadsAJsonReportWithItsSuitesTimes) {
         readReport("--durations",
                    write(R"({"reportFormat":"CTRF","generatedBy":"robottestingframework-testrunner",
 "results":{"tests":[
-{"testId":"1.1","name":"reach","duration":300,"suite":["arm"],"extra":{"rtf":{"state":"passed"}}}],
+{"testId":"1.1","name":"reach","duration":300,"suite":["arm"],"extra":{"rtf":{"state":"passed"}},"status":"passed"}],
 "extra":{"rtf":{"suites":[{"place":1,"name":"arm","duration":2500}],
 "shard":{"index":0,"count":2},"rerun":true}}}})"));
     EXPECT_EQ(report.format, ReportFormat::Json);
@@ -90,8 +90,8 @@ TEST_F(ReportReader, AJsonReportWithoutSuiteTimesAddsItsTests) {
         readReport("--durations",
                    write(R"({"reportFormat":"CTRF","generatedBy":"robottestingframework-testrunner",
 "results":{"tests":[
-{"testId":"1.1","name":"a","duration":300,"suite":["arm"],"extra":{"rtf":{"state":"passed"}}},
-{"testId":"1.2","name":"b","duration":200,"suite":["arm"],"extra":{"rtf":{"state":"failed"}}}]}})"));
+{"testId":"1.1","name":"a","duration":300,"suite":["arm"],"extra":{"rtf":{"state":"passed"}},"status":"passed"},
+{"testId":"1.2","name":"b","duration":200,"suite":["arm"],"extra":{"rtf":{"state":"failed"}},"status":"failed"}]}})"));
     ASSERT_EQ(report.suites.size(), 1u);
     EXPECT_DOUBLE_EQ(report.suites[0].seconds, 0.5);
     EXPECT_FALSE(report.shard.known);
@@ -126,6 +126,6 @@ TEST_F(ReportReader, RefusesWhatThisRunnerDoesNotWrite) {
     EXPECT_NE(errorOf(halfShard).find(":3: expected both properties"), std::string::npos);
     EXPECT_NE(errorOf("{\"reportFormat\":\"CTRF\",\"generatedBy\":\"robottestingframework-"
                       "testrunner\",\"results\":{\"tests\":[{\"name\":\"a\"}]}}")
-                  .find("results.tests[0]: expected a test with a name, a testId"),
+                  .find("results.tests[0]: expected a test with a name, a CTRF status, a testId"),
               std::string::npos);
 }
