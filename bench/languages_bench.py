@@ -11,7 +11,9 @@ the COUNT tests beside pytest's on COUNT equivalent files (`def test_x(): assert
 with --cpp-plugin the runner's peak memory (VmHWM) for --memory-count isolated Python tests
 against as many isolated C++ tests."""
 import argparse
+import contextlib
 import os
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -126,9 +128,20 @@ def main():
     parser.add_argument("--cpp-plugin", help="a trivial C++ test plug-in, for the memory row "
                         "(build/bench/rtf_bench_trivial_test.so)")
     parser.add_argument("--memory-count", type=int, default=1000)
+    parser.add_argument("--workdir", help="where the suites are written (default: a temporary "
+                        "folder); emptied first")
+    parser.add_argument("--check", action="store_true",
+                        help="exit 1 when a run failed (a row says n/a); never on a figure")
     args = parser.parse_args()
 
-    with tempfile.TemporaryDirectory(prefix="rtf-languages-bench-") as folder:
+    if args.workdir:
+        shutil.rmtree(args.workdir, ignore_errors=True)
+        os.makedirs(args.workdir)
+        context = contextlib.nullcontext(args.workdir)
+    else:
+        context = tempfile.TemporaryDirectory(prefix="rtf-languages-bench-")
+    failed = False
+    with context as folder:
         reference = None if args.no_pytest else pytest_time(folder, args.count, args.rounds)
         if reference is not None:
             print(f"pytest on {args.count} files: {reference:.3f} s "
@@ -152,6 +165,7 @@ def main():
                     tn = many_time if tn is None else min(tn, many_time)
                 best = None if t1 is None or tn is None else (tn - t1) / (args.count - 1)
                 if best is None:
+                    failed = True
                     print(f"{language:<8} {isolation:<13} {'n/a':>10}   {' '.join(why)}")
                 else:
                     ratio = f"{tn / reference:>8.2f}x" if reference else f"{'':>9}"
@@ -165,12 +179,13 @@ def main():
                 found = [peak_memory(args.runner, suite) for _ in range(args.rounds)]
                 peaks[name] = None if None in found else min(found)
             if None in peaks.values():
+                failed = True
                 print("runner peak memory: n/a (a run failed)")
             else:
                 print(f"runner peak memory, {args.memory_count} isolated tests: python "
                       f"{peaks['python'] / 1024:.1f} MiB, c++ {peaks['c++'] / 1024:.1f} MiB "
                       f"({peaks['python'] / peaks['c++']:.2f}x)")
-    return 0
+    return 1 if args.check and failed else 0
 
 
 if __name__ == "__main__":
