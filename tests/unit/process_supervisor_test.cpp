@@ -201,16 +201,17 @@ TEST(ProcessSupervisor, StartsAProcessOnlyOnceItsDependenciesAreReady) {
 
 TEST(ProcessSupervisor, IndependentProcessesStartTogether) {
     World world = worldOf(
-        "<process name='a' command=\"/bin/sh -c 'sleep 0.4; echo up; exec sleep 30'\">"
+        "<process name='a' command=\"/bin/sh -c 'sleep 1; echo up; exec sleep 30'\">"
         "<ready><output>up</output></ready></process>\n"
-        "<process name='b' command=\"/bin/sh -c 'sleep 0.4; echo up; exec sleep 30'\">"
+        "<process name='b' command=\"/bin/sh -c 'sleep 1; echo up; exec sleep 30'\">"
         "<ready><output>up</output></ready></process>");
     ProcessSupervisor supervisor(world);
     Reports reports;
     std::string failure;
     const auto began = std::chrono::steady_clock::now();
     ASSERT_TRUE(supervisor.start(reports.reporter(), failure)) << failure;
-    EXPECT_LT(std::chrono::steady_clock::now() - began, std::chrono::milliseconds(750));
+    // One after the other would take 2 s; together, 1 s and what a busy machine adds.
+    EXPECT_LT(std::chrono::steady_clock::now() - began, std::chrono::milliseconds(1800));
 }
 
 TEST(ProcessSupervisor, ReportsACollapseWithStatusAndLastLines) {
@@ -400,8 +401,9 @@ TEST(ProcessSupervisor, SeesAPortWithinMillisecondsOfItOpening) {
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     ASSERT_GT(opened, 0);
-    // The target is 20 ms (see the benchmark); a loaded test machine gets some slack.
-    EXPECT_LT(ready - opened, 0.05) << "ready " << (ready - opened) * 1000 << " ms after listen";
+    // The target is 20 ms, measured by rtf-bench-readiness; this checks only that the port is
+    // watched, not polled once a second (a loaded test machine gets slack).
+    EXPECT_LT(ready - opened, 0.25) << "ready " << (ready - opened) * 1000 << " ms after listen";
 }
 
 TEST(ProcessSupervisor, ProcessesDieWithTheProcessThatSupervisesThem) {
