@@ -212,6 +212,19 @@ def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, 
     validate_junit(junit)
 
 
+def test_a_line_of_10_mb_costs_the_fixture_nothing_and_the_next_line_is_seen(tmp_path, mark):
+    # The <output> check's std::regex recursed over the whole 10 MB line: the fixture died of
+    # SIGSEGV. Each line is now matched on its first 4 KiB (docs/process-fixture.md).
+    w = world(tmp_path, f"""
+  <process name="chatty" command="{actor('--spew', 10, '--say', 'ready')}">
+    <ready timeout="30s"><output>^x*y?ready$</output></ready>
+  </process>""")
+    r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), cwd=tmp_path)
+    assert r.returncode == 0, r
+    assert "1 passed" in r.output, r
+    assert (tmp_path / "logs" / "chatty.log").stat().st_size > 10 * 1024 * 1024
+
+
 def test_a_failing_fixture_plugin_after_the_world_takes_the_world_down(tmp_path, mark):
     w = world(tmp_path, f"""
   <process name="broker" command="{actor('--say', 'ready')}">

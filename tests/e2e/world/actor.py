@@ -5,6 +5,7 @@ options ask, then serves until it is stopped:
   --listen PORT    listen on 127.0.0.1:PORT (accepts and closes connections)
   --touch FILE     create FILE
   --say TEXT       print TEXT on a line of its own (repeatable; flushed)
+  --spew MB        before that, print a line of MB megabytes of "x" (no newline until its end)
   --orphan         leave a grandchild behind in a new session (a daemon that double-forks)
   --die-after S    exit after S more seconds with --status N (default 3), saying why first
 """
@@ -32,6 +33,7 @@ def main():
     parser.add_argument("--listen", type=int)
     parser.add_argument("--touch")
     parser.add_argument("--say", action="append", default=[])
+    parser.add_argument("--spew", type=int, default=0)
     parser.add_argument("--orphan", action="store_true")
     parser.add_argument("--die-after", type=float)
     parser.add_argument("--status", type=int, default=3)
@@ -49,6 +51,10 @@ def main():
         threading.Thread(target=serve, args=(server,), daemon=True).start()
     if args.touch:
         open(args.touch, "w").close()
+    if args.spew:
+        for _ in range(args.spew * 16):
+            sys.stdout.write("x" * 65536)
+        sys.stdout.write("\n")
     for text in args.say:
         print(text, flush=True)
     if args.orphan and os.fork() == 0:
