@@ -33,8 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         const std::string path = "shard" + std::to_string(reports.size());
         try {
             reports.push_back(runner::parseReport(
-                "--merge", text.substr(begin, end == std::string::npos ? end : end - begin),
-                path));
+                "--merge", text.substr(begin, end == std::string::npos ? end : end - begin), path));
         } catch (const std::runtime_error& e) {
             if (std::string(e.what()).find(path) == std::string::npos) {
                 __builtin_trap();  // every error names the report
