@@ -1,5 +1,6 @@
 #include <robottestingframework/Test.h>
 
+#include <string>
 #include <utility>
 
 #include <robottestingframework/TestResult.h>
@@ -27,7 +28,30 @@ std::uint64_t Test::getId() const {
     return id;
 }
 
+namespace {
+
+// A name longer than this is cut, saying so (README: Output limits): a test that renames itself
+// to megabytes, and again, fills neither the runner's memory nor every report. The cut falls
+// on a character's first byte.
+constexpr std::size_t maxName = 4096;
+
+std::string bounded(std::string name) {
+    if (name.size() <= maxName) {
+        return name;
+    }
+    std::size_t keep = maxName;
+    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) {
+        --keep;
+    }
+    const std::size_t dropped = name.size() - keep;
+    name.resize(keep);
+    return name + " [... " + std::to_string(dropped) + " more bytes of this name dropped]";
+}
+
+}  // namespace
+
 void Test::setName(std::string name) {
+    name = bounded(std::move(name));
     if (renames_ == nullptr || name == name_) {
         name_ = std::move(name);
         return;

@@ -195,6 +195,40 @@ def test_a_20_mb_message_is_cut_and_what_follows_it_is_kept(tmp_path, isolation)
     assert len(out) < 1 * MB, len(out)
 
 
+RENAMING = """class TestCase:
+    def setup(self, param):
+        return True
+    def run(self):
+        for i in range(100):
+            robottestingframework.setName(("n%d " % i) * 1000000)
+        robottestingframework.testCheck(True, "renamed")
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_test_renaming_itself_to_megabytes_keeps_4_kib_of_its_name(tmp_path, isolation):
+    # Each name went whole into every report: 100 renames of 4 MB made 4 MB files.
+    test = tmp_path / "renaming.py"
+    test.write_text(RENAMING)
+    files = {kind: tmp_path / f"r.{kind}" for kind in ("xml", "json", "tap", "html", "txt")}
+    status, out, err, peak = run_measured(
+        ["--isolation", isolation, "-t", test, "--output", f"junit:{files['xml']}",
+         "--output", f"json:{files['json']}", "--output", f"tap:{files['tap']}",
+         "--output", f"html:{files['html']}", "--output", f"text:{files['txt']}"],
+        cwd=tmp_path, env={})
+    assert status == 0, (out[-2000:], err[-2000:])
+    validate_junit(files["xml"])
+    validate_ctrf(files["json"])
+    validate_tap(files["tap"])
+    name = next(ET.parse(files["xml"]).getroot().iter("testcase")).get("name")
+    assert name.startswith("n99 n99 ") and name.endswith(
+        " [... 3995904 more bytes of this name dropped]"), name[-200:]
+    assert len(name.encode()) < 4200, len(name)
+    for path in files.values():
+        assert path.stat().st_size < 200 * 1000, (path, path.stat().st_size)
+    assert len(out) < 200 * 1000, len(out)
+
+
 def test_the_reports_keep_8_mib_of_output_in_all(tmp_path):
     # Before, each of many talkative tests kept its 64 KiB: the soak bench's 400 tests printing
     # 1 MB held 25 MiB, and the runner peaked at 94 MiB writing its reports.

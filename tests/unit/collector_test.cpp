@@ -362,6 +362,28 @@ TEST(TestResultCollector, ARenameIsAnEventNotTheNameReadLater) {
     EXPECT_EQ(c.suites().at(0).tests.at(1).name, "reported");
 }
 
+TEST(TestResultCollector, AHugeNameIsCutToItsFirst4KiBOnACharacter) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    LambdaTest test("before");
+    // 4095 ASCII bytes, then two-byte characters: byte 4096 is the second of one.
+    const std::string huge = std::string(4095, 'n') + [] {
+        std::string accents;
+        for (int i = 0; i < 500000; ++i) {
+            accents += "\xc3\xa9";
+        }
+        return accents;
+    }();
+    test.body = [&] { test.setName(huge); };
+    test.run(result);
+    const std::string& name = c.suites().at(0).tests.at(0).name;
+    EXPECT_EQ(name, std::string(4095, 'n') + " [... 1000000 more bytes of this name dropped]");
+    EXPECT_EQ(test.getName(), name);
+    test.setName(std::string(4096, 'k'));  // up to 4 KiB: whole
+    EXPECT_EQ(test.getName(), std::string(4096, 'k'));
+}
+
 TEST(TestResultCollector, SeveralRunsAtOnceInOneProcessStayApart) {
     auto run = [](const std::string& name, std::vector<std::string>& names, std::size_t& failed) {
         TestResultCollector collector;
