@@ -46,9 +46,13 @@ ResourcePools readResourceFile(const std::string& path) {
     }
     std::ostringstream text;
     text << in.rdbuf();
+    return parseResourceFile(text.str(), path);
+}
+
+ResourcePools parseResourceFile(const std::string& text, const std::string& path) {
     json document;
     try {
-        document = json::parse(text.str());
+        document = json::parse(text);
     } catch (const json::exception& e) {
         // parse_error, or out_of_range for a number too large for a double.
         fail(path, std::string("not valid JSON: ") + e.what());

@@ -26,6 +26,8 @@ struct ResourcePools {
 
 // Reads --resources FILE; throws std::runtime_error "FILE: what is wrong" when it cannot.
 ResourcePools readResourceFile(const std::string& path);
+// The same from the file's text; `path` names it in messages.
+ResourcePools parseResourceFile(const std::string& text, const std::string& path);
 
 // Empty when every <resource pool="..."> of `suites` names a pool of `pools` that has enough
 // items; else "suite.xml:4: ..." saying which pool and what is wrong.
