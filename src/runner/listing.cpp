@@ -41,6 +41,21 @@ std::string idOf(const SuiteSpec& suite, const TestSpec& test) {
     return suite.name + "/" + PluginTest::displayName(test);
 }
 
+// "lock robot:arm, 2 of pool ros_domain, the machine alone (exclusive)".
+std::string resourcesOf(const SuiteSpec& suite) {
+    std::string text;
+    for (const auto& resource : suite.resources) {
+        text += text.empty() ? "" : ", ";
+        text += resource.pool.empty()
+                    ? "lock " + resource.lock
+                    : std::to_string(resource.count) + " of pool " + resource.pool;
+    }
+    if (suite.exclusive) {
+        text += std::string(text.empty() ? "" : ", ") + "the machine alone (exclusive)";
+    }
+    return text;
+}
+
 std::string seconds(double value) {
     std::ostringstream text;
     text << value << "s";
@@ -61,6 +76,9 @@ std::string listText(const std::vector<SuiteSpec>& suites, const std::vector<uns
                                          std::to_string(shardCount) + "]"
                                    : std::string()) +
                 "\n";
+        if (!suite.resources.empty() || suite.exclusive) {
+            text += "  takes " + resourcesOf(suite) + "\n";
+        }
         for (const auto& test : suite.tests) {
             ++count;
             text += "  " + idOf(suite, test) + "\n";
@@ -114,8 +132,16 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
                              {"depends", test.depends},
                              {"where", test.where.toString()}});
         }
+        nlohmann::json resources = nlohmann::json::array();
+        for (const auto& resource : suite.resources) {
+            resources.push_back(resource.pool.empty() ? nlohmann::json{{"lock", resource.lock}}
+                                                      : nlohmann::json{{"pool", resource.pool},
+                                                                       {"count", resource.count}});
+        }
         list["suites"].push_back({{"name", suite.name},
                                   {"file", suite.where.file},
+                                  {"resources", resources},
+                                  {"exclusive", suite.exclusive},
                                   {"fixtures", fixtures},
                                   {"tests", tests}});
         if (s < shards.size()) {

@@ -75,6 +75,31 @@ def test_list_writes_json(tmp_path, marker):
     assert not (tmp_path / "world.touched").exists()
 
 
+def test_list_shows_the_locks_pools_and_exclusive_a_suite_takes(tmp_path):
+    (tmp_path / "pools.json").write_text(
+        '{"version": {"major": 1, "minor": 0}, "local": [{"ros_domain": [{"id": "7"}]}]}')
+    (tmp_path / "arm.xml").write_text(f"""<suite name="arm" exclusive="true">
+  <resource lock="robot:left-arm"/>
+  <resource pool="ros_domain" count="1"/>
+  <test name="reach" type="dll">{plugin("passing_test")}</test>
+</suite>
+""")
+    (tmp_path / "plain.xml").write_text(
+        f'<suite name="plain"><test type="dll">{plugin("passing_test")}</test></suite>')
+    out = tmp_path / "list.json"
+    run = run_runner("--suite", tmp_path / "arm.xml", "--suite", tmp_path / "plain.xml",
+                     "--resources", tmp_path / "pools.json", "--list", "--output",
+                     f"json:{out}", cwd=tmp_path)
+    assert run.returncode == 0, run
+    assert ("  takes lock robot:left-arm, 1 of pool ros_domain, the machine alone (exclusive)\n"
+            "  arm/reach\n") in run.stdout, run
+    assert run.stdout.count("  takes ") == 1, run  # nothing said of a suite that takes nothing
+    arm, plain = json.loads(out.read_text())["suites"]
+    assert arm["resources"] == [{"lock": "robot:left-arm"}, {"pool": "ros_domain", "count": 1}]
+    assert arm["exclusive"] is True
+    assert plain["resources"] == [] and plain["exclusive"] is False
+
+
 def test_list_of_a_bad_suite_is_a_configuration_error(tmp_path):
     suite = tmp_path / "suite.xml"
     suite.write_text("<suite><test param='${nope}'>a.so</test></suite>\n")
