@@ -140,6 +140,10 @@ coverage_job() {
     build "$out"
     # Counters add up across runs: start from none.
     find "$out" -name '*.gcda' -delete
+    # libgcov's own complaints (a .gcda another process left half written) go to a file, not
+    # into the output of the test whose process wrote them, where reports would show them.
+    export GCOV_ERROR_FILE=$root/$out/gcov-errors.log
+    rm -f "$GCOV_ERROR_FILE"
     local status=0
     run_ctest coverage "$out" || status=1
     mkdir -p "$out/coverage"
@@ -150,6 +154,10 @@ coverage_job() {
     # The workers' code runs only in children that end with _exit.
     scripts/coverage-folders.py "$out/coverage-summary.json" --ran src/isolation/test_worker.cpp \
         src/isolation/fixture_worker.cpp | tee "$out/coverage-folders.md" || status=1
+    if [[ -s "$GCOV_ERROR_FILE" ]]; then
+        echo "coverage: libgcov reported problems (the files it names may count low):"
+        sort -u "$GCOV_ERROR_FILE" | head -n 20
+    fi
     echo "Coverage report: $out/coverage/index.html, $out/coverage.txt"
     finish && [[ $status -eq 0 ]]
 }
