@@ -4,12 +4,23 @@
 #include <signal.h>
 
 #include "clock.h"
+#include "coverage.h"
 #include "process_tree.h"
 
 namespace robottestingframework {
 namespace isolation {
 
 WorkerProcess::~WorkerProcess() {
+    if (pid_ > 0 && !exited_ && platform::coverageBuild()) {
+        // A worker that finished writes its coverage counters before it exits: let it (10 s at
+        // most) instead of killing it halfway.
+        platform::Deadline deadline(10.0);
+        std::vector<WireRecord> ignored;
+        while (!exited_ && !deadline.expired()) {
+            collect(deadline.remainingMs(), ignored, -1, nullptr);
+            ignored.clear();
+        }
+    }
     if (pid_ > 0 && !exited_) {
         // Whatever is left of the worker's group goes now (it may be a worker that finished and
         // is exiting, or the children it left). The fork server reaps; nobody waits here.

@@ -14,5 +14,13 @@ void flushCoverage() {
 #endif
 }
 
+bool coverageBuild() {
+#ifdef RTF_COVERAGE
+    return true;
+#else
+    return false;
+#endif
+}
+
 }  // namespace platform
 }  // namespace robottestingframework

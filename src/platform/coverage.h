@@ -9,5 +9,10 @@ namespace platform {
 // unless the build has RTF_COVERAGE on.
 void flushCoverage();
 
+// True in a build with RTF_COVERAGE on: a process that writes its counters on the way out must
+// not be killed then (a half-written .gcda loses that file's counts for every later process),
+// so who would kill a finishing process waits for it first.
+bool coverageBuild();
+
 }  // namespace platform
 }  // namespace robottestingframework
