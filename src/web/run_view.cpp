@@ -1,5 +1,7 @@
 #include "run_view.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <robottestingframework/ResultEvent.h>
@@ -15,17 +17,35 @@ using Json = nlohmann::json;
 
 // What a test printed and its reports are capped: the page is for reading, not for archiving
 // (the result files keep everything), and each change re-sends the test's messages.
+// Each change re-sends the test's messages, so without a cap a test that failed a check 4 000
+// times made the runner hold 3 GB and take 3 minutes. The first messages of each kind are kept
+// (the first failure decides); the rest are only counted. Messages keep their first 4 KiB.
 const std::size_t maxOutput = 64 * 1024;
 const std::size_t maxMessages = 200;
+const std::size_t maxMessageText = 4 * 1024;
+// The log of /update (RTF 2.x): its last 1 MiB, cut when it reaches 2 MiB.
+const std::size_t maxLog = 1024 * 1024;
 
-// Failures, errors, ... are always kept; reports beyond the cap are only counted.
-bool keep(const RunView::Message& message, std::vector<RunView::Message>& messages,
-          std::size_t& hidden) {
-    if (message.kind == "report" && messages.size() >= maxMessages) {
+bool keep(RunView::Message message, std::vector<RunView::Message>& messages, std::size_t& hidden) {
+    // Reports and the rest (failures, errors, ...) each have their own cap: a failure after
+    // thousands of reports is still shown.
+    const bool report = message.kind == "report";
+    const auto alike = std::count_if(messages.begin(), messages.end(), [&](const auto& kept) {
+        return (kept.kind == "report") == report;
+    });
+    if (static_cast<std::size_t>(alike) >= maxMessages) {
         ++hidden;
         return false;
     }
-    messages.push_back(message);
+    if (message.text.size() > maxMessageText) {
+        std::size_t cut = maxMessageText;
+        while (cut > 0 && (static_cast<unsigned char>(message.text[cut]) & 0xC0) == 0x80) {
+            --cut;
+        }
+        message.text = message.text.substr(0, cut) + " [... cut on this page; the result " +
+                       "files have all of it]";
+    }
+    messages.push_back(std::move(message));
     return true;
 }
 
@@ -358,7 +378,7 @@ void withRepetition(Json& test, const std::string& repetition) {
 }  // namespace
 
 void RunView::publishRun() {
-    publish("{\"type\":\"run\",\"run\":" + runJson() + "}");
+    publish("run", "{\"type\":\"run\",\"run\":" + runJson() + "}");
 }
 
 void RunView::publishSuite(std::size_t index) {
@@ -382,7 +402,7 @@ void RunView::publishSuite(std::size_t index) {
                                           {"output", test.output}});
         withRepetition(json["suite"]["tests"].back(), test.repetition);
     }
-    publish(dump(json));
+    publish("s" + std::to_string(index), dump(json));
 }
 
 void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
@@ -399,17 +419,25 @@ void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
                    {"hiddenReports", test.hiddenReports},
                    {"output", test.output}}}};
     withRepetition(json["test"], test.repetition);
-    publish(dump(json));
+    publish("t" + std::to_string(suiteIndex) + "." + std::to_string(index), dump(json));
 }
 
-void RunView::publish(std::string json) {
-    changes_.push_back(std::move(json));
+void RunView::publish(const std::string& key, std::string json) {
+    std::uint64_t& latest = latest_[key];
+    changes_.erase(latest);  // 0 (none) is no change
+    latest = ++lastChange_;
+    changes_.emplace(latest, std::move(json));
     changed_.notify_all();
 }
 
 void RunView::log(const std::string& line) {
-    log_ += line;
+    log_ += line.size() > maxMessageText ? line.substr(0, maxMessageText) + " [...]" : line;
     log_ += '\n';
+    if (log_.size() > 2 * maxLog) {
+        const std::size_t from = log_.find('\n', log_.size() - maxLog);
+        log_ = "[... earlier lines dropped]\n" +
+               log_.substr(from == std::string::npos ? log_.size() - maxLog : from + 1);
+    }
 }
 
 std::string RunView::snapshotJson() const {
@@ -435,7 +463,7 @@ std::string RunView::snapshotJson() const {
                           {"tests", std::move(tests)}});
     }
     Json snapshot = {
-        {"seq", changes_.size()}, {"run", Json::parse(runJson())}, {"suites", std::move(suites)}};
+        {"seq", lastChange_}, {"run", Json::parse(runJson())}, {"suites", std::move(suites)}};
     return dump(snapshot);
 }
 
@@ -460,17 +488,18 @@ std::string RunView::logText() const {
 std::uint64_t RunView::waitForChanges(std::uint64_t since, std::chrono::milliseconds timeout,
                                       std::string& out, bool& closed) const {
     std::unique_lock<std::mutex> lock(mutex_);
-    if (since > changes_.size()) {
+    if (since > lastChange_) {
         since = 0;  // a number from another run (the page outlived its runner): all again
     }
-    changed_.wait_for(lock, timeout, [&] { return closed_ || changes_.size() > since; });
+    changed_.wait_for(lock, timeout, [&] { return closed_ || lastChange_ > since; });
     closed = closed_;
-    std::uint64_t last = since;
-    for (; last < changes_.size(); ++last) {
-        out += "id: " + std::to_string(last + 1) + "\ndata: {\"seq\":" + std::to_string(last + 1) +
-               "," + changes_[last].substr(1) + "\n\n";
+    // A change replaced by a later one of the same thing is not sent: the later one says all.
+    for (auto it = changes_.upper_bound(since); it != changes_.end(); ++it) {
+        out += "id: " + std::to_string(it->first) +
+               "\ndata: {\"seq\":" + std::to_string(it->first) + "," + it->second.substr(1) +
+               "\n\n";
     }
-    return last;
+    return lastChange_;
 }
 
 }  // namespace web

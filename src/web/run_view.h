@@ -9,6 +9,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <map>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -74,7 +75,7 @@ private:
         std::chrono::steady_clock::time_point started;
         double duration = 0;
         std::vector<Message> messages;
-        std::size_t hiddenReports = 0;  // reports beyond the cap, counted only
+        std::size_t hiddenReports = 0;  // messages beyond the caps, counted only
         std::string output;
         std::size_t retries = 0;  // earlier failed attempts
         std::string repetition;   // the id of the repetition it is in; empty when it runs once
@@ -98,7 +99,9 @@ private:
     void publishRun();
     void publishSuite(std::size_t suite);
     void publishTest(std::size_t suite, std::size_t test);
-    void publish(std::string json);
+    // `key` names what the change is about ("run", "s3", "t3.7"): it carries the whole state
+    // of that, so the change it replaces is not kept (the changes kept stay one per thing).
+    void publish(const std::string& key, std::string json);
     void log(const std::string& line);
     std::string runJson() const;
 
@@ -124,8 +127,10 @@ private:
         std::size_t suite = none;
         std::size_t test = none;
     };
-    Ended ended_;                       // the test that ended last, which a retry reopens
-    std::vector<std::string> changes_;  // change N is changes_[N - 1], as JSON
+    Ended ended_;  // the test that ended last, which a retry reopens
+    std::map<std::uint64_t, std::string> changes_;  // by number (from 1), as JSON
+    std::map<std::string, std::uint64_t> latest_;   // key -> the number of its latest change
+    std::uint64_t lastChange_ = 0;
     std::string log_;
 };
 

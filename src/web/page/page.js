@@ -33,7 +33,7 @@ function messagesList(messages, hidden) {
     list.appendChild(item);
   }
   if (hidden > 0) {
-    list.appendChild(element("li", "hidden", "… " + hidden + " more reports (the result files have them)"));
+    list.appendChild(element("li", "hidden", "… " + hidden + " more messages (the result files have them)"));
   }
   return list;
 }
