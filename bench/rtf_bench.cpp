@@ -30,6 +30,8 @@
 #include <thread>
 #include <vector>
 
+#include "text_safety.h"
+
 extern char** environ;
 
 namespace {
@@ -59,27 +61,10 @@ public:
     bool runnerHas(const std::string& option);
 };
 
+// Suite files hold names and paths as markup: the reporters' escaper (src/reporters).
 std::string xmlEscape(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        switch (c) {
-            case '&':
-                out += "&amp;";
-                break;
-            case '<':
-                out += "&lt;";
-                break;
-            case '>':
-                out += "&gt;";
-                break;
-            case '"':
-                out += "&quot;";
-                break;
-            default:
-                out += c;
-        }
-    }
-    return out;
+    return robottestingframework::reporters::escapeMarkup(
+        text, robottestingframework::reporters::Markup::Quoted);
 }
 
 std::string Bench::writeSuite(const std::string& name, const std::vector<std::string>& tests) {

@@ -675,15 +675,20 @@ private:
     mutable std::unordered_map<std::string, std::string> resolved_;
 };
 
+variables::VariableTable tableOf(const std::vector<variables::Variable>& given) {
+    variables::VariableTable table;
+    for (const auto& variable : given) {
+        table.define(variable);
+    }
+    return table;
+}
+
 }  // namespace
 
 SuiteSpec parseSuite(const std::string& text, const std::string& path,
                      std::vector<std::string>& warnings,
                      const std::vector<variables::Variable>& commandLine) {
-    variables::VariableTable table;
-    for (const auto& variable : commandLine) {
-        table.define(variable);
-    }
+    variables::VariableTable table = tableOf(commandLine);
     SuiteReader reader(text, path, warnings, table);
     pugi::xml_document document;
     return reader.readSuite(reader.parseRoot(document, "<suite name=\"...\">"));
@@ -692,10 +697,7 @@ SuiteSpec parseSuite(const std::string& text, const std::string& path,
 TestSpec parseTestFile(const std::string& text, const std::string& path,
                        std::vector<std::string>& warnings,
                        const std::vector<variables::Variable>& suiteVariables) {
-    variables::VariableTable table;
-    for (const auto& variable : suiteVariables) {
-        table.define(variable);
-    }
+    variables::VariableTable table = tableOf(suiteVariables);
     SuiteReader reader(text, path, warnings, table);
     pugi::xml_document document;
     return reader.readTestDocument(reader.parseRoot(document, "<test>"), pugi::xml_node());
