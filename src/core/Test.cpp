@@ -5,6 +5,8 @@
 
 #include <robottestingframework/TestResult.h>
 
+#include "text_safety.h"
+
 namespace robottestingframework {
 
 Test::Test(std::string name, std::string description)
@@ -39,10 +41,7 @@ std::string bounded(std::string name) {
     if (name.size() <= maxName) {
         return name;
     }
-    std::size_t keep = maxName;
-    while (keep > 0 && (static_cast<unsigned char>(name[keep]) & 0xC0) == 0x80) {
-        --keep;
-    }
+    const std::size_t keep = reporters::characterBoundary(name, maxName);
     const std::size_t dropped = name.size() - keep;
     name.resize(keep);
     return name + " [... " + std::to_string(dropped) + " more bytes of this name dropped]";

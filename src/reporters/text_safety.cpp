@@ -6,6 +6,16 @@
 namespace robottestingframework {
 namespace reporters {
 
+std::size_t characterBoundary(const std::string& text, std::size_t at) {
+    if (at >= text.size()) {
+        return at;
+    }
+    while (at > 0 && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) {
+        --at;
+    }
+    return at;
+}
+
 std::size_t validSequence(const std::string& s, std::size_t i) {
     const auto byte = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
     const unsigned char lead = byte(i);

@@ -10,6 +10,9 @@ namespace reporters {
 // Length of the valid UTF-8 sequence starting at s[i] (a byte of 0x80 or more) that XML 1.0
 // allows; 0 when there is none (a stray byte, an overlong form, a surrogate, U+FFFE/U+FFFF).
 std::size_t validSequence(const std::string& s, std::size_t i);
+// `at`, moved back to the first byte of the UTF-8 character it falls inside: where `text` may
+// be cut without splitting a character. `at` itself when it is past the end.
+std::size_t characterBoundary(const std::string& text, std::size_t at);
 // `text` with every byte that does not start such a sequence replaced by U+FFFD.
 std::string validUtf8(const std::string& text);
 // `text` as a plain text file should hold it: invalid UTF-8 replaced as validUtf8 does, and

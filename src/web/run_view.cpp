@@ -15,11 +15,11 @@ namespace {
 
 using Json = nlohmann::json;
 
-// What a test printed and its reports are capped: the page is for reading, not for archiving
-// (the result files keep everything), and each change re-sends the test's messages.
-// Each change re-sends the test's messages, so without a cap a test that failed a check 4 000
-// times made the runner hold 3 GB and take 3 minutes. The first messages of each kind are kept
-// (the first failure decides); the rest are only counted. Messages keep their first 4 KiB.
+// What a test printed and its messages are capped: the page is for reading, not for archiving
+// (the result files keep everything), and each change re-sends the test's messages. Without a
+// cap a test that failed a check 4 000 times made the runner hold 3 GB and take 3 minutes. The
+// first messages of each kind are kept (the first failure decides); the rest are only counted.
+// Messages keep their first 4 KiB.
 const std::size_t maxOutput = 64 * 1024;
 const std::size_t maxMessages = 200;
 const std::size_t maxMessageText = 4 * 1024;
@@ -38,10 +38,7 @@ bool keep(RunView::Message message, std::vector<RunView::Message>& messages, std
         return false;
     }
     if (message.text.size() > maxMessageText) {
-        std::size_t cut = maxMessageText;
-        while (cut > 0 && (static_cast<unsigned char>(message.text[cut]) & 0xC0) == 0x80) {
-            --cut;
-        }
+        const std::size_t cut = reporters::characterBoundary(message.text, maxMessageText);
         message.text = message.text.substr(0, cut) + " [... cut on this page; the result " +
                        "files have all of it]";
     }
