@@ -160,6 +160,47 @@ class Scope:
 
 py::object g_scopeType;  // Scope, above
 
+// A script's print() goes to sys.stdout, whose buffer the interpreter empties only at exit, which
+// never comes (the interpreter is never finalized; a worker ends with _exit): flushed after each
+// call into a script, so what it printed reaches the capture before the test ends, whatever
+// PYTHONUNBUFFERED says. Both the current streams and the original ones (a script may have
+// replaced sys.stdout). Never throws: the streams are the script's to break (GIL held).
+void flushStandardStreams() {
+    PyObject* type = nullptr;
+    PyObject* value = nullptr;
+    PyObject* trace = nullptr;
+    PyErr_Fetch(&type, &value, &trace);  // an exception on its way out stays as it was
+    for (const char* name : {"stdout", "stderr", "__stdout__", "__stderr__"}) {
+        PyObject* stream = PySys_GetObject(name);  // borrowed
+        if (stream == nullptr || stream == Py_None) {
+            continue;
+        }
+        PyObject* result = PyObject_CallMethod(stream, "flush", nullptr);
+        if (result == nullptr) {
+            PyErr_Clear();
+        }
+        Py_XDECREF(result);
+    }
+    PyErr_Restore(type, value, trace);
+}
+
+// The standard streams write each line as it ends, as they do on a terminal: when a test is
+// stopped (its time is up, Ctrl-C) or its thread prints after its call returned, its complete
+// lines are in the report already. Only a line not ended yet waits for the next flush.
+void writeLinesAsTheyEnd() {
+    py::module_ sys = py::module_::import("sys");
+    for (const char* name : {"stdout", "stderr"}) {
+        py::object stream = py::getattr(sys, name, py::none());
+        try {
+            if (!stream.is_none() && py::hasattr(stream, "reconfigure")) {
+                stream.attr("reconfigure")(py::arg("line_buffering") = true);
+            }
+        } catch (py::error_already_set&) {
+            // A stream that cannot be: its lines wait for the flush after each call.
+        }
+    }
+}
+
 }  // namespace
 
 PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
@@ -320,6 +361,7 @@ void ensureInterpreter() {
             g_scopeType = globals["Scope"];
             g_scopeType.inc_ref();  // never released: the interpreter is never finalized
             addVirtualEnvironment();
+            writeLinesAsTheyEnd();
             guardProcessExit();
             installWakeHandler();
         }
@@ -546,6 +588,7 @@ ScriptModule::Call::~Call() {
     } catch (py::error_already_set&) {
         PyErr_Clear();
     }
+    flushStandardStreams();
 }
 
 py::object ScriptModule::attribute(const char* name) const {

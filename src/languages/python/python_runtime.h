@@ -73,7 +73,7 @@ public:
     // The module's attribute `name`, or None (GIL held).
     py::object attribute(const char* name) const;
 
-    // Brackets every call into the script (GIL held).
+    // Brackets every call into the script (GIL held); flushes sys.stdout and sys.stderr after it.
     class Call {
     public:
         explicit Call(ScriptModule& script);
