@@ -19,6 +19,25 @@ SANITIZED = os.environ.get("RTF_SANITIZED") == "1"
 SCHEMA = SOURCE_DIR / "schemas" / "junit.xsd"
 
 
+def _changes_a_runtime(name):
+    """True for a variable that changes how the runtimes under test behave: the embedded
+    Python (PYTHONUNBUFFERED once hid that a test's print() was lost), Ruby, Lua, the dynamic
+    loader, the locale. A user's shell has none of them, or others; tests/user-environment.cmake
+    removes the same ones from ctest's environment."""
+    return (name.startswith(("PYTHON", "RUBY", "GEM_", "LUA_", "LC_"))
+            or name in ("LANG", "LANGUAGE", "VIRTUAL_ENV")
+            or name.startswith("LD_"))
+
+
+# The tests run the runner in a user's environment, not in the developer's: as a fresh
+# Debian 12 root has it, no PYTHON*, RUBY*, LUA_*, LD_* and no locale (POSIX). LC_CTYPE goes
+# too: Python sets it (C.UTF-8, PEP 538) in its own environment when it starts in the POSIX
+# locale. Done here, once, so that every process a test starts inherits it (the runner, and
+# the cmake, ctest and python runs that start one). RTF_* stay: they are the harness's.
+for _name in [name for name in os.environ if _changes_a_runtime(name)]:
+    del os.environ[_name]
+
+
 def plugin(name):
     """Path of a test plug-in built from tests/plugins/NAME.cpp."""
     return str(PLUGIN_DIR / f"{name}.so")
@@ -53,11 +72,12 @@ def _hosts_ruby(args):
     return False
 
 
-def runner_environment(args, env):
-    """The environment of one run of the runner: ours with `env` applied. Under the sanitizer
-    job (ctest in build-asan/, tests/sanitizers/), a runner that hosts the Ruby VM runs without
-    leak checks: LeakSanitizer crashes on the VM's thread at exit. ASan and UBSan stay on."""
-    full_env = dict(os.environ)
+def runner_environment(args, env, inherit=True):
+    """The environment of one run of the runner: ours with `env` applied (only `env` when not
+    `inherit`). Under the sanitizer job (ctest in build-asan/, tests/sanitizers/), a runner that
+    hosts the Ruby VM runs without leak checks: LeakSanitizer crashes on the VM's thread at
+    exit. ASan and UBSan stay on."""
+    full_env = dict(os.environ) if inherit else {}
     if env:
         full_env.update(env)
     asan = full_env.get("ASAN_OPTIONS", "")
@@ -66,11 +86,12 @@ def runner_environment(args, env):
     return full_env
 
 
-def run_runner(*args, timeout=120, cwd=None, env=None, input=None):
+def run_runner(*args, timeout=120, cwd=None, env=None, input=None, inherit=True):
     """Runs the runner with `args`; returns Run (exit status, stdout, stderr).
-    The runner is killed (its whole process group) if it outlives `timeout`."""
+    The runner is killed (its whole process group) if it outlives `timeout`. With
+    inherit=False its environment is `env` alone (see empty_environment)."""
     assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
-    full_env = runner_environment(args, env)
+    full_env = runner_environment(args, env, inherit)
     proc = subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.PIPE if input else subprocess.DEVNULL,
@@ -82,6 +103,18 @@ def run_runner(*args, timeout=120, cwd=None, env=None, input=None):
         out, err = proc.communicate()
         pytest.fail(f"runner did not finish within {timeout} s\n{out}\n{err}")
     return Run(proc, out, err)
+
+
+def empty_environment(**more):
+    """What `env -i PATH=$PATH` gives the runner: an environment of PATH alone (and, under the
+    sanitizer job, the sanitizers' options, without which its reports would not fail the
+    test). The runner finds its libraries through its rpath. Pass it with inherit=False."""
+    env = {"PATH": os.environ.get("PATH", "/usr/bin:/bin")}
+    if SANITIZED:
+        env.update({name: value for name, value in os.environ.items()
+                    if name.endswith("SAN_OPTIONS")})
+    env.update(more)
+    return env
 
 
 def validate_junit(path):
