@@ -380,7 +380,7 @@ int main(int argc, char** argv) {
     // The fork server is started here, on the main thread, which lives for the whole run: the
     // server's parent-death signal is tied to the thread that started it.
     std::unique_ptr<TestExecutor> executor;
-    if (options.isolation == "none") {
+    if (options.isolation == Isolation::None) {
         std::fprintf(stderr,
                      "%s: warning: --isolation none: a test that crashes, exits or blocks in "
                      "native code ends or holds the run; a timeout can only ask it to stop\n",
@@ -504,7 +504,7 @@ int main(int argc, char** argv) {
     } notes(capture.console());
     SchedulerSettings schedulerSettings;
     schedulerSettings.jobs = options.jobs;
-    schedulerSettings.inlineSuites = options.isolation == "none";
+    schedulerSettings.inlineSuites = options.isolation == Isolation::None;
     schedulerSettings.verbose = options.verbose;
     schedulerSettings.view = parallel ? static_cast<SchedulerView*>(&parallelConsole) : &notes;
     Scheduler scheduler(plan, pools, schedulerSettings);
@@ -542,7 +542,7 @@ int main(int argc, char** argv) {
         interrupted = watcher.stop();
     }
     capture.stop();
-    if (options.isolation == "none") {
+    if (options.isolation == Isolation::None) {
         platform::killDescendants(::getpid());
     }
 
