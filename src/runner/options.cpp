@@ -161,7 +161,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     app.add_flag("-d,--detail", options.detail, "Show every check on the console");
     app.add_flag("-v,--verbose", options.verbose,
                  "Show the tests' reports and what they print on the console");
-    app.add_option("--isolation", options.isolation,
+    std::string isolation = "process";
+    app.add_option("--isolation", isolation,
                    "Where tests run: process (each in a worker process; the default) or none "
                    "(in the runner's process)")
         ->type_name("MODE")
@@ -294,6 +295,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
             }
         }
     }
+
+    options.isolation = isolation == "none" ? Isolation::None : Isolation::Process;
 
     if (!jobs.empty()) {
         const std::string problem = checkJobs(jobs, options.jobs);

@@ -16,6 +16,12 @@ struct OutputRequest {
     std::string file;
 };
 
+// --isolation: where the tests run.
+enum class Isolation {
+    Process,  // "process": each test in a worker process (the default)
+    None,     // "none": in the runner's own process, one suite at a time
+};
+
 struct Options {
     std::vector<std::string> tests;      // --test/-t FILE
     std::vector<std::string> testDirs;   // --tests DIR
@@ -36,13 +42,13 @@ struct Options {
     double webLinger = 0;               // --web-linger SECONDS: serve the final page that long
     bool detail = false;                // --detail/-d: every check on the console
     bool verbose = false;               // --verbose/-v: reports and output on the console
-    std::string isolation = "process";  // --isolation process|none
-    double timeout = 0;                 // --timeout SECONDS for every test; 0: none
-    bool failFast = false;              // --fail-fast: the first failure stops the run
-    unsigned int retries = 0;           // --retries N: a failing test runs again up to N times
-    bool failOnFlaky = false;           // --fail-on-flaky: a flaky test fails the run
-    unsigned int repeatUntilFail = 0;   // --repeat-until-fail N; 0: not given (once)
-    std::string rerunFailed;            // --rerun-failed REPORT: only the tests it says failed
+    Isolation isolation = Isolation::Process;  // --isolation process|none
+    double timeout = 0;                        // --timeout SECONDS for every test; 0: none
+    bool failFast = false;                     // --fail-fast: the first failure stops the run
+    unsigned int retries = 0;          // --retries N: a failing test runs again up to N times
+    bool failOnFlaky = false;          // --fail-on-flaky: a flaky test fails the run
+    unsigned int repeatUntilFail = 0;  // --repeat-until-fail N; 0: not given (once)
+    std::string rerunFailed;           // --rerun-failed REPORT: only the tests it says failed
     std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
     std::vector<std::string> variableFiles;                      // --var-file FILE
     bool list = false;                                           // --list: print, run nothing

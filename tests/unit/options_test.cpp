@@ -7,6 +7,7 @@
 
 #include "options.h"
 
+using robottestingframework::runner::Isolation;
 using robottestingframework::runner::Options;
 using robottestingframework::runner::parseOptions;
 using robottestingframework::runner::ParseResult;
@@ -195,14 +196,14 @@ TEST(Options, AFileNameWithAColonIsWrittenWithItsTypeOrAFolder) {
 TEST(Options, ProcessIsolationIsTheDefault) {
     Options options;
     ASSERT_TRUE(runs(parse({"-t", "a.so"}, options)));
-    EXPECT_EQ(options.isolation, "process");
+    EXPECT_EQ(options.isolation, Isolation::Process);
     EXPECT_EQ(options.timeout, 0);
     EXPECT_FALSE(options.failFast);
 
     Options chosen;
     ASSERT_TRUE(runs(
         parse({"-t", "a.so", "--isolation", "none", "--timeout", "2.5", "--fail-fast"}, chosen)));
-    EXPECT_EQ(chosen.isolation, "none");
+    EXPECT_EQ(chosen.isolation, Isolation::None);
     EXPECT_EQ(chosen.timeout, 2.5);
     EXPECT_TRUE(chosen.failFast);
 }

@@ -1,0 +1,292 @@
+// The console of -j N (parallel_console.h): a line per test as it ends, its messages under it,
+// the scheduler's notes, the status line on a terminal, the summary at the end.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "core_test_helpers.h"
+#include "parallel_console.h"
+#include "suite_events.h"
+
+using namespace robottestingframework;
+using namespace robottestingframework::runner;
+
+namespace {
+
+// A console writing to memory; text() is what it wrote, each test's time shown as "(T)".
+class Console {
+public:
+    explicit Console(ParallelConsoleSettings settings = {}) {
+        stream_ = ::open_memstream(&buffer_, &size_);
+        console_ = std::make_unique<ParallelConsole>(stream_, collector_, settings);
+    }
+    ~Console() {
+        console_.reset();
+        std::fclose(stream_);
+        std::free(buffer_);
+    }
+    ParallelConsole& operator*() { return *console_; }
+    ParallelConsole* operator->() { return console_.get(); }
+    TestResultCollector& collector() { return collector_; }
+
+    // The events `report` makes on a suite's queue, shown as the scheduler shows them.
+    template <typename Report>
+    void show(const TestSuite& suite, Report report) {
+        SuiteEvents events([] {});
+        report(static_cast<TestListener&>(events));
+        console_->events(suite, events.take());
+    }
+
+    std::string text() {
+        std::fflush(stream_);
+        return std::regex_replace(std::string(buffer_, size_), std::regex("  \\([^)]*s\\)\n"),
+                                  "  (T)\n");
+    }
+
+private:
+    TestResultCollector collector_;
+    char* buffer_ = nullptr;
+    std::size_t size_ = 0;
+    std::FILE* stream_ = nullptr;
+    std::unique_ptr<ParallelConsole> console_;
+};
+
+}  // namespace
+
+TEST(ParallelConsole, APassedTestIsOneLineNamingItsSuiteAndTest) {
+    Console console;
+    TestSuite suite("arm");
+    rtf_test::LambdaTest reach("reach");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&reach);
+        events.endTest(&reach);
+    });
+    EXPECT_EQ(console.text(), "  passed      arm :: reach  (T)\n");
+}
+
+TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
+    Console console;
+    TestSuite suite("arm");
+    rtf_test::LambdaTest grip("grip");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&grip);
+        events.addFailure(&grip, TestMessage("dropped the cup"));
+        events.addCheck(&grip, TestMessage("force within limits"), false);
+        events.addCheck(&grip, TestMessage("a passed check"), true);
+        events.endTest(&grip);
+    });
+    EXPECT_EQ(console.text(),
+              "  FAILED      arm :: grip  (T)\n"
+              "      failure: dropped the cup\n"
+              "      check FAILED: force within limits\n");
+}
+
+TEST(ParallelConsole, TheWorstStateOfATestIsItsWord) {
+    Console console;
+    TestSuite suite("arm");
+    rtf_test::LambdaTest grip("grip");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&grip);
+        events.addTimeout(&grip, TestMessage("after 2 s"));
+        events.addFailure(&grip, TestMessage("late"));
+        events.endTest(&grip);
+    });
+    EXPECT_EQ(console.text().substr(0, 25), "  TIMED OUT   arm :: grip");
+}
+
+TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
+    Console console;
+    TestSuite arm("arm");
+    TestSuite leg("leg");
+    rtf_test::LambdaTest reach("reach");
+    rtf_test::LambdaTest walk("walk");
+    console.show(arm, [&](TestListener& events) { events.startTest(&reach); });
+    console.show(leg, [&](TestListener& events) {
+        events.startTest(&walk);
+        events.addError(&walk, TestMessage("no floor"));
+        events.endTest(&walk);
+    });
+    console.show(arm, [&](TestListener& events) { events.endTest(&reach); });
+    EXPECT_EQ(console.text(),
+              "  ERROR       leg :: walk  (T)\n"
+              "      error: no floor\n"
+              "  passed      arm :: reach  (T)\n");
+}
+
+TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
+    ParallelConsoleSettings settings;
+    settings.retries = 1;
+    Console console(settings);
+    TestSuite suite("arm");
+    rtf_test::LambdaTest grip("grip");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&grip);
+        events.addFailure(&grip, TestMessage("slipped"));
+        events.endTest(&grip);
+        events.retryTest(&grip, TestMessage("attempt 2 of 2"));
+        events.startTest(&grip);
+        events.endTest(&grip);
+    });
+    EXPECT_EQ(console.text(),
+              "  RETRY       arm :: grip  (T)\n"
+              "      failure: slipped\n"
+              "  retry       arm :: grip: attempt 2 of 2\n"
+              "  FLAKY       arm :: grip  (T)\n");
+}
+
+TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
+    ParallelConsoleSettings settings;
+    settings.retries = 1;
+    Console console(settings);
+    TestSuite suite("arm");
+    rtf_test::LambdaTest grip("grip");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&grip);
+        events.addCrash(&grip, TestMessage("signal 11"));
+        events.endTest(&grip);
+        events.retryTest(&grip, TestMessage("attempt 2 of 2"));
+        events.startTest(&grip);
+        events.addCrash(&grip, TestMessage("signal 11"));
+        events.endTest(&grip);
+    });
+    const std::string text = console.text();
+    EXPECT_NE(text.find("  RETRY       arm :: grip  (T)\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("  CRASHED     arm :: grip  (T)\n      crash: signal 11\n"),
+              std::string::npos)
+        << text;
+}
+
+TEST(ParallelConsole, AnInterruptedTestIsNeverARetry) {
+    ParallelConsoleSettings settings;
+    settings.retries = 3;
+    Console console(settings);
+    TestSuite suite("arm");
+    rtf_test::LambdaTest grip("grip");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&grip);
+        events.addInterrupted(&grip, TestMessage("Ctrl-C"));
+        events.endTest(&grip);
+    });
+    EXPECT_EQ(console.text(), "  INTERRUPTED arm :: grip  (T)\n      interrupted: Ctrl-C\n");
+}
+
+TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
+    for (bool verbose : {false, true}) {
+        ParallelConsoleSettings settings;
+        settings.verbose = verbose;
+        Console console(settings);
+        TestSuite suite("arm");
+        rtf_test::LambdaTest reach("reach");
+        console.show(suite, [&](TestListener& events) {
+            events.startTest(&reach);
+            events.addReport(&reach, TestMessage("at 3 cm"));
+            events.addOutput(&reach, "line one\nline two\n");
+            events.endTest(&reach);
+        });
+        EXPECT_EQ(console.text(), verbose ? "  passed      arm :: reach  (T)\n"
+                                            "      report: at 3 cm\n"
+                                            "      | line one\n"
+                                            "      | line two\n"
+                                          : "  passed      arm :: reach  (T)\n");
+    }
+}
+
+TEST(ParallelConsole, AProblemOutsideATestIsSaidAtOnceNamingTheSuite) {
+    Console console;
+    TestSuite suite("arm");
+    console.show(suite, [&](TestListener& events) {
+        events.addError(nullptr, TestMessage("fixture did not start"));
+    });
+    EXPECT_EQ(console.text(), "  arm: error: fixture did not start\n");
+}
+
+TEST(ParallelConsole, TheEndOfASuiteSaysWhetherItPassed) {
+    Console console;
+    TestSuite suite("arm");
+    console.show(suite, [&](TestListener& events) { events.endTestSuite(&suite); });
+    EXPECT_EQ(console.text(), "  suite passed  arm\n");
+}
+
+TEST(ParallelConsole, ColoursWrapTheStatusWord) {
+    ParallelConsoleSettings settings;
+    settings.colours = true;
+    Console console(settings);
+    TestSuite suite("arm");
+    rtf_test::LambdaTest reach("reach");
+    console.show(suite, [&](TestListener& events) {
+        events.startTest(&reach);
+        events.endTest(&reach);
+    });
+    const std::string text = console.text();
+    EXPECT_EQ(text.rfind("  \033[", 0), 0u) << text;
+    EXPECT_NE(text.find("passed     \033[0m arm :: reach"), std::string::npos) << text;
+}
+
+TEST(ParallelConsole, ANoteIsALineNamingTheRunner) {
+    Console console;
+    console->note("suite leg waits for lock robot");
+    EXPECT_EQ(console.text(), "robottestingframework-testrunner: suite leg waits for lock robot\n");
+}
+
+TEST(ParallelConsole, WithoutATerminalWhatRunsIsNotShown) {
+    Console console;
+    console->running("arm :: reach");
+    console->note("x");
+    EXPECT_EQ(console.text(), "robottestingframework-testrunner: x\n");
+}
+
+TEST(ParallelConsole, OnATerminalTheStatusLineIsClearedForEachLineAndShownAgain) {
+    ParallelConsoleSettings settings;
+    settings.statusLine = true;
+    Console console(settings);
+    console->running("arm :: reach");
+    console->note("x");
+    EXPECT_EQ(console.text(),
+              "\r\033[Krunning: arm :: reach"
+              "\r\033[Krobottestingframework-testrunner: x\nrunning: arm :: reach");
+}
+
+TEST(ParallelConsole, ALongStatusLineIsCutTo120Characters) {
+    ParallelConsoleSettings settings;
+    settings.statusLine = true;
+    Console console(settings);
+    console->running(std::string(200, 'x'));
+    EXPECT_EQ(console.text(), "\r\033[K" + ("running: " + std::string(108, 'x')) + "...");
+}
+
+TEST(ParallelConsole, TheEndOfTheRunClearsTheStatusLineAndEndsWithTheClosingLine) {
+    ParallelConsoleSettings settings;
+    settings.statusLine = true;
+    settings.summary = false;
+    Console console(settings);
+    console->running("arm :: reach");
+    console->endTestRunner();
+    const std::string text = console.text();
+    EXPECT_EQ(text.rfind("\r\033[Krunning: arm :: reach\r\033[K\n", 0), 0u) << text;
+    EXPECT_EQ(text.find("Summary"), std::string::npos) << text;
+    EXPECT_EQ(text.find("running:", 10), std::string::npos) << text;
+}
+
+TEST(ParallelConsole, TheSummaryComesFromTheCollector) {
+    ParallelConsoleSettings settings;
+    settings.summary = true;
+    Console withSummary(settings);
+    withSummary->endTestRunner();
+    settings.summary = false;
+    Console without(settings);
+    without->endTestRunner();
+    const std::string summary = withSummary.text();
+    const std::string closing = without.text();
+    EXPECT_EQ(summary.rfind("\nSummary\n", 0), 0u) << summary;
+    // Both end with the same closing line.
+    ASSERT_GT(closing.size(), 2u);
+    EXPECT_EQ(summary.substr(summary.size() - (closing.size() - 1)), closing.substr(1));
+}
