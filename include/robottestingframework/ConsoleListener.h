@@ -50,8 +50,11 @@ public:
     void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
+    void addEvent(const Test* test, const ResultEvent& event) override;
 
 private:
+    // A message of `kind` (its word and colour from the tables), printed when it is due.
+    void say(ResultEvent::Kind kind, const Test* test, const TestMessage& msg, bool passed = true);
     void message(const char* label, const char* colour, const TestMessage& msg);
     // Prints `msg` now when it belongs to no open test or verbose is on; otherwise it is
     // printed under the test's line at endTest.

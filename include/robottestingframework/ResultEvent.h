@@ -28,8 +28,16 @@ struct ResultEvent {
         Timeout,
         Interrupted,
         Output,
-        Rename,  // the test now goes by `message`'s text (a script's setName)
+        Rename,      // the test now goes by `message`'s text (a script's setName)
+        Retry,       // the test just ended failing and runs again; `message` says which attempt
+        Repetition,  // repetition `repetition` of `repetitions` of the test starts
+        // Reserved for the runner's own tests (tests/e2e/test_event_kinds.py): no product code
+        // sends it. A kind with nothing but its rows in the tables (TestListener::addEvent
+        // takes it): it fails its test, so every report shows whether it arrived.
+        Probe,
     };
+    // The last kind: a kind is added before it or takes its place here.
+    static constexpr Kind lastKind = Kind::Probe;
 
     Kind kind = Kind::Report;
     std::string testName;      // the test (or suite) the event is about; empty for runner events
@@ -40,6 +48,7 @@ struct ResultEvent {
     // The repetition of its test it happened in (1..N, see TestListener::startRepetition);
     // 0 when the test runs once, and for runner and suite events.
     unsigned int repetition = 0;
+    unsigned int repetitions = 0;  // for Repetition: how many times the test runs
 };
 
 // The id of repetition `index` of the test `testId`: "<testId>#<index>". Given by the plan
@@ -48,8 +57,17 @@ std::string repetitionId(std::uint64_t testId, unsigned int index);
 // What the start of a repetition says: "repetition <index>/<count>".
 TestMessage repetitionMessage(unsigned int index, unsigned int count);
 
-// "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats).
+// The tables of event kinds, one row per kind, in TestStatus.cpp: adding a kind is adding its
+// rows there; the listeners, relays and the wire format need nothing else.
+
+// "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats, and
+// the word the console, TAP and live page put before a message).
 const char* toString(ResultEvent::Kind kind);
+
+// Whether the kind frames a run (start/end of the runner, a suite or a test) rather than says
+// something about a test. A relay that frames a test itself (a worker's events about the
+// runner's stand-in) forwards only the others.
+bool isFrame(ResultEvent::Kind kind);
 
 // The state an event gives the test it is about (a failure: Failed, a crash: Crashed, ...);
 // Passed for the events that leave the state as it is. A test's state is the highest one its

@@ -1,8 +1,12 @@
-// Receives the events of a run. Every handler does nothing unless overridden.
+// Receives the events of a run. Every event arrives at onEvent; by default onEvent calls the
+// named handler of its kind (the RTF 2.x ones and those added since), and every named handler
+// does nothing unless overridden. A listener overrides the named handlers it cares about, as
+// with RTF 2.x, or onEvent to take every event as data (a relay, a queue).
 #pragma once
 
 #include <string>
 
+#include <robottestingframework/RunEvent.h>
 #include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestMessage.h>
 
@@ -52,6 +56,15 @@ public:
     // its id is repetitionId(test->getId(), index). By default it is the report
     // "repetition index/count", as RTF 2.x's listeners saw it.
     virtual void startRepetition(const Test* test, unsigned int index, unsigned int count);
+    // An event of a kind with no handler of its own above (ResultEvent::Kind::Probe, and kinds
+    // added later until they get one): its word is toString(event.kind), the state it gives
+    // the test stateOf(event.kind).
+    virtual void addEvent(const Test* /*test*/, const ResultEvent& /*event*/) {}
+
+    // Every event, as TestResult::publish sends it. The default is the one switch from an
+    // event's kind to its named handler above. (Declared last, as addEvent: the virtuals of
+    // RTF 2.x keep their places.)
+    virtual void onEvent(const RunEvent& event);
 };
 
 }  // namespace robottestingframework

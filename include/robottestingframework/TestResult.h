@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <robottestingframework/RunEvent.h>
 #include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestMessage.h>
@@ -19,6 +20,11 @@ public:
     // Listeners are not owned; they must outlive the run.
     void addListener(TestListener* listener);
     void removeListener(TestListener* listener);
+
+    // The one fan-out: hands `event` to every listener's onEvent, in order, as it is. The named
+    // senders below make the event of their kind (cutting a message or detail longer than
+    // 128 KiB, saying so) and publish it.
+    void publish(const RunEvent& event);
 
     void addReport(const Test* test, TestMessage msg);
     void addError(const Test* test, TestMessage msg);

@@ -124,6 +124,7 @@ public:
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
+    void addEvent(const Test* test, const ResultEvent& event) override;
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by

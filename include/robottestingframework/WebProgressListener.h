@@ -58,6 +58,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
+    void addEvent(const Test* test, const ResultEvent& event) override;
 
 private:
     struct State;

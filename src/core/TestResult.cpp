@@ -1,5 +1,7 @@
 #include <robottestingframework/TestResult.h>
 
+#include <robottestingframework/TestSuite.h>
+
 #include <algorithm>
 #include <string>
 #include <utility>
@@ -31,14 +33,6 @@ TestMessage bounded(TestMessage msg) {
 
 }  // namespace
 
-// Every event is delivered to all listeners before the next one starts, whatever thread
-// sends it; the mutex is recursive because a listener may report in turn.
-#define RTF_DISPATCH(call)                              \
-    std::lock_guard<std::recursive_mutex> lock(mutex_); \
-    for (TestListener * listener : listeners_) {        \
-        listener->call;                                 \
-    }
-
 void TestResult::addListener(TestListener* listener) {
     std::lock_guard<std::recursive_mutex> lock(mutex_);
     if (listener && std::find(listeners_.begin(), listeners_.end(), listener) == listeners_.end()) {
@@ -51,87 +45,108 @@ void TestResult::removeListener(TestListener* listener) {
     listeners_.erase(std::remove(listeners_.begin(), listeners_.end(), listener), listeners_.end());
 }
 
+// Every event is delivered to all listeners before the next one starts, whatever thread
+// sends it; the mutex is recursive because a listener may report in turn.
+void TestResult::publish(const RunEvent& event) {
+    std::lock_guard<std::recursive_mutex> lock(mutex_);
+    for (TestListener* listener : listeners_) {
+        listener->onEvent(event);
+    }
+}
+
+namespace {
+
+RunEvent eventOf(ResultEvent::Kind kind, const Test* test, TestMessage msg = TestMessage()) {
+    RunEvent event;
+    event.data.kind = kind;
+    event.data.message = std::move(msg);
+    event.test = test;
+    return event;
+}
+
+}  // namespace
+
+using Kind = ResultEvent::Kind;
+
 void TestResult::addReport(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addReport(test, msg))
+    publish(eventOf(Kind::Report, test, bounded(std::move(msg))));
 }
 
 void TestResult::addError(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addError(test, msg))
+    publish(eventOf(Kind::Error, test, bounded(std::move(msg))));
 }
 
 void TestResult::addFailure(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addFailure(test, msg))
+    publish(eventOf(Kind::Failure, test, bounded(std::move(msg))));
 }
 
 void TestResult::startTest(const Test* test) {
-    RTF_DISPATCH(startTest(test))
+    publish(eventOf(Kind::StartTest, test));
 }
 
 void TestResult::endTest(const Test* test) {
-    RTF_DISPATCH(endTest(test))
+    publish(eventOf(Kind::EndTest, test));
 }
 
 void TestResult::startTestSuite(const TestSuite* suite) {
-    RTF_DISPATCH(startTestSuite(suite))
+    RunEvent event = eventOf(Kind::StartSuite, suite);
+    event.suite = suite;
+    publish(event);
 }
 
 void TestResult::endTestSuite(const TestSuite* suite) {
-    RTF_DISPATCH(endTestSuite(suite))
+    RunEvent event = eventOf(Kind::EndSuite, suite);
+    event.suite = suite;
+    publish(event);
 }
 
 void TestResult::startTestRunner() {
-    RTF_DISPATCH(startTestRunner())
+    publish(eventOf(Kind::StartRunner, nullptr));
 }
 
 void TestResult::endTestRunner() {
-    RTF_DISPATCH(endTestRunner())
+    publish(eventOf(Kind::EndRunner, nullptr));
 }
 
 void TestResult::addCheck(const Test* test, TestMessage msg, bool passed) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addCheck(test, msg, passed))
+    RunEvent event = eventOf(Kind::Check, test, bounded(std::move(msg)));
+    event.data.passed = passed;
+    publish(event);
 }
 
 void TestResult::addSkipped(const Test* test, TestMessage reason) {
-    reason = bounded(std::move(reason));
-    RTF_DISPATCH(addSkipped(test, reason))
+    publish(eventOf(Kind::Skipped, test, bounded(std::move(reason))));
 }
 
 void TestResult::addCrash(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addCrash(test, msg))
+    publish(eventOf(Kind::Crash, test, bounded(std::move(msg))));
 }
 
 void TestResult::addTimeout(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addTimeout(test, msg))
+    publish(eventOf(Kind::Timeout, test, bounded(std::move(msg))));
 }
 
 void TestResult::retryTest(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(retryTest(test, msg))
+    publish(eventOf(Kind::Retry, test, bounded(std::move(msg))));
 }
 
 void TestResult::startRepetition(const Test* test, unsigned int index, unsigned int count) {
-    RTF_DISPATCH(startRepetition(test, index, count))
+    RunEvent event = eventOf(Kind::Repetition, test);
+    event.data.repetition = index;
+    event.data.repetitions = count;
+    publish(event);
 }
 
 void TestResult::addInterrupted(const Test* test, TestMessage msg) {
-    msg = bounded(std::move(msg));
-    RTF_DISPATCH(addInterrupted(test, msg))
+    publish(eventOf(Kind::Interrupted, test, bounded(std::move(msg))));
 }
 
 void TestResult::addOutput(const Test* test, const std::string& text) {
-    RTF_DISPATCH(addOutput(test, text))
+    publish(eventOf(Kind::Output, test, TestMessage(text)));
 }
 
 void TestResult::renameTest(const Test* test, const std::string& name) {
-    RTF_DISPATCH(renameTest(test, name))
+    publish(eventOf(Kind::Rename, test, TestMessage(name)));
 }
-
-#undef RTF_DISPATCH
 
 }  // namespace robottestingframework

@@ -213,6 +213,10 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
     record(Kind::Output, test, TestMessage(text));
 }
 
+void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
+    record(event.kind, test, event.message, event.passed);
+}
+
 void TestResultCollector::renameTest(const Test* test, const std::string& name) {
     const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {

@@ -1,6 +1,8 @@
 #include <robottestingframework/ResultEvent.h>
 #include <robottestingframework/TestStatus.h>
 
+#include <cstddef>
+
 namespace robottestingframework {
 
 namespace {
@@ -44,43 +46,69 @@ const char* toLabel(TestStatus status) {
     return words != nullptr ? words->label : "?";
 }
 
-const char* toString(ResultEvent::Kind kind) {
-    using Kind = ResultEvent::Kind;
-    switch (kind) {
-        case Kind::StartRunner:
-            return "start-runner";
-        case Kind::EndRunner:
-            return "end-runner";
-        case Kind::StartSuite:
-            return "start-suite";
-        case Kind::EndSuite:
-            return "end-suite";
-        case Kind::StartTest:
-            return "start-test";
-        case Kind::EndTest:
-            return "end-test";
-        case Kind::Report:
-            return "report";
-        case Kind::Check:
-            return "check";
-        case Kind::Failure:
-            return "failure";
-        case Kind::Error:
-            return "error";
-        case Kind::Skipped:
-            return "skipped";
-        case Kind::Crash:
-            return "crash";
-        case Kind::Timeout:
-            return "timeout";
-        case Kind::Interrupted:
-            return "interrupted";
-        case Kind::Output:
-            return "output";
-        case Kind::Rename:
-            return "rename";
+namespace {
+
+// The one table of event kinds: each kind's word, the state it gives its test, and whether it
+// frames the run rather than says something about a test.
+struct KindRow {
+    ResultEvent::Kind kind;
+    const char* word;
+    TestStatus state;
+    bool frame;
+};
+using Kind = ResultEvent::Kind;
+constexpr KindRow kindRows[] = {
+    {Kind::StartRunner, "start-runner", TestStatus::Passed, true},
+    {Kind::EndRunner, "end-runner", TestStatus::Passed, true},
+    {Kind::StartSuite, "start-suite", TestStatus::Passed, true},
+    {Kind::EndSuite, "end-suite", TestStatus::Passed, true},
+    {Kind::StartTest, "start-test", TestStatus::Passed, true},
+    {Kind::EndTest, "end-test", TestStatus::Passed, true},
+    {Kind::Report, "report", TestStatus::Passed, false},
+    {Kind::Check, "check", TestStatus::Passed, false},
+    {Kind::Failure, "failure", TestStatus::Failed, false},
+    {Kind::Error, "error", TestStatus::Error, false},
+    {Kind::Skipped, "skipped", TestStatus::Skipped, false},
+    {Kind::Crash, "crash", TestStatus::Crashed, false},
+    {Kind::Timeout, "timeout", TestStatus::TimedOut, false},
+    {Kind::Interrupted, "interrupted", TestStatus::Interrupted, false},
+    {Kind::Output, "output", TestStatus::Passed, false},
+    {Kind::Rename, "rename", TestStatus::Passed, false},
+    {Kind::Retry, "retry", TestStatus::Passed, false},
+    {Kind::Repetition, "repetition", TestStatus::Passed, false},
+    {Kind::Probe, "probe", TestStatus::Failed, false},
+};
+
+constexpr bool inKindOrder() {
+    std::size_t at = 0;
+    for (const KindRow& row : kindRows) {
+        if (static_cast<std::size_t>(row.kind) != at++) {
+            return false;
+        }
     }
-    return "unknown";
+    return true;
+}
+static_assert(inKindOrder(), "kindRows: one row per ResultEvent::Kind, in its order");
+static_assert(static_cast<std::size_t>(ResultEvent::lastKind) + 1 ==
+                  sizeof(kindRows) / sizeof(kindRows[0]),
+              "kindRows: a row for every ResultEvent::Kind");
+
+const KindRow* rowOf(Kind kind) {
+    // The rows are in Kind order; a value past the table (garbage) has none.
+    const auto at = static_cast<std::size_t>(kind);
+    return at < sizeof(kindRows) / sizeof(kindRows[0]) ? &kindRows[at] : nullptr;
+}
+
+}  // namespace
+
+const char* toString(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr ? row->word : "unknown";
+}
+
+bool isFrame(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->frame;
 }
 
 std::string repetitionId(std::uint64_t testId, unsigned int index) {
@@ -92,23 +120,8 @@ TestMessage repetitionMessage(unsigned int index, unsigned int count) {
 }
 
 TestStatus stateOf(ResultEvent::Kind kind) {
-    using Kind = ResultEvent::Kind;
-    switch (kind) {
-        case Kind::Failure:
-            return TestStatus::Failed;
-        case Kind::Error:
-            return TestStatus::Error;
-        case Kind::Crash:
-            return TestStatus::Crashed;
-        case Kind::Timeout:
-            return TestStatus::TimedOut;
-        case Kind::Interrupted:
-            return TestStatus::Interrupted;
-        case Kind::Skipped:
-            return TestStatus::Skipped;
-        default:
-            return TestStatus::Passed;
-    }
+    const KindRow* row = rowOf(kind);
+    return row != nullptr ? row->state : TestStatus::Passed;
 }
 
 }  // namespace robottestingframework

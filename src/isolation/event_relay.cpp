@@ -6,41 +6,13 @@ namespace isolation {
 using Kind = ResultEvent::Kind;
 
 bool relayEvent(const WireRecord& record, const Test* about, TestResult& result) {
-    if (record.kind != WireKind::Event) {
+    if (record.kind != WireKind::Event || isFrame(record.event)) {
         return false;
     }
-    const TestMessage& msg = record.message;
-    switch (record.event) {
-        case Kind::Report:
-            result.addReport(about, msg);
-            break;
-        case Kind::Check:
-            result.addCheck(about, msg, record.flag);
-            break;
-        case Kind::Failure:
-            result.addFailure(about, msg);
-            break;
-        case Kind::Error:
-            result.addError(about, msg);
-            break;
-        case Kind::Skipped:
-            result.addSkipped(about, msg);
-            break;
-        case Kind::Crash:
-            result.addCrash(about, msg);
-            break;
-        case Kind::Timeout:
-            result.addTimeout(about, msg);
-            break;
-        case Kind::Interrupted:
-            result.addInterrupted(about, msg);
-            break;
-        case Kind::Output:
-            result.addOutput(about, msg.getMessage());
-            break;
-        default:
-            return false;
-    }
+    RunEvent event;
+    event.data = eventOf(record);
+    event.test = about;
+    result.publish(event);
     return true;
 }
 
@@ -72,19 +44,6 @@ void EventRelay::relay(const WireRecord& record) {
         self_.setDescription(record.message.getMessage());
         return;
     }
-    if (record.kind == WireKind::Repetition) {
-        const auto number = static_cast<std::uint64_t>(record.number);
-        const auto index = static_cast<unsigned int>(number & 0xffffffffu);
-        const auto count = static_cast<unsigned int>(number >> 32);
-        if (ended_ || index == 0 || index > count) {
-            return;  // garbage from a broken worker: not a repetition
-        }
-        start();
-        // A crash or timeout names the repetition it ended.
-        repetition_ = repetitionMessage(index, count).getMessage();
-        result_.startRepetition(&self_, index, count);
-        return;
-    }
     if (record.kind == WireKind::CriticalError) {
         self_.setCriticalError(record.message);
         return;
@@ -95,6 +54,13 @@ void EventRelay::relay(const WireRecord& record) {
     if (record.event == Kind::Rename) {
         rename(record.message.getMessage());
         return;
+    }
+    if (record.event == Kind::Repetition) {
+        if (record.repetition == 0 || record.repetition > record.repetitions) {
+            return;  // garbage from a broken worker: not a repetition
+        }
+        // A crash or timeout names the repetition it ended.
+        repetition_ = repetitionMessage(record.repetition, record.repetitions).getMessage();
     }
     // The test's own name wins (a script may set it in setup).
     if (!record.name.empty() && record.name != self_.getName()) {

@@ -7,8 +7,8 @@ namespace isolation {
 
 namespace {
 
-constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::Repetition);
-constexpr std::uint8_t kLastEvent = static_cast<std::uint8_t>(ResultEvent::Kind::Rename);
+constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::Described);
+constexpr std::uint8_t kLastEvent = static_cast<std::uint8_t>(ResultEvent::lastKind);
 
 void putU32(std::string& out, std::uint32_t value) {
     char bytes[4];
@@ -85,7 +85,7 @@ bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     std::uint32_t line;
     if (!in.u8(kind) || !in.u8(event) || !in.u8(flag) || !in.i64(record.number) ||
         !in.string(record.name) || !in.string(message) || !in.string(detail) || !in.string(file) ||
-        !in.u32(line) || !in.done()) {
+        !in.u32(line) || !in.u32(record.repetition) || !in.u32(record.repetitions) || !in.done()) {
         return false;
     }
     if (kind < 1 || kind > kLastKind || event > kLastEvent || flag > 1) {
@@ -100,6 +100,29 @@ bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
 
 }  // namespace
 
+WireRecord eventRecord(const ResultEvent& event, const std::string& name) {
+    WireRecord record;
+    record.kind = WireKind::Event;
+    record.event = event.kind;
+    record.name = name;
+    record.message = event.message;
+    record.flag = event.passed;
+    record.repetition = event.repetition;
+    record.repetitions = event.repetitions;
+    return record;
+}
+
+ResultEvent eventOf(const WireRecord& record) {
+    ResultEvent event;
+    event.kind = record.event;
+    event.testName = record.name;
+    event.message = record.message;
+    event.passed = record.flag;
+    event.repetition = record.repetition;
+    event.repetitions = record.repetitions;
+    return event;
+}
+
 void encode(const WireRecord& record, std::string& out) {
     std::size_t start = out.size();
     putU32(out, 0);  // the length, filled in below
@@ -112,6 +135,8 @@ void encode(const WireRecord& record, std::string& out) {
     putString(out, record.message.getDetail());
     putString(out, record.message.getSourceFileName());
     putU32(out, record.message.getSourceLineNumber());
+    putU32(out, record.repetition);
+    putU32(out, record.repetitions);
     auto length = static_cast<std::uint32_t>(out.size() - start - 4);
     for (int i = 0; i < 4; ++i) {
         out[start + i] = static_cast<char>((length >> (8 * i)) & 0xff);

@@ -3,7 +3,7 @@
 //
 //   record  = u32 body-length, body                       (little-endian)
 //   body    = u8 kind, u8 event, u8 flag, i64 number, str name, str message, str detail,
-//             str file, u32 line
+//             str file, u32 line, u32 repetition, u32 repetitions
 //   str     = u32 length, bytes
 //
 // Requests to the fork server are single packets of their own layout (encodeRequest).
@@ -21,7 +21,7 @@ namespace robottestingframework {
 namespace isolation {
 
 enum class WireKind : std::uint8_t {
-    Event = 1,         // worker → runner: a ResultEvent (`event`, `name`, `message`, `flag`)
+    Event = 1,         // worker → runner: a ResultEvent of any kind (eventRecord, eventOf)
     CriticalError,     // worker → runner: the test raised a critical error (`message`)
     FixtureCollapsed,  // fixture worker → runner: the fixture's world is gone (`message`)
     Reply,             // fixture worker → runner: a call returned `flag` (`message`: why not)
@@ -31,8 +31,6 @@ enum class WireKind : std::uint8_t {
     Call,              // runner → fixture worker: `name` is setup/check/tearDown; `message`
                        // holds setup's argv joined by '\0'
     Described,         // worker → runner: the loaded test's `name` and description (`message`)
-    Repetition,        // worker → runner: repetition `number` & 0xffffffff of `number` >> 32
-                       // starts (`message` says so, as TestListener::startRepetition)
 };
 
 struct WireRecord {
@@ -42,7 +40,15 @@ struct WireRecord {
     TestMessage message;
     bool flag = true;
     std::int64_t number = 0;
+    std::uint32_t repetition = 0;   // an event's ResultEvent::repetition
+    std::uint32_t repetitions = 0;  // an event's ResultEvent::repetitions
 };
+
+// The Event record that carries `event` (about the test named `name`), field by field: what
+// travels is the event itself, whatever its kind.
+WireRecord eventRecord(const ResultEvent& event, const std::string& name);
+// The event an Event record carries (its testName is the record's name).
+ResultEvent eventOf(const WireRecord& record);
 
 // A record longer than this is garbage, not a record.
 constexpr std::size_t kMaxRecordSize = 16 * 1024 * 1024;

@@ -13,9 +13,9 @@ namespace {
 
 using namespace reporters::colour;
 using reporters::colourOf;
+using Kind = ResultEvent::Kind;
 
-const char* colourOf(ResultEvent::Kind kind, bool passed) {
-    using Kind = ResultEvent::Kind;
+const char* colourOf(Kind kind, bool passed) {
     switch (kind) {
         case Kind::Check:
             return passed ? green : red;
@@ -71,62 +71,62 @@ bool ConsoleListener::printNow(const Test* test) const {
 void ConsoleListener::addReport(const Test* test, TestMessage msg) {
     record_.addReport(test, msg);
     if (verbose_ && !hideUncritical_) {
-        message("report", nullptr, msg);
+        message(toString(Kind::Report), colourOf(Kind::Report, true), msg);
     }
 }
 
 void ConsoleListener::addError(const Test* test, TestMessage msg) {
     record_.addError(test, msg);
-    if (printNow(test)) {
-        message("error", red, msg);
-    }
+    say(Kind::Error, test, msg);
 }
 
 void ConsoleListener::addFailure(const Test* test, TestMessage msg) {
     record_.addFailure(test, msg);
-    if (printNow(test)) {
-        message("failure", red, msg);
-    }
+    say(Kind::Failure, test, msg);
 }
 
 void ConsoleListener::addCheck(const Test* test, TestMessage msg, bool passed) {
     record_.addCheck(test, msg, passed);
-    if (showChecks_ && printNow(test)) {
-        message(passed ? "check ok" : "check FAILED", passed ? green : red, msg);
+    if (showChecks_) {
+        say(Kind::Check, test, msg, passed);
+    }
+}
+
+void ConsoleListener::addEvent(const Test* test, const ResultEvent& event) {
+    record_.addEvent(test, event);
+    say(event.kind, test, event.message, event.passed);
+}
+
+void ConsoleListener::say(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
+                          bool passed) {
+    if (printNow(test)) {
+        message(reporters::eventLabel(kind, passed).c_str(), colourOf(kind, passed), msg);
     }
 }
 
 void ConsoleListener::addSkipped(const Test* test, TestMessage reason) {
     record_.addSkipped(test, reason);
-    if (printNow(test)) {
-        message("skipped", yellow, reason);
-    }
+    say(Kind::Skipped, test, reason);
 }
 
 void ConsoleListener::retryTest(const Test* test, TestMessage msg) {
     record_.retryTest(test, msg);
-    message("retry", yellow, msg);
+    message(toString(Kind::Retry), yellow, msg);
 }
 
 void ConsoleListener::addCrash(const Test* test, TestMessage msg) {
     record_.addCrash(test, msg);
-    if (printNow(test)) {
-        message("crash", red, msg);
-    }
+    say(Kind::Crash, test, msg);
 }
 
 void ConsoleListener::addTimeout(const Test* test, TestMessage msg) {
     record_.addTimeout(test, msg);
-    if (printNow(test)) {
-        message("timeout", red, msg);
-    }
+    say(Kind::Timeout, test, msg);
 }
 
 void ConsoleListener::addInterrupted(const Test* test, TestMessage msg) {
     record_.addInterrupted(test, msg);
-    if (printNow(test)) {
-        message("interrupted", red, msg);
-    }
+    say(Kind::Interrupted, test, msg);
 }
 
 void ConsoleListener::addOutput(const Test* test, const std::string& text) {
@@ -196,7 +196,6 @@ void ConsoleListener::endTest(const Test* test) {
         return;  // its messages were printed as they came
     }
     for (const ResultEvent& event : record.events) {
-        using Kind = ResultEvent::Kind;
         if (event.kind == Kind::Report || (event.kind == Kind::Check && !showChecks_)) {
             continue;
         }

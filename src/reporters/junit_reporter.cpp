@@ -67,8 +67,7 @@ const char* errorType(TestStatus status) {
 }
 
 bool isProblem(Kind kind) {
-    return kind == Kind::Failure || kind == Kind::Error || kind == Kind::Crash ||
-           kind == Kind::Timeout || kind == Kind::Interrupted;
+    return isFailure(stateOf(kind));
 }
 
 // Every failure and error of `events`, one per line, with where it happened.

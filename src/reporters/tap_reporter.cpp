@@ -248,6 +248,9 @@ void TapReporter::addTimeout(const Test* test, TestMessage msg) {
 void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
     note(Kind::Interrupted, test, msg);
 }
+void TapReporter::addEvent(const Test* test, const ResultEvent& event) {
+    note(event.kind, test, event.message);
+}
 void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
     if (test == nullptr || last_.id == 0 || last_.id != idOf(test) ||
         blocks_.size() != last_.depth) {

@@ -33,6 +33,7 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
+    void addEvent(const Test* test, const ResultEvent& event) override;
 
 private:
     // A suite being written: its test points so far (unindented; indented when it closes).

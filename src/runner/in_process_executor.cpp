@@ -88,9 +88,9 @@ private:
 
 }  // namespace
 
-// Passes the test case's events on to the run's result as events of the stand-in, and keeps
-// the worst state they carried. The stand-in takes the test case's name at each event: a script
-// may name itself in setup, after startTest.
+// Passes the test case's events on to the run's result as events of the stand-in, whatever
+// their kind, and keeps the worst state they carried. The stand-in takes the test case's name at
+// each event: a script may name itself in setup, after startTest.
 class InProcessExecutor::Relay : public TestListener {
 public:
     void begin(TestResult& target, Test& self, double timeout) {
@@ -104,50 +104,22 @@ public:
     // The watchdog stopped the test: its interruption is reported as the timeout it is.
     void timedOut() { timedOut_ = true; }
 
-    void addReport(const Test* test, TestMessage msg) override {
-        target_->addReport(sync(test), msg);
-    }
-    void addError(const Test* test, TestMessage msg) override {
-        worsen(stateOf(ResultEvent::Kind::Error));
-        target_->addError(sync(test), msg);
-    }
-    void addFailure(const Test* test, TestMessage msg) override {
-        worsen(stateOf(ResultEvent::Kind::Failure));
-        target_->addFailure(sync(test), msg);
-    }
-    void startTest(const Test* test) override { target_->startTest(sync(test)); }
-    void endTest(const Test* test) override { target_->endTest(sync(test)); }
-    void addCheck(const Test* test, TestMessage msg, bool passed) override {
-        target_->addCheck(sync(test), msg, passed);
-    }
-    void addSkipped(const Test* test, TestMessage reason) override {
-        worsen(stateOf(ResultEvent::Kind::Skipped));
-        target_->addSkipped(sync(test), reason);
-    }
-    void addCrash(const Test* test, TestMessage msg) override {
-        worsen(stateOf(ResultEvent::Kind::Crash));
-        target_->addCrash(sync(test), msg);
-    }
-    void addTimeout(const Test* test, TestMessage msg) override {
-        worsen(stateOf(ResultEvent::Kind::Timeout));
-        target_->addTimeout(sync(test), msg);
-    }
-    void addInterrupted(const Test* test, TestMessage msg) override {
-        if (timedOut_) {
-            worsen(stateOf(ResultEvent::Kind::Timeout));
-            target_->addTimeout(
-                sync(test), TestMessage("timed out after " + seconds(timeout_), msg.getMessage()));
-            return;
+    void onEvent(const RunEvent& event) override {
+        using Kind = ResultEvent::Kind;
+        const Test* self = sync(event.test);
+        if (event.data.kind == Kind::Rename) {
+            return;  // sync() told the listeners already, as the stand-in's new name
         }
-        worsen(stateOf(ResultEvent::Kind::Interrupted));
-        target_->addInterrupted(sync(test), msg);
-    }
-    void addOutput(const Test* test, const std::string& text) override {
-        target_->addOutput(sync(test), text);
-    }
-    void renameTest(const Test* test, const std::string& /*name*/) override { sync(test); }
-    void startRepetition(const Test* test, unsigned int index, unsigned int count) override {
-        target_->startRepetition(sync(test), index, count);
+        RunEvent relayed = event;
+        relayed.test = self;
+        if (timedOut_ && event.data.kind == Kind::Interrupted) {
+            // The watchdog asked the test to stop: its interruption is the timeout it is.
+            relayed.data.kind = Kind::Timeout;
+            relayed.data.message = TestMessage("timed out after " + seconds(timeout_),
+                                               event.data.message.getMessage());
+        }
+        worsen(stateOf(relayed.data.kind));
+        target_->publish(relayed);
     }
 
 private:

@@ -10,6 +10,7 @@ namespace runner {
 namespace {
 
 using namespace reporters::colour;
+using Kind = ResultEvent::Kind;
 
 const char* const clearLine = "\r\033[K";
 
@@ -68,33 +69,26 @@ public:
             open_().erase(found);
         }
     }
-    void addFailure(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::Failed, "failure", msg);
-    }
-    void addError(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::Error, "error", msg);
-    }
-    void addCrash(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::Crashed, "crash", msg);
-    }
-    void addTimeout(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::TimedOut, "timeout", msg);
-    }
+    void addFailure(const Test* test, TestMessage msg) override { raise(Kind::Failure, test, msg); }
+    void addError(const Test* test, TestMessage msg) override { raise(Kind::Error, test, msg); }
+    void addCrash(const Test* test, TestMessage msg) override { raise(Kind::Crash, test, msg); }
+    void addTimeout(const Test* test, TestMessage msg) override { raise(Kind::Timeout, test, msg); }
     void addInterrupted(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::Interrupted, "interrupted", msg);
+        raise(Kind::Interrupted, test, msg);
     }
-    void addSkipped(const Test* test, TestMessage msg) override {
-        raise(test, TestStatus::Skipped, "skipped", msg);
-    }
+    void addSkipped(const Test* test, TestMessage msg) override { raise(Kind::Skipped, test, msg); }
     void addCheck(const Test* test, TestMessage msg, bool passed) override {
         if (!passed) {
-            raise(test, TestStatus::Passed, "check FAILED", msg);
+            raise(Kind::Check, test, msg, passed);
         }
     }
     void addReport(const Test* test, TestMessage msg) override {
         if (console_.settings_.verbose) {
-            raise(test, TestStatus::Passed, "report", msg);
+            raise(Kind::Report, test, msg);
         }
+    }
+    void addEvent(const Test* test, const ResultEvent& event) override {
+        raise(event.kind, test, event.message, event.passed);
     }
     void addOutput(const Test* test, const std::string& text) override {
         auto found = open_().find(test);
@@ -139,9 +133,13 @@ public:
 private:
     std::map<const Test*, Open>& open_() { return console_.open_; }
 
-    void raise(const Test* test, TestStatus status, const char* label, const TestMessage& msg) {
+    // A message of `kind`: its word and the state it gives come from the tables.
+    void raise(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
+               bool passed = true) {
+        const TestStatus status = stateOf(kind);
+        const std::string label = reporters::eventLabel(kind, passed);
         auto found = open_().find(test);
-        const std::string text = "      " + std::string(label) + ": " + reporters::messageText(msg);
+        const std::string text = "      " + label + ": " + reporters::messageText(msg);
         if (found == open_().end()) {
             // About the suite itself (a fixture that failed): said at once.
             console_.line("  " + suite_.getName() + ": " + label + ": " +
@@ -180,7 +178,7 @@ void ParallelConsole::events(const TestSuite& suite,
                              const std::vector<SuiteEvents::Event>& events) {
     Live live(*this, suite);
     for (const auto& event : events) {
-        event(live);
+        live.onEvent(event);
     }
 }
 

@@ -280,7 +280,7 @@ void Scheduler::collect(bool& changed) {
         }
         changed = true;
         for (const auto& event : taken) {
-            event(job.current);
+            job.current.onEvent(event);
         }
         if (settings_.view != nullptr) {
             settings_.view->events(plan_.suite(job.index), taken);

@@ -22,8 +22,9 @@ struct WebProgressListener::State {
         view.close();  // ends the event streams first, so stop() does not wait for them
         server.stop();
     }
-    void message(const Test* test, const char* kind, const TestMessage& msg, TestStatus status) {
-        view.addMessage(idOf(test), kind, msg, status);
+    // A message of `kind`: shown under its word, giving the test its state (the tables).
+    void said(ResultEvent::Kind kind, const Test* test, const TestMessage& msg) {
+        view.addMessage(idOf(test), toString(kind), msg, stateOf(kind));
     }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
 
@@ -71,38 +72,42 @@ std::string WebProgressListener::url() const {
 }
 
 void WebProgressListener::addReport(const Test* test, TestMessage msg) {
-    state_->message(test, "report", msg, TestStatus::Passed);
+    state_->said(ResultEvent::Kind::Report, test, msg);
 }
 
 void WebProgressListener::addError(const Test* test, TestMessage msg) {
-    state_->message(test, "error", msg, TestStatus::Error);
+    state_->said(ResultEvent::Kind::Error, test, msg);
 }
 
 void WebProgressListener::addFailure(const Test* test, TestMessage msg) {
-    state_->message(test, "failure", msg, TestStatus::Failed);
+    state_->said(ResultEvent::Kind::Failure, test, msg);
 }
 
 void WebProgressListener::addCheck(const Test* test, TestMessage msg, bool passed) {
     // Passing checks are many and say little; a failed one is shown with its failure.
     if (!passed) {
-        state_->message(test, "check failed", msg, TestStatus::Passed);
+        state_->view.addMessage(State::idOf(test), "check failed", msg, TestStatus::Passed);
     }
 }
 
 void WebProgressListener::addSkipped(const Test* test, TestMessage reason) {
-    state_->message(test, "skipped", reason, TestStatus::Skipped);
+    state_->said(ResultEvent::Kind::Skipped, test, reason);
 }
 
 void WebProgressListener::addCrash(const Test* test, TestMessage msg) {
-    state_->message(test, "crash", msg, TestStatus::Crashed);
+    state_->said(ResultEvent::Kind::Crash, test, msg);
 }
 
 void WebProgressListener::addTimeout(const Test* test, TestMessage msg) {
-    state_->message(test, "timeout", msg, TestStatus::TimedOut);
+    state_->said(ResultEvent::Kind::Timeout, test, msg);
 }
 
 void WebProgressListener::addInterrupted(const Test* test, TestMessage msg) {
-    state_->message(test, "interrupted", msg, TestStatus::Interrupted);
+    state_->said(ResultEvent::Kind::Interrupted, test, msg);
+}
+
+void WebProgressListener::addEvent(const Test* test, const ResultEvent& event) {
+    state_->said(event.kind, test, event.message);
 }
 
 void WebProgressListener::addOutput(const Test* test, const std::string& text) {

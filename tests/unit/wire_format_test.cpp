@@ -25,6 +25,8 @@ WireRecord sample() {
         TestMessage("joint 3 \xc3\xa9 in range", std::string("a\0b", 3), "arm.cpp", 42);
     record.flag = false;
     record.number = -1234567890123LL;
+    record.repetition = 7;
+    record.repetitions = 9;
     return record;
 }
 
@@ -38,6 +40,8 @@ void expectSame(const WireRecord& a, const WireRecord& b) {
     EXPECT_EQ(a.message.getSourceLineNumber(), b.message.getSourceLineNumber());
     EXPECT_EQ(a.flag, b.flag);
     EXPECT_EQ(a.number, b.number);
+    EXPECT_EQ(a.repetition, b.repetition);
+    EXPECT_EQ(a.repetitions, b.repetitions);
 }
 
 }  // namespace

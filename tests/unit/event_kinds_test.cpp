@@ -1,0 +1,158 @@
+// The event vocabulary: one table row per kind, and the one switch from an event to the named
+// handler RTF 2.x's listeners override.
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+#include <vector>
+
+#include <robottestingframework/TestCase.h>
+#include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestSuite.h>
+
+using namespace robottestingframework;
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+std::vector<Kind> everyKind() {
+    std::vector<Kind> kinds;
+    for (unsigned int k = 0; k <= static_cast<unsigned int>(ResultEvent::lastKind); ++k) {
+        kinds.push_back(static_cast<Kind>(k));
+    }
+    return kinds;
+}
+
+class Named : public TestCase {
+public:
+    explicit Named(const std::string& name) : TestCase(name) {}
+    void run() override {}
+};
+
+// Overrides every named handler, as a listener written against RTF 2.x (and the additions
+// since) does: each call is one line "handler message".
+class Named2x : public TestListener {
+public:
+    void addReport(const Test*, TestMessage m) override { said("addReport " + m.getMessage()); }
+    void addError(const Test*, TestMessage m) override { said("addError " + m.getMessage()); }
+    void addFailure(const Test*, TestMessage m) override { said("addFailure " + m.getMessage()); }
+    void startTest(const Test*) override { said("startTest"); }
+    void endTest(const Test*) override { said("endTest"); }
+    void startTestSuite(const Test*) override { said("startTestSuite"); }
+    void endTestSuite(const Test*) override { said("endTestSuite"); }
+    void startTestRunner() override { said("startTestRunner"); }
+    void endTestRunner() override { said("endTestRunner"); }
+    void addCheck(const Test*, TestMessage m, bool passed) override {
+        said(std::string("addCheck ") + (passed ? "ok " : "failed ") + m.getMessage());
+    }
+    void addSkipped(const Test*, TestMessage m) override { said("addSkipped " + m.getMessage()); }
+    void addCrash(const Test*, TestMessage m) override { said("addCrash " + m.getMessage()); }
+    void addTimeout(const Test*, TestMessage m) override { said("addTimeout " + m.getMessage()); }
+    void addInterrupted(const Test*, TestMessage m) override {
+        said("addInterrupted " + m.getMessage());
+    }
+    void addOutput(const Test*, const std::string& text) override { said("addOutput " + text); }
+    void renameTest(const Test*, const std::string& name) override { said("renameTest " + name); }
+    void retryTest(const Test*, TestMessage m) override { said("retryTest " + m.getMessage()); }
+    void startRepetition(const Test*, unsigned int index, unsigned int count) override {
+        said("startRepetition " + std::to_string(index) + "/" + std::to_string(count));
+    }
+    void addEvent(const Test*, const ResultEvent& event) override {
+        said(std::string("addEvent ") + toString(event.kind));
+    }
+    void said(const std::string& line) { lines.push_back(line); }
+    std::vector<std::string> lines;
+};
+
+// Knows only RTF 2.x's addReport.
+class Rtf2 : public TestListener {
+public:
+    void addReport(const Test*, TestMessage m) override { reports.push_back(m.getMessage()); }
+    std::vector<std::string> reports;
+};
+
+}  // namespace
+
+TEST(EventKinds, EveryKindHasAWordOfItsOwn) {
+    std::set<std::string> words;
+    for (Kind kind : everyKind()) {
+        const std::string word = toString(kind);
+        EXPECT_NE(word, "unknown");
+        EXPECT_TRUE(words.insert(word).second) << word;
+    }
+}
+
+TEST(EventKinds, TheFramesAreTheStartsAndEnds) {
+    std::vector<std::string> frames;
+    for (Kind kind : everyKind()) {
+        if (isFrame(kind)) {
+            frames.push_back(toString(kind));
+        }
+    }
+    EXPECT_EQ(frames, (std::vector<std::string>{"start-runner", "end-runner", "start-suite",
+                                                "end-suite", "start-test", "end-test"}));
+}
+
+TEST(EventKinds, EveryKindCallsExactlyOneNamedHandler) {
+    Named test("t");
+    TestSuite suite("s");
+    for (Kind kind : everyKind()) {
+        RunEvent event;
+        event.data.kind = kind;
+        event.test = &test;
+        event.suite = &suite;
+        Named2x listener;
+        listener.onEvent(event);
+        EXPECT_EQ(listener.lines.size(), 1u) << toString(kind);
+    }
+}
+
+TEST(EventKinds, TheNamedSendersReachTheNamedHandlersAsInRtf2) {
+    Named test("t");
+    TestSuite suite("s");
+    TestResult result;
+    Named2x listener;
+    result.addListener(&listener);
+    result.startTestRunner();
+    result.startTestSuite(&suite);
+    result.startTest(&test);
+    result.startRepetition(&test, 2, 3);
+    result.addReport(&test, TestMessage("r"));
+    result.addCheck(&test, TestMessage("c"), false);
+    result.addFailure(&test, TestMessage("f"));
+    result.addError(&test, TestMessage("e"));
+    result.addSkipped(&test, TestMessage("s"));
+    result.addCrash(&test, TestMessage("c"));
+    result.addTimeout(&test, TestMessage("t"));
+    result.addInterrupted(&test, TestMessage("i"));
+    result.addOutput(&test, "o");
+    result.renameTest(&test, "n");
+    result.endTest(&test);
+    result.retryTest(&test, TestMessage("again"));
+    result.endTestSuite(&suite);
+    result.endTestRunner();
+    EXPECT_EQ(listener.lines,
+              (std::vector<std::string>{
+                  "startTestRunner", "startTestSuite", "startTest", "startRepetition 2/3",
+                  "addReport r", "addCheck failed c", "addFailure f", "addError e", "addSkipped s",
+                  "addCrash c", "addTimeout t", "addInterrupted i", "addOutput o", "renameTest n",
+                  "endTest", "retryTest again", "endTestSuite", "endTestRunner"}));
+}
+
+TEST(EventKinds, ARepetitionIsAReportForAListenerThatDoesNotKnowIt) {
+    Named test("t");
+    TestResult result;
+    Rtf2 listener;
+    result.addListener(&listener);
+    result.startRepetition(&test, 1, 2);
+    EXPECT_EQ(listener.reports, (std::vector<std::string>{"repetition 1/2"}));
+}
+
+TEST(EventKinds, StateOfComesFromTheTable) {
+    EXPECT_EQ(stateOf(Kind::Failure), TestStatus::Failed);
+    EXPECT_EQ(stateOf(Kind::Crash), TestStatus::Crashed);
+    EXPECT_EQ(stateOf(Kind::Report), TestStatus::Passed);
+    EXPECT_EQ(stateOf(Kind::Retry), TestStatus::Passed);
+    EXPECT_EQ(stateOf(Kind::Probe), TestStatus::Failed);
+}
