@@ -459,6 +459,7 @@ int main(int argc, char** argv) {
         console.hideUncriticalMessages();
     }
     TestResultCollector collector;
+    collector.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
     // The outputs read the per-test records only, and show checks only when verbose.
     collector.setKeepEventLog(false);
     collector.setKeepChecks(options.verbose);
