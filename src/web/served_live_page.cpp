@@ -1,164 +1,165 @@
-#include <robottestingframework/WebProgressListener.h>
-
+// RTF_web's live page: a RunView filled by the run's events and served by a WebServer.
 #include <cstdint>
-#include <cstdio>
 #include <vector>
 
 #include <robottestingframework/TestSuite.h>
 
+#include "live_page.h"
 #include "run_view.h"
 #include "web_server.h"
 
 namespace robottestingframework {
+namespace web {
+
+namespace {
 
 // The view is filled by the run's events and read by the server; tests are found by the ids
 // the events carry.
-struct WebProgressListener::State {
-    State(const std::string& host, unsigned int port, bool verbose)
-        : view(verbose), server(view), host(host) {
-        listening = server.start(host, port, error);
+class ServedLivePage : public LivePage {
+public:
+    ServedLivePage(const std::string& host, unsigned int port, bool verbose)
+        : view(verbose), server(view) {
+        listening = server.start(host, port, failure);
     }
-    ~State() {
+    ~ServedLivePage() override {
         view.close();  // ends the event streams first, so stop() does not wait for them
         server.stop();
     }
+
+    bool isListening() const override { return listening; }
+    std::string error() const override { return failure; }
+    unsigned int port() const override { return listening ? server.port() : 0; }
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void renameTest(const Test* test, const std::string& name) override;
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTestSuite(const Test* suite) override;
+    void endTestSuite(const Test* suite) override;
+    void startTestRunner() override;
+    void endTestRunner() override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+    void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
+
+private:
     void message(const Test* test, const char* kind, const TestMessage& msg, TestStatus status) {
         view.addMessage(idOf(test), kind, msg, status);
     }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
 
-    web::RunView view;
-    web::WebServer server;
-    std::string host;
-    std::string error;
+    RunView view;
+    WebServer server;
+    std::string failure;
     bool listening = false;
 };
 
-WebProgressListener::WebProgressListener(unsigned int port, bool verbose)
-    : WebProgressListener("127.0.0.1", port, verbose) {
-    // RTF 2.x's programs do not ask isListening(): say it rather than serve nothing silently.
-    if (!state_->listening) {
-        std::fprintf(stderr, "WebProgressListener: %s\n", state_->error.c_str());
-    }
+}  // namespace
+
+void ServedLivePage::addReport(const Test* test, TestMessage msg) {
+    message(test, "report", msg, TestStatus::Passed);
 }
 
-WebProgressListener::WebProgressListener(const std::string& host, unsigned int port, bool verbose)
-    : state_(new State(host, port, verbose)) {}
-
-WebProgressListener::~WebProgressListener() = default;
-
-bool WebProgressListener::isListening() const {
-    return state_->listening;
+void ServedLivePage::addError(const Test* test, TestMessage msg) {
+    message(test, "error", msg, TestStatus::Error);
 }
 
-std::string WebProgressListener::error() const {
-    return state_->error;
+void ServedLivePage::addFailure(const Test* test, TestMessage msg) {
+    message(test, "failure", msg, TestStatus::Failed);
 }
 
-unsigned int WebProgressListener::port() const {
-    return state_->listening ? state_->server.port() : 0;
-}
-
-std::string WebProgressListener::url() const {
-    const std::string& host = state_->host;
-    std::string shown = host;
-    if (host == "0.0.0.0" || host == "::") {
-        shown = "127.0.0.1";  // every address: this machine's is one of them
-    } else if (host.find(':') != std::string::npos) {
-        shown = "[" + host + "]";
-    }
-    return "http://" + shown + ":" + std::to_string(port()) + "/";
-}
-
-void WebProgressListener::addReport(const Test* test, TestMessage msg) {
-    state_->message(test, "report", msg, TestStatus::Passed);
-}
-
-void WebProgressListener::addError(const Test* test, TestMessage msg) {
-    state_->message(test, "error", msg, TestStatus::Error);
-}
-
-void WebProgressListener::addFailure(const Test* test, TestMessage msg) {
-    state_->message(test, "failure", msg, TestStatus::Failed);
-}
-
-void WebProgressListener::addCheck(const Test* test, TestMessage msg, bool passed) {
+void ServedLivePage::addCheck(const Test* test, TestMessage msg, bool passed) {
     // Passing checks are many and say little; a failed one is shown with its failure.
     if (!passed) {
-        state_->message(test, "check failed", msg, TestStatus::Passed);
+        message(test, "check failed", msg, TestStatus::Passed);
     }
 }
 
-void WebProgressListener::addSkipped(const Test* test, TestMessage reason) {
-    state_->message(test, "skipped", reason, TestStatus::Skipped);
+void ServedLivePage::addSkipped(const Test* test, TestMessage reason) {
+    message(test, "skipped", reason, TestStatus::Skipped);
 }
 
-void WebProgressListener::addCrash(const Test* test, TestMessage msg) {
-    state_->message(test, "crash", msg, TestStatus::Crashed);
+void ServedLivePage::addCrash(const Test* test, TestMessage msg) {
+    message(test, "crash", msg, TestStatus::Crashed);
 }
 
-void WebProgressListener::addTimeout(const Test* test, TestMessage msg) {
-    state_->message(test, "timeout", msg, TestStatus::TimedOut);
+void ServedLivePage::addTimeout(const Test* test, TestMessage msg) {
+    message(test, "timeout", msg, TestStatus::TimedOut);
 }
 
-void WebProgressListener::addInterrupted(const Test* test, TestMessage msg) {
-    state_->message(test, "interrupted", msg, TestStatus::Interrupted);
+void ServedLivePage::addInterrupted(const Test* test, TestMessage msg) {
+    message(test, "interrupted", msg, TestStatus::Interrupted);
 }
 
-void WebProgressListener::addOutput(const Test* test, const std::string& text) {
-    state_->view.addOutput(State::idOf(test), text);
+void ServedLivePage::addOutput(const Test* test, const std::string& text) {
+    view.addOutput(idOf(test), text);
 }
 
-void WebProgressListener::retryTest(const Test* test, TestMessage /*msg*/) {
-    state_->view.retryTest(State::idOf(test));
+void ServedLivePage::retryTest(const Test* test, TestMessage /*msg*/) {
+    view.retryTest(idOf(test));
 }
 
-void WebProgressListener::startRepetition(const Test* test, unsigned int index,
-                                          unsigned int count) {
-    state_->view.startRepetition(State::idOf(test), index, count);
+void ServedLivePage::startRepetition(const Test* test, unsigned int index, unsigned int count) {
+    view.startRepetition(idOf(test), index, count);
 }
 
-void WebProgressListener::startTest(const Test* test) {
-    state_->view.startTest(State::idOf(test), test != nullptr ? test->getName() : std::string());
+void ServedLivePage::startTest(const Test* test) {
+    view.startTest(idOf(test), test != nullptr ? test->getName() : std::string());
 }
 
-void WebProgressListener::endTest(const Test* test) {
-    state_->view.endTest(State::idOf(test));
+void ServedLivePage::endTest(const Test* test) {
+    view.endTest(idOf(test));
 }
 
-void WebProgressListener::renameTest(const Test* test, const std::string& name) {
-    state_->view.renameTest(State::idOf(test), name);
+void ServedLivePage::renameTest(const Test* test, const std::string& name) {
+    view.renameTest(idOf(test), name);
 }
 
-void WebProgressListener::startTestSuite(const TestSuite* suite) {
-    std::vector<web::RunView::Planned> tests;
+void ServedLivePage::startTestSuite(const TestSuite* suite) {
+    std::vector<RunView::Planned> tests;
     if (suite != nullptr) {
         for (const Test* test : suite->tests()) {
             tests.push_back({test->getId(), test->getName()});
         }
     }
-    state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
+    view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
 }
 
-void WebProgressListener::endTestSuite(const TestSuite* suite) {
+void ServedLivePage::endTestSuite(const TestSuite* suite) {
     endTestSuite(static_cast<const Test*>(suite));
 }
 
-void WebProgressListener::startTestSuite(const Test* suite) {
+void ServedLivePage::startTestSuite(const Test* suite) {
     // A suite known only as a Test: its tests are learnt as they start.
-    state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
+    view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
 }
 
-void WebProgressListener::endTestSuite(const Test* /*suite*/) {
-    state_->view.endSuite();
+void ServedLivePage::endTestSuite(const Test* /*suite*/) {
+    view.endSuite();
 }
 
-void WebProgressListener::startTestRunner() {
-    state_->view.startRun();
+void ServedLivePage::startTestRunner() {
+    view.startRun();
 }
 
-void WebProgressListener::endTestRunner() {
-    state_->view.endRun();
+void ServedLivePage::endTestRunner() {
+    view.endRun();
 }
 
+}  // namespace web
 }  // namespace robottestingframework
+
+// Found by name (live_page.h) by RTF's WebProgressListener.
+extern "C" __attribute__((visibility("default"))) robottestingframework::web::LivePage*
+robottestingframework_web_open_live_page(const char* host, unsigned int port, bool verbose) {
+    return new robottestingframework::web::ServedLivePage(host, port, verbose);
+}
