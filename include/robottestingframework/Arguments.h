@@ -14,16 +14,23 @@ public:
     static int split(char* line, char** args, int maxArgs = 64);
     // The same on a copy: words of `line`, quotes removed.
     static std::vector<std::string> split(const std::string& line);
-    // Value of `--name value` (or `--name=value`) in argv; false when absent.
+    // RTF 2.x's form: splits `azParam` in place into `argv` (at most 63 words, then a
+    // nullptr: `argv` needs 64 slots unless the line has fewer words) and sets `*argc`.
+    // argv[0] is the first word: this is how a fixture's param reaches its setup().
+    static void parse(char* azParam, int* argc, char** argv);
+    // Value of `--name value` (or `--name=value`) in argv; false when absent. argv[0] is
+    // searched too: a fixture's argv starts with the first word of its param.
     static bool getOption(int argc, char** argv, const char* option, std::string& value);
-    // True when `--name` is present in argv.
+    // True when `--name` is present in argv (argv[0] included).
     static bool hasOption(int argc, char** argv, const char* option);
 };
 
-// Owns the argv built from a name and a param string: argv[0] is the name.
+// Owns the argv built from a param string: a test's has its name in argv[0], then the param's
+// words; a fixture's (RTF 2.x's layout) has the param's words only, the first in argv[0].
 class ArgumentVector {
 public:
     ArgumentVector(const std::string& name, const std::string& param);
+    explicit ArgumentVector(const std::string& param);
     ArgumentVector(const ArgumentVector&) = delete;  // argv points into words_
     ArgumentVector& operator=(const ArgumentVector&) = delete;
     int argc() const { return static_cast<int>(words_.size()); }

@@ -16,9 +16,13 @@ class TestResult;
 class FixtureManager {
 public:
     explicit FixtureManager(FixtureEvents* dispatcher = nullptr, std::string param = "");
+    explicit FixtureManager(std::string param);
     virtual ~FixtureManager();
 
-    // argv[0] is the fixture's name; the rest is the param string split like a shell would.
+    // What a suite calls: splits the param like a shell would and calls setup(argc, argv).
+    bool setup();
+    // RTF 2.x's layout: argv holds the param's words only, the first one in argv[0] (a
+    // param "--robot icubSim" gives argc 2, argv[0] "--robot"); an empty param gives argc 0.
     virtual bool setup(int argc, char** argv);
     // Called before every test of the suite; false collapses the fixture.
     virtual bool check() { return true; }

@@ -70,6 +70,9 @@ public:
     ~TestResultCollector() override;
 
     // Counts of tests (not suites). failedCount() counts every state that fails a run.
+    // As in RTF 2.x, the tests of a suite whose fixture failed (set up or collapsed) are not
+    // run and not counted; their records are kept (skipped, with the fixture's reason). See
+    // setCountTestsNotRun.
     std::size_t testCount() const;
     std::size_t passedCount() const;
     std::size_t failedCount() const;
@@ -97,6 +100,9 @@ public:
     void setKeepEventLog(bool keep) { keepLog_ = keep; }
     // Keeps check events in the records only when true (the outputs show them only verbose).
     void setKeepChecks(bool keep) { keepChecks_ = keep; }
+    // Beyond RTF 2.x: true counts the tests a failed fixture kept from running as skipped
+    // tests too (the runner's reports and console do: they list them).
+    void setCountTestsNotRun(bool count) { countNotRun_ = count; }
     // Keeps at most `bytes` of what the tests printed over the whole run (0: no limit, the
     // default): once that is spent, each test that ends keeps the last 4 KiB of its output
     // only, saying so. Bounds the runner's memory on runs of many talkative tests.
@@ -152,6 +158,7 @@ private:
     bool keepEvents_ = true;
     bool keepLog_ = true;
     bool keepChecks_ = true;
+    bool countNotRun_ = false;
     std::size_t outputBudget_ = 0;
     std::size_t outputKept_ = 0;  // bytes of test output the records hold
     std::vector<ResultEvent> events_;

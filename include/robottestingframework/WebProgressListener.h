@@ -2,7 +2,9 @@
 // The page shows every suite and test as it happens (state, duration, messages) and updates
 // itself; it is served from construction until destruction, so also after run() returns.
 //
-// Link RobotTestingFramework::RTF_web. Each listener has its own server: several listeners on
+// Part of RobotTestingFramework::RTF, as in RTF 2.x. The server is in the RTF_web library
+// (cpp-httplib), which the first listener loads from beside the RTF library: programs that
+// never make a listener do not load it. Each listener has its own server: several listeners on
 // different ports work side by side.
 //
 // Endpoints: "/" (the page), "/snapshot" (the whole run as JSON), "/events" (Server-Sent Events,
@@ -30,7 +32,8 @@ public:
     WebProgressListener(const WebProgressListener&) = delete;
     WebProgressListener& operator=(const WebProgressListener&) = delete;
 
-    // False when the server could not start (the port is in use, ...); error() says why.
+    // False when the server could not start (the port is in use, RTF_web cannot be loaded,
+    // ...); error() says why.
     bool isListening() const;
     std::string error() const;
     // The port served (the one picked when 0 was asked), 0 when not listening.
@@ -59,6 +62,9 @@ public:
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
+    // Every event of a run reaches the page as the record, whatever its kind (the named
+    // handlers above serve programs that call them directly).
+    void onEvent(const RunEvent& event) override;
 
 private:
     struct State;

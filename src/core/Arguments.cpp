@@ -104,6 +104,13 @@ int Arguments::split(char* line, char** args, int maxArgs) {
     return count;
 }
 
+void Arguments::parse(char* azParam, int* argc, char** argv) {
+    const int count = split(azParam, argv);
+    if (argc != nullptr) {
+        *argc = count;
+    }
+}
+
 std::vector<std::string> Arguments::split(const std::string& line) {
     return splitWords(line.c_str());
 }
@@ -114,7 +121,7 @@ bool Arguments::getOption(int argc, char** argv, const char* option, std::string
     }
     const std::string name = optionName(option);
     const std::string prefix = name + "=";
-    for (int i = 1; i < argc; ++i) {
+    for (int i = 0; i < argc; ++i) {
         if (argv[i] == nullptr) {
             break;
         }
@@ -136,7 +143,7 @@ bool Arguments::hasOption(int argc, char** argv, const char* option) {
     }
     const std::string name = optionName(option);
     const std::string prefix = name + "=";
-    for (int i = 1; i < argc; ++i) {
+    for (int i = 0; i < argc; ++i) {
         if (argv[i] == nullptr) {
             break;
         }
@@ -147,11 +154,18 @@ bool Arguments::hasOption(int argc, char** argv, const char* option) {
     return false;
 }
 
-ArgumentVector::ArgumentVector(const std::string& name, const std::string& param) {
-    words_.push_back(name);
-    for (std::string& word : Arguments::split(param)) {
-        words_.push_back(std::move(word));
+ArgumentVector::ArgumentVector(const std::string& name, const std::string& param)
+    : ArgumentVector(param) {
+    words_.insert(words_.begin(), name);
+    pointers_.clear();
+    pointers_.reserve(words_.size() + 1);
+    for (std::string& word : words_) {
+        pointers_.push_back(&word[0]);
     }
+    pointers_.push_back(nullptr);
+}
+
+ArgumentVector::ArgumentVector(const std::string& param) : words_(Arguments::split(param)) {
     pointers_.reserve(words_.size() + 1);
     for (std::string& word : words_) {
         pointers_.push_back(&word[0]);

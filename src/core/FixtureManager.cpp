@@ -1,5 +1,7 @@
 #include <robottestingframework/FixtureManager.h>
 
+#include <robottestingframework/Arguments.h>
+
 #include <utility>
 
 namespace robottestingframework {
@@ -7,7 +9,14 @@ namespace robottestingframework {
 FixtureManager::FixtureManager(FixtureEvents* dispatcher, std::string param)
     : dispatcher_(dispatcher), param_(std::move(param)) {}
 
+FixtureManager::FixtureManager(std::string param) : FixtureManager(nullptr, std::move(param)) {}
+
 FixtureManager::~FixtureManager() = default;
+
+bool FixtureManager::setup() {
+    ArgumentVector args(param_);
+    return setup(args.argc(), args.argv());
+}
 
 bool FixtureManager::setup(int /*argc*/, char** /*argv*/) {
     return true;

@@ -330,7 +330,12 @@ void TestResultCollector::endTest(const Test* test) {
             record.status = TestStatus::Flaky;
         }
         keepWithinBudget(record.output);
-        ++counts_[static_cast<std::size_t>(record.status)];
+        // Skipped because its suite's fixture had failed before it: RTF 2.x did not count it.
+        const bool notRun =
+            record.status == TestStatus::Skipped && suites_[open.suite].fixtureFailed;
+        if (!notRun || countNotRun_) {
+            ++counts_[static_cast<std::size_t>(record.status)];
+        }
         if (isFailure(record.status)) {
             for (OpenSuite& suite : openSuites_) {
                 if (suite.index == open.suite) {

@@ -5,7 +5,6 @@
 #include <mutex>
 #include <string>
 
-#include <robottestingframework/Arguments.h>
 #include <robottestingframework/FixtureManager.h>
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResult.h>
@@ -82,6 +81,10 @@ void TestSuite::reset() {
 
 void TestSuite::addFixtureManager(FixtureManager* manager) {
     if (manager != nullptr) {
+        // At once, as RTF 2.x did: a fixture may report a collapse before the suite runs.
+        if (manager->getDispatcher() == nullptr) {
+            manager->setDispatcher(this);
+        }
         fixtures_.push_back(manager);
     }
 }
@@ -129,12 +132,10 @@ bool TestSuite::setupFixtures(TestResult& result) {
         if (fixture->getDispatcher() == nullptr) {
             fixture->setDispatcher(this);
         }
-        ArgumentVector args(fixture->getName(), fixture->getParam());
         bool up = false;
         std::string why;
         LastReport said(result, this);
-        if (guardedFixtureCall([&] { up = fixture->setup(args.argc(), args.argv()); }, why) &&
-            !up) {
+        if (guardedFixtureCall([&] { up = fixture->setup(); }, why) && !up) {
             why = "setup returned false";
             if (!said.text().empty()) {
                 why += " after reporting: " + said.text();

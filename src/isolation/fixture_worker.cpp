@@ -108,16 +108,15 @@ int runFixtureWorker(const WorkRequest& request, int channel) {
         }
         try {
             if (call.name == "setup") {
-                // The argv the suite built, one word per '\0'-separated field.
+                // The argv the suite built, each word ended by a '\0'.
                 std::vector<std::string> words;
-                std::string joined = call.message.getMessage();
-                std::size_t start = 0;
-                while (start <= joined.size() && !joined.empty()) {
+                const std::string joined = call.message.getMessage();
+                for (std::size_t start = 0; start < joined.size();) {
                     std::size_t end = joined.find('\0', start);
-                    words.push_back(joined.substr(start, end - start));
                     if (end == std::string::npos) {
-                        break;
+                        end = joined.size();
                     }
+                    words.push_back(joined.substr(start, end - start));
                     start = end + 1;
                 }
                 std::vector<char*> argv;

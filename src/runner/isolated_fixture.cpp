@@ -235,15 +235,11 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
 }
 
 bool IsolatedFixture::setup(int argc, char** argv) {
+    // Each word ends with '\0': no word is no byte, an empty word is one.
     std::string payload;
     for (int i = 0; i < argc; ++i) {
-        if (i > 0) {
-            payload.push_back('\0');
-        }
         payload += argv[i];
-    }
-    if (argc == 0) {
-        payload = getName();
+        payload.push_back('\0');
     }
     return call("setup", payload);
 }

@@ -4,11 +4,11 @@
 #include "reporter_registry.h"
 #include "variables.h"
 
-#include <cstring>
-
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <thread>
 
 namespace robottestingframework {
@@ -46,10 +46,43 @@ std::string checkOutputType(const std::string& type) {
     return "unknown output type '" + type + "' (expected " + reporters::reporterTypeList() + ")";
 }
 
-// A param or an environment is free text that often starts with "--" ("--robot icubSim"): glue
-// it to its option so the parser never mistakes it for an option of the runner.
-std::vector<std::string> glueFreeTextValues(int argc, const char* const* argv) {
+// How each value of the command line reaches CLI11. A param or an environment is free text
+// that often starts with "--" ("--robot icubSim"): it is glued to its option so the parser
+// never mistakes it for an option of the runner. RTF 2.x's CMake helper writes
+// `-p ${PARAM} -e "${ENV}"`: an empty PARAM vanishes and `-p` is followed by `-e`, which RTF
+// 2.0.1 reads as an empty param; so a free-text option followed by an option of the runner
+// takes the empty string. An empty value of any other option is an error naming it (an empty
+// FILE, N or MODE is never valid), where CLI11 would drop it silently.
+const char* const emptyStandIn = "\x1e(empty)\x1e";  // a record separator: typed by no one
+
+struct PreparedArgs {
     std::vector<std::string> args;
+    std::string error;  // a usage error found on the way
+};
+
+PreparedArgs prepareArgs(const CLI::App& app, int argc, const char* const* argv) {
+    std::map<std::string, const CLI::Option*> valueOptions;  // "-p", "--param" -> its option
+    std::set<std::string> runnerOptions;                     // every option word of the runner
+    for (const CLI::Option* option : app.get_options()) {
+        for (const std::string& name : option->get_snames()) {
+            runnerOptions.insert("-" + name);
+            if (option->get_items_expected_min() > 0) {  // not a flag
+                valueOptions["-" + name] = option;
+            }
+        }
+        for (const std::string& name : option->get_lnames()) {
+            runnerOptions.insert("--" + name);
+            if (option->get_items_expected_min() > 0) {  // not a flag
+                valueOptions["--" + name] = option;
+            }
+        }
+    }
+    auto isRunnerOption = [&runnerOptions](const std::string& word) {
+        return runnerOptions.count(word.substr(0, word.find('='))) > 0;
+    };
+
+    PreparedArgs prepared;
+    std::vector<std::string>& args = prepared.args;
     for (int i = 1; i < argc; ++i) {
         std::string arg = argv[i];
         if (arg == "--") {
@@ -59,15 +92,50 @@ std::vector<std::string> glueFreeTextValues(int argc, const char* const* argv) {
             }
             break;
         }
-        if ((arg == "-p" || arg == "--param") && i + 1 < argc) {
-            args.push_back("--param=" + std::string(argv[++i]));
-        } else if ((arg == "-e" || arg == "--environment") && i + 1 < argc) {
-            args.push_back("--environment=" + std::string(argv[++i]));
+        // "--name=value" is read as "--name value".
+        std::string name = arg;
+        bool glued = false;
+        std::string value;
+        const std::size_t equals = arg.find('=');
+        if (arg.rfind("--", 0) == 0 && equals != std::string::npos) {
+            name = arg.substr(0, equals);
+            value = arg.substr(equals + 1);
+            glued = true;
+        }
+        const auto found = valueOptions.find(name);
+        if (found == valueOptions.end()) {
+            args.push_back(arg);
+            continue;
+        }
+        const CLI::Option* option = found->second;
+        const std::string longName = option->get_lnames().empty()
+                                         ? "-" + option->get_snames().front()
+                                         : "--" + option->get_lnames().front();
+        const bool freeText = longName == "--param" || longName == "--environment";
+        if (!glued) {
+            if (i + 1 >= argc) {
+                args.push_back(arg);  // CLI11 names the option whose value is missing
+                continue;
+            }
+            if (!freeText || !isRunnerOption(argv[i + 1])) {
+                value = argv[++i];
+            }  // else `-p -e ...`: an empty param
+        }
+        if (value.empty() && !freeText) {
+            prepared.error = longName + ": the value is empty; expected " + option->get_type_name();
+            return prepared;
+        }
+        if (freeText) {
+            // CLI11 takes an empty value for the positional reports: a stand-in goes instead.
+            args.push_back(longName + "=" + (value.empty() ? emptyStandIn : value));
         } else {
             args.push_back(arg);
+            if (!glued) {
+                args.push_back(value);
+            }
         }
     }
-    return args;
+    return prepared;
 }
 
 }  // namespace
@@ -262,7 +330,11 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         return result;
     };
 
-    std::vector<std::string> args = glueFreeTextValues(argc, argv);
+    PreparedArgs prepared = prepareArgs(app, argc, argv);
+    if (!prepared.error.empty()) {
+        return usageError(prepared.error);
+    }
+    std::vector<std::string>& args = prepared.args;
     std::reverse(args.begin(), args.end());  // CLI11 takes them last first
     try {
         app.parse(args);
@@ -275,25 +347,17 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         return usageError(e.what());
     }
 
+    for (std::string* text : {&options.param, &options.environment}) {
+        if (*text == emptyStandIn) {
+            text->clear();
+        }
+    }
+
     if (version) {
         result.outcome = ParseResult::Outcome::Exit;
         result.status = 0;
         result.text = std::string(program) + " " + RTF_VERSION + "\n";
         return result;
-    }
-
-    // An empty name would be looked up as the current folder, or as nothing at all.
-    for (const auto& named :
-         {std::make_pair("--test", &options.tests), std::make_pair("--tests", &options.testDirs),
-          std::make_pair("--suite", &options.suites),
-          std::make_pair("--suites", &options.suiteDirs)}) {
-        for (const auto& name : *named.second) {
-            if (name.empty()) {
-                return usageError(
-                    std::string(named.first) + ": an empty name; expected a " +
-                    (named.first[std::strlen(named.first) - 1] == 's' ? "folder" : "file"));
-            }
-        }
     }
 
     options.isolation = isolation == "none" ? Isolation::None : Isolation::Process;

@@ -62,6 +62,7 @@ RunListeners::RunListeners(const Options& options,
         console_.hideUncriticalMessages();
     }
     // The outputs read the per-test records only, and show checks only when verbose.
+    collector_.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
     collector_.setKeepEventLog(false);
     collector_.setKeepChecks(options.verbose);
     ParallelConsoleSettings parallelSettings;

@@ -1,63 +1,49 @@
+// Part of RTF, as in RTF 2.x: linking RTF is enough to show a run's live page. The page itself
+// is RTF_web's (live_page.h), loaded on the first construction, so that the programs linking
+// RTF that never show one (the runner without --web-reporter) do not load its libraries.
 #include <robottestingframework/WebProgressListener.h>
 
-#include <cstdint>
 #include <cstdio>
-#include <vector>
 
-#include <robottestingframework/TestSuite.h>
-
-#include "run_view.h"
-#include "web_server.h"
+#include "live_page.h"
+#include "live_page_library.h"
 
 namespace robottestingframework {
 
-// The view is filled by the run's events and read by the server; tests are found by the ids
-// the events carry.
 struct WebProgressListener::State {
-    State(const std::string& host, unsigned int port, bool verbose)
-        : view(verbose), server(view), host(host) {
-        listening = server.start(host, port, error);
-    }
-    ~State() {
-        view.close();  // ends the event streams first, so stop() does not wait for them
-        server.stop();
-    }
-    // A message of `kind`: shown under its word, giving the test its state (the tables).
-    void said(ResultEvent::Kind kind, const Test* test, const TestMessage& msg) {
-        view.addMessage(idOf(test), toString(kind), msg, stateOf(kind));
-    }
-    static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
-
-    web::RunView view;
-    web::WebServer server;
+    std::unique_ptr<web::LivePage> page;  // null when RTF_web could not be loaded
     std::string host;
-    std::string error;
-    bool listening = false;
+    std::string loadError;
 };
 
 WebProgressListener::WebProgressListener(unsigned int port, bool verbose)
     : WebProgressListener("127.0.0.1", port, verbose) {
     // RTF 2.x's programs do not ask isListening(): say it rather than serve nothing silently.
-    if (!state_->listening) {
-        std::fprintf(stderr, "WebProgressListener: %s\n", state_->error.c_str());
+    if (!isListening()) {
+        std::fprintf(stderr, "WebProgressListener: %s\n", error().c_str());
     }
 }
 
 WebProgressListener::WebProgressListener(const std::string& host, unsigned int port, bool verbose)
-    : state_(new State(host, port, verbose)) {}
+    : state_(new State) {
+    state_->host = host;
+    if (web::OpenLivePage open = web::loadLivePageLibrary(state_->loadError)) {
+        state_->page.reset(open(host.c_str(), port, verbose));
+    }
+}
 
 WebProgressListener::~WebProgressListener() = default;
 
 bool WebProgressListener::isListening() const {
-    return state_->listening;
+    return state_->page != nullptr && state_->page->isListening();
 }
 
 std::string WebProgressListener::error() const {
-    return state_->error;
+    return state_->page != nullptr ? state_->page->error() : state_->loadError;
 }
 
 unsigned int WebProgressListener::port() const {
-    return state_->listening ? state_->server.port() : 0;
+    return isListening() ? state_->page->port() : 0;
 }
 
 std::string WebProgressListener::url() const {
@@ -71,99 +57,83 @@ std::string WebProgressListener::url() const {
     return "http://" + shown + ":" + std::to_string(port()) + "/";
 }
 
+// Every event goes to the page, when there is one.
+#define RTF_TO_PAGE(call)              \
+    do {                               \
+        if (state_->page != nullptr) { \
+            state_->page->call;        \
+        }                              \
+    } while (false)
+
 void WebProgressListener::addReport(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Report, test, msg);
+    RTF_TO_PAGE(addReport(test, msg));
 }
-
 void WebProgressListener::addError(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Error, test, msg);
+    RTF_TO_PAGE(addError(test, msg));
 }
-
 void WebProgressListener::addFailure(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Failure, test, msg);
+    RTF_TO_PAGE(addFailure(test, msg));
 }
-
+void WebProgressListener::startTest(const Test* test) {
+    RTF_TO_PAGE(startTest(test));
+}
+void WebProgressListener::endTest(const Test* test) {
+    RTF_TO_PAGE(endTest(test));
+}
+void WebProgressListener::renameTest(const Test* test, const std::string& name) {
+    RTF_TO_PAGE(renameTest(test, name));
+}
+void WebProgressListener::startTestSuite(const TestSuite* suite) {
+    RTF_TO_PAGE(startTestSuite(suite));
+}
+void WebProgressListener::endTestSuite(const TestSuite* suite) {
+    RTF_TO_PAGE(endTestSuite(suite));
+}
+void WebProgressListener::startTestSuite(const Test* suite) {
+    RTF_TO_PAGE(startTestSuite(suite));
+}
+void WebProgressListener::endTestSuite(const Test* suite) {
+    RTF_TO_PAGE(endTestSuite(suite));
+}
+void WebProgressListener::startTestRunner() {
+    RTF_TO_PAGE(startTestRunner());
+}
+void WebProgressListener::endTestRunner() {
+    RTF_TO_PAGE(endTestRunner());
+}
 void WebProgressListener::addCheck(const Test* test, TestMessage msg, bool passed) {
-    // Passing checks are many and say little; a failed one is shown with its failure.
-    if (!passed) {
-        state_->view.addMessage(State::idOf(test), "check failed", msg, TestStatus::Passed);
-    }
+    RTF_TO_PAGE(addCheck(test, msg, passed));
 }
-
 void WebProgressListener::addSkipped(const Test* test, TestMessage reason) {
-    state_->said(ResultEvent::Kind::Skipped, test, reason);
+    RTF_TO_PAGE(addSkipped(test, reason));
 }
-
 void WebProgressListener::addCrash(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Crash, test, msg);
+    RTF_TO_PAGE(addCrash(test, msg));
 }
-
 void WebProgressListener::addTimeout(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Timeout, test, msg);
+    RTF_TO_PAGE(addTimeout(test, msg));
 }
-
 void WebProgressListener::addInterrupted(const Test* test, TestMessage msg) {
-    state_->said(ResultEvent::Kind::Interrupted, test, msg);
+    RTF_TO_PAGE(addInterrupted(test, msg));
+}
+void WebProgressListener::addOutput(const Test* test, const std::string& text) {
+    RTF_TO_PAGE(addOutput(test, text));
+}
+void WebProgressListener::retryTest(const Test* test, TestMessage msg) {
+    RTF_TO_PAGE(retryTest(test, msg));
+}
+void WebProgressListener::startRepetition(const Test* test, unsigned int index,
+                                          unsigned int count) {
+    RTF_TO_PAGE(startRepetition(test, index, count));
 }
 
 void WebProgressListener::addEvent(const Test* test, const ResultEvent& event) {
-    state_->said(event.kind, test, event.message);
+    RTF_TO_PAGE(addEvent(test, event));
+}
+void WebProgressListener::onEvent(const RunEvent& event) {
+    RTF_TO_PAGE(onEvent(event));
 }
 
-void WebProgressListener::addOutput(const Test* test, const std::string& text) {
-    state_->view.addOutput(State::idOf(test), text);
-}
-
-void WebProgressListener::retryTest(const Test* test, TestMessage /*msg*/) {
-    state_->view.retryTest(State::idOf(test));
-}
-
-void WebProgressListener::startRepetition(const Test* test, unsigned int index,
-                                          unsigned int count) {
-    state_->view.startRepetition(State::idOf(test), index, count);
-}
-
-void WebProgressListener::startTest(const Test* test) {
-    state_->view.startTest(State::idOf(test), test != nullptr ? test->getName() : std::string());
-}
-
-void WebProgressListener::endTest(const Test* test) {
-    state_->view.endTest(State::idOf(test));
-}
-
-void WebProgressListener::renameTest(const Test* test, const std::string& name) {
-    state_->view.renameTest(State::idOf(test), name);
-}
-
-void WebProgressListener::startTestSuite(const TestSuite* suite) {
-    std::vector<web::RunView::Planned> tests;
-    if (suite != nullptr) {
-        for (const Test* test : suite->tests()) {
-            tests.push_back({test->getId(), test->getName()});
-        }
-    }
-    state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
-}
-
-void WebProgressListener::endTestSuite(const TestSuite* suite) {
-    endTestSuite(static_cast<const Test*>(suite));
-}
-
-void WebProgressListener::startTestSuite(const Test* suite) {
-    // A suite known only as a Test: its tests are learnt as they start.
-    state_->view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
-}
-
-void WebProgressListener::endTestSuite(const Test* /*suite*/) {
-    state_->view.endSuite();
-}
-
-void WebProgressListener::startTestRunner() {
-    state_->view.startRun();
-}
-
-void WebProgressListener::endTestRunner() {
-    state_->view.endRun();
-}
+#undef RTF_TO_PAGE
 
 }  // namespace robottestingframework

@@ -206,7 +206,7 @@ def test_a_repetition_too_large_says_the_limit(tmp_path):
 def test_an_empty_test_name_is_a_usage_error(tmp_path):
     run = run_runner("--test", "", "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert "--test: an empty name" in run.stderr, run
+    assert "--test: the value is empty" in run.stderr, run
 
 
 @pytest.mark.parametrize("kind", ["folder", "fifo", "device"])

@@ -126,7 +126,7 @@ def test_rtf2_headers_bring_what_they_brought(tmp_path, isolation):
     run = run_runner("-v", "--isolation", isolation, "-s", suite, "--no-output")
     assert run.returncode == 0, run
     assert "rtf2 collector test ran its inner test" in run.stdout, run
-    assert "rtf2 header fixture: setting up with 3 argument(s)" in run.output, run
+    assert "rtf2 header fixture: setting up with 2 argument(s), first --answer" in run.output, run
     assert "rtf2 header fixture: tearing down" in run.output, run
     assert run.stdout.rstrip().endswith("1 passed, 0 failed"), run
 

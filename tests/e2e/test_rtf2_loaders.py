@@ -194,7 +194,7 @@ def test_program_loads_a_fixture_and_a_shlibpp_test(tree):
     test = build / "libdemo_test.so"
     ready = run([build / "run_fixture", fixture, "--ready", test], timeout=60)
     assert ready.returncode == 0, ready.stdout + ready.stderr
-    assert "demo fixture: setup with 2 argument(s)" in ready.stdout, ready.stdout
+    assert "demo fixture: setup with 1 argument(s)" in ready.stdout, ready.stdout
     assert "demo fixture: tear down" in ready.stdout, ready.stdout
     assert "class DemoTest, passed 1 of 1, suites failed 0" in ready.stdout, ready.stdout
 

@@ -108,3 +108,100 @@ def test_var_is_accepted_and_one_nothing_reads_is_a_warning(tmp_path):
     run = run_runner("-t", plugin("passing_test"), "--var", "robot=icub", cwd=tmp_path)
     assert run.returncode == 0, run
     assert "warning: --var robot=icub is not used" in run.stderr, run
+
+
+# --- Empty values (RTF 2.x's CMake helper writes `-p ${PARAM} -e "${ENV}"`) ---
+
+def reported_argv(stdout):
+    """The argv echo_test reported (its report ends with the source file and line)."""
+    match = re.search(r"report: argv (.*) \[[^\[\]]*echo_test\.cpp:\d+\]$", stdout, re.M)
+    assert match, stdout
+    return match.group(1)
+
+
+def value_options():
+    """Every option of --help that takes a value: {long name: value word}."""
+    run = run_runner("--help")
+    assert run.returncode == 0, run
+    found = {}
+    for line in run.stdout.splitlines():
+        match = re.match(r"  (?:-\w,)?(--[\w-]+) ([A-Z]\S*)", line)
+        if match:
+            found[match.group(1)] = match.group(2)
+    return found
+
+
+# What an empty value does, option by option: a free text (param, environment) takes it;
+# anything else that takes a value says the value is empty, naming the option (an empty FILE,
+# N, MODE, ... is never valid).
+TAKES_EMPTY = {"--param", "--environment"}
+REFUSES_EMPTY = {
+    "--test", "--tests", "--suite", "--suites", "--repetition", "--output", "--output-type",
+    "--web-port", "--web-host", "--web-linger", "--isolation", "--timeout", "--retries",
+    "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
+    "--filter", "--shard-index", "--shard-count", "--durations", "--merge", "--expect-shards",
+    "--jobs", "--resources",
+}
+
+
+def test_the_table_covers_every_option_of_help_that_takes_a_value():
+    assert set(value_options()) == TAKES_EMPTY | REFUSES_EMPTY
+
+
+@pytest.mark.parametrize("option", sorted(TAKES_EMPTY | REFUSES_EMPTY))
+@pytest.mark.parametrize("form", ["separate", "equals"])
+def test_an_empty_value_is_taken_by_every_option(tmp_path, option, form):
+    given = [option, ""] if form == "separate" else [option + "="]
+    run = run_runner("-v", "--no-output", *given, "--test", plugin("echo_test"), cwd=tmp_path)
+    if option in TAKES_EMPTY:
+        assert run.returncode == 0, run
+        assert reported_argv(run.stdout) == "[EchoTest]", run  # no param words
+        assert "environment []" in run.stdout, run
+    else:
+        assert run.returncode == 2, run
+        assert f"{option}: the value is empty" in run.stderr, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("args,param,environment", [
+    # RTF 2.x's helper with an empty PARAM: the unquoted value vanishes.
+    (["-p", "-e", "", "--test", "ECHO"], "", ""),
+    (["-p", "-e", "--extra yes", "--test", "ECHO"], "", "--extra yes"),
+    (["-p", "--expect-param --cli", "-e", "", "--test", "ECHO"], "--expect-param --cli", ""),
+    (["--test", "ECHO", "-e", ""], "", ""),
+    (["--test", "ECHO", "--environment", "", "--param", ""], "", ""),
+    (["--param=", "--environment=", "--test", "ECHO"], "", ""),
+    (["-p", "--test", "ECHO", "-e", "--robot sim"], "", "--robot sim"),
+    (["-p", "-d", "-e", "robot=x", "--test", "ECHO"], "", "robot=x"),
+], ids=["p-then-e", "p-then-e-value", "p-value-e-empty", "e-empty-last", "long-forms",
+        "equals-forms", "p-then-test", "p-then-flag"])
+def test_rtf2_helper_command_lines_run_with_an_empty_param_or_environment(
+        tmp_path, isolation, args, param, environment):
+    args = [plugin("echo_test") if a == "ECHO" else a for a in args]
+    run = run_runner("-v", "--no-output", "--no-summary", "--isolation", isolation, *args,
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    words = "".join(f" [{w}]" for w in param.split())
+    assert reported_argv(run.stdout) == f"[EchoTest]{words}", run
+    assert f"environment [{environment}]" in run.stdout, run
+
+
+@pytest.mark.parametrize("args,says", [
+    (["-p", "a", "-p", "b", "-t", "ECHO"], "--param"),
+    (["-e", "", "-e", "x", "-t", "ECHO"], "--environment"),
+    (["-t", "ECHO", "--web-port", "1", "--web-port", "2"], "--web-port"),
+    (["-t", "ECHO", "-e"], "--environment"),
+    (["-t", "ECHO", "-p"], "--param"),
+    (["-t", "ECHO", "--output"], "--output"),
+    (["-t", "ECHO", "--colour", "red"], "--colour"),
+    (["--test", ""], "--test: the value is empty"),
+    (["--suite", ""], "--suite: the value is empty"),
+    (["--test="], "--test: the value is empty"),
+], ids=["param-twice", "environment-twice", "port-twice", "environment-at-end",
+        "param-at-end", "output-at-end", "unknown", "empty-test", "empty-suite",
+        "empty-test-equals"])
+def test_bad_command_lines_exit_two_naming_the_option(tmp_path, args, says):
+    args = [plugin("echo_test") if a == "ECHO" else a for a in args]
+    run = run_runner(*args, cwd=tmp_path)
+    assert run.returncode == 2, run
+    assert says in run.stderr, run

@@ -122,7 +122,7 @@ def test_nothing_selected_is_said(tmp_path):
     (["--tag", "  "], "--tag   : an empty tag expression"),
     (["--filter", "arm/*::leg"], "--filter arm/*::leg: an empty pattern at column 7"),
     (["--filter", "arm/*-"], "--filter arm/*-: an empty pattern at column 7"),
-    (["--filter", ""], "--filter : an empty filter"),
+    (["--filter", ""], "--filter: the value is empty"),
 ])
 def test_a_malformed_expression_or_filter_is_a_usage_error(tmp_path, args, expected):
     run = run_runner(*suites(tmp_path), *args, "--no-output", cwd=tmp_path)

@@ -85,11 +85,37 @@ TEST(Arguments, GetOptionDoesNotMatchAPrefixOfALongerName) {
     EXPECT_FALSE(Arguments::getOption(args.argc(), args.argv(), "robot", value));
 }
 
-TEST(Arguments, HasOptionFindsFlagsButNotTheProgramName) {
-    ArgumentVector args("--verbose", "--flag --level=2");
+TEST(Arguments, OptionsAreFoundInArgvZeroWhereAFixtureParamStarts) {
+    ArgumentVector args("--robot icubSim --flag");
+    std::string value;
+    ASSERT_TRUE(Arguments::getOption(args.argc(), args.argv(), "robot", value));
+    EXPECT_EQ(value, "icubSim");
     EXPECT_TRUE(Arguments::hasOption(args.argc(), args.argv(), "flag"));
-    EXPECT_TRUE(Arguments::hasOption(args.argc(), args.argv(), "level"));
+    EXPECT_TRUE(Arguments::hasOption(args.argc(), args.argv(), "robot"));
     EXPECT_FALSE(Arguments::hasOption(args.argc(), args.argv(), "verbose"));
+}
+
+TEST(Arguments, ParseSplitsInPlaceWithTheFirstWordInArgvZero) {
+    char line[] = "MY_FIXTURE_TEST_PARAM --x 1";
+    char* argv[64];
+    int argc = -1;
+    Arguments::parse(line, &argc, argv);
+    ASSERT_EQ(argc, 3);
+    EXPECT_STREQ(argv[0], "MY_FIXTURE_TEST_PARAM");
+    EXPECT_STREQ(argv[1], "--x");
+    EXPECT_STREQ(argv[2], "1");
+    EXPECT_EQ(argv[3], nullptr);
+}
+
+TEST(ArgumentVector, AFixtureArgvHoldsTheParamWordsOnly) {
+    ArgumentVector args("MY_FIXTURE_TEST_PARAM --x 1");
+    ASSERT_EQ(args.argc(), 3);
+    EXPECT_STREQ(args.argv()[0], "MY_FIXTURE_TEST_PARAM");
+    EXPECT_STREQ(args.argv()[2], "1");
+    EXPECT_EQ(args.argv()[3], nullptr);
+    ArgumentVector none("");
+    EXPECT_EQ(none.argc(), 0);
+    EXPECT_EQ(none.argv()[0], nullptr);
 }
 
 TEST(ArgumentVector, FirstArgumentIsTheNameThenTheParamWords) {

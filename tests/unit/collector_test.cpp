@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include <robottestingframework/Exception.h>
+#include <robottestingframework/FixtureManager.h>
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestRunner.h>
 #include <robottestingframework/TestSuite.h>
 
 #include "core_test_helpers.h"
@@ -543,4 +546,58 @@ TEST(TestResultCollector, OnceTheOutputBudgetIsSpentEachTestKeepsItsTail) {
     EXPECT_LT(cut.size(), 4096u + 200u);
     EXPECT_NE(cut.find("keep 100 KiB of output in all]"), std::string::npos) << cut.substr(0, 200);
     EXPECT_EQ(cut.substr(cut.size() - 8), "the end\n");
+}
+
+namespace {
+
+class ThrowingFixture : public FixtureManager {
+public:
+    bool setup(int, char**) override {
+        throw FixtureException(TestMessage("the simulator does not start"));
+    }
+};
+
+// RTF 2.x's two-suite case: the first suite's fixture throws, its test is not run.
+void runTwoSuites(TestResultCollector& collector) {
+    LambdaTest test("t");
+    ThrowingFixture broken;
+    FixtureManager working;
+    TestSuite first("first");
+    first.addFixtureManager(&broken);
+    first.addTest(&test);
+    TestSuite second("second");
+    second.addFixtureManager(&working);
+    second.addTest(&test);
+    TestRunner runner;
+    runner.addTest(&first);
+    runner.addTest(&second);
+    TestResult result;
+    result.addListener(&collector);
+    runner.run(result);
+}
+
+}  // namespace
+
+TEST(TestResultCollector, TestsOfASuiteWhoseFixtureFailedAreNotCountedAsInRtf2) {
+    TestResultCollector c;
+    runTwoSuites(c);
+    EXPECT_EQ(c.suiteCount(), 2u);
+    EXPECT_EQ(c.passedSuiteCount(), 1u);
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+    EXPECT_EQ(c.testCount(), 1u);
+    EXPECT_EQ(c.passedCount(), 1u);
+    EXPECT_EQ(c.failedCount(), 0u);
+    // The records still list it, skipped with the fixture's reason.
+    ASSERT_EQ(c.suites().at(0).tests.size(), 1u);
+    EXPECT_EQ(c.suites()[0].tests[0].status, TestStatus::Skipped);
+}
+
+TEST(TestResultCollector, TheRunnersViewCountsThemAsSkipped) {
+    TestResultCollector c;
+    c.setCountTestsNotRun(true);
+    runTwoSuites(c);
+    EXPECT_EQ(c.testCount(), 2u);
+    EXPECT_EQ(c.skippedCount(), 1u);
+    EXPECT_EQ(c.passedCount(), 1u);
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
 }

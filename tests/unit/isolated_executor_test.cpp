@@ -336,7 +336,7 @@ TEST_F(Isolation, FixtureCrashingInSetupFailsSetupWithTheReason) {
     Collapses collapses;
     fixture->setDispatcher(&collapses);
     fixture->setResult(&result, &self);
-    ArgumentVector args("fixture_crash_setup", "");
+    ArgumentVector args("");
     // The reason goes to the suite with the exception (which hands it on to skipped tests).
     std::string reason;
     try {
@@ -359,7 +359,7 @@ TEST_F(Isolation, FixtureCollapseFromItsThreadReachesTheDispatcher) {
     Collapses collapses;
     fixture->setDispatcher(&collapses);
     fixture->setResult(&result, &self);
-    ArgumentVector args("fixture_collapse", "");
+    ArgumentVector args("");
     ASSERT_TRUE(fixture->setup(args.argc(), args.argv())) << recorder.dump();
     EXPECT_TRUE(recorder.has(Kind::Report, "world is up"));
     platform::Deadline deadline(5.0);
@@ -385,7 +385,7 @@ TEST_F(Isolation, FixtureDyingBetweenCallsCollapsesWithItsStatus) {
     fixture->setDispatcher(&collapses);
     fixture->setResult(&result, &self);
     fixture->setParam("--die-after-setup");
-    ArgumentVector args("fixture_collapse", "--die-after-setup");
+    ArgumentVector args("--die-after-setup");
     ASSERT_TRUE(fixture->setup(args.argc(), args.argv())) << recorder.dump();
     platform::Deadline deadline(5.0);
     while (collapses.count == 0 && !deadline.expired()) {

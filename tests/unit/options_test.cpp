@@ -109,11 +109,27 @@ TEST(Options, WebReporterDefaultsAndItsOwnOptions) {
 
 TEST(Options, ParamThatLooksLikeAnOptionIsAValue) {
     Options options;
-    ParseResult result = parse({"-t", "a.so", "-p", "--verbose", "-e", "-x"}, options);
+    ParseResult result = parse({"-t", "a.so", "-p", "--robot icubSim", "-e", "-x"}, options);
     ASSERT_TRUE(runs(result)) << result.text;
-    EXPECT_EQ(options.param, "--verbose");
+    EXPECT_EQ(options.param, "--robot icubSim");
     EXPECT_EQ(options.environment, "-x");
     EXPECT_FALSE(options.verbose);
+}
+
+// RTF 2.x's CMake helper writes `-p ${PARAM} -e "${ENV}"`; an empty PARAM vanishes.
+TEST(Options, ParamFollowedByAnOptionOfTheRunnerIsEmpty) {
+    Options options;
+    ParseResult result = parse({"-v", "-p", "-e", "", "--test", "a.so"}, options);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(options.param, "");
+    EXPECT_EQ(options.environment, "");
+    EXPECT_EQ(options.tests, std::vector<std::string>{"a.so"});
+    Options flag;
+    result = parse({"-t", "a.so", "-p", "--verbose", "-e", "robot=x"}, flag);
+    ASSERT_TRUE(runs(result)) << result.text;
+    EXPECT_EQ(flag.param, "");
+    EXPECT_TRUE(flag.verbose);
+    EXPECT_EQ(flag.environment, "robot=x");
 }
 
 TEST(Options, TypedOutputsAndDefaults) {
@@ -161,8 +177,10 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "stray"}, "stray"},
         {{"-t", "a.so", "--repetition", "99999999999"}, "is too large: at most 1000000000 runs"},
         {{"-t", "a.so", "--timeout", "inf"}, "'inf' is not a number of seconds"},
-        {{"-t", ""}, "--test: an empty name"},
-        {{"--suite", ""}, "--suite: an empty name"},
+        {{"-t", ""}, "--test: the value is empty"},
+        {{"--suite", ""}, "--suite: the value is empty"},
+        {{"-t", "a.so", "--jobs", ""}, "--jobs: the value is empty"},
+        {{"-t", "a.so", "-e"}, "--environment"},
         {{"-t", "a.so", "-o", "junti:x.xml"}, "unknown output type 'junti'"},
         {{"-t", "a.so", "-o", "junti:x.xml"}, "text:junti:x.xml or ./junti:x.xml"},
     };

@@ -48,7 +48,7 @@ TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine) {
                                  "<world>\n  <process name='a' depends='b' command='true'/>\n"
                                  "</world>\n");
     ProcessFixture fixture(world.string());
-    ArgumentVector args("world.xml", "");
+    ArgumentVector args("");
     try {
         fixture.setup(args.argc(), args.argv());
         FAIL() << "setup did not throw";
@@ -65,14 +65,13 @@ TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder) {
                                  "${greeting}; exec sleep 30'\"><ready><output>^${greeting}$"
                                  "</output></ready></process></world>");
     ProcessFixture fixture(world.string());
-    ArgumentVector args("world.xml",
-                        "--var greeting=hello --logdir " + (folder / "mylogs").string());
+    ArgumentVector args("--var greeting=hello --logdir " + (folder / "mylogs").string());
     ASSERT_TRUE(fixture.setup(args.argc(), args.argv()));
     EXPECT_TRUE(fixture.check());
     fixture.tearDown();
     EXPECT_TRUE(std::filesystem::exists(folder / "mylogs" / "a.log"));
 
-    ArgumentVector wrong("world.xml", "--colour red");
+    ArgumentVector wrong("--colour red");
     EXPECT_THROW(fixture.setup(wrong.argc(), wrong.argv()), TestErrorException);
 }
 
@@ -86,7 +85,7 @@ TEST(ProcessFixture, TellsTheDispatcherWhenTheWorldCollapses) {
     ProcessFixture fixture(world.string());
     CollapseRecorder recorder;
     fixture.setDispatcher(&recorder);
-    ArgumentVector args("world.xml", "");
+    ArgumentVector args("");
     ASSERT_TRUE(fixture.setup(args.argc(), args.argv()));
     for (int i = 0; i < 300 && fixture.check(); ++i) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));

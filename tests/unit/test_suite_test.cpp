@@ -55,7 +55,8 @@ TEST(TestSuite, FixturesSetUpInOrderAndTornDownInReverse) {
     EXPECT_TRUE(r.suite().succeeded());
 }
 
-TEST(TestSuite, FixtureSetupGetsItsNameAndParam) {
+// RTF 2.x's layout: the param's words only, the first one in argv[0].
+TEST(TestSuite, FixtureSetupGetsItsParamWordsWithTheFirstInArgvZero) {
     std::vector<std::string> log;
     LoggingFixture a("sim", log);
     a.setParam("--from 'sim world.ini'");
@@ -63,7 +64,7 @@ TEST(TestSuite, FixtureSetupGetsItsNameAndParam) {
     suite.addFixtureManager(&a);
     SuiteRun r;
     suite.run(r.result);
-    EXPECT_EQ(a.args, (Lines{"sim", "--from", "sim world.ini"}));
+    EXPECT_EQ(a.args, (Lines{"--from", "sim world.ini"}));
 }
 
 TEST(TestSuite, SuiteBecomesTheDispatcherOfAFixtureWithoutOne) {
@@ -76,6 +77,14 @@ TEST(TestSuite, SuiteBecomesTheDispatcherOfAFixtureWithoutOne) {
     EXPECT_EQ(a.getDispatcher(), &suite);
     EXPECT_EQ(a.getResult(), &r.result);
     EXPECT_EQ(a.getOwner(), &suite);
+}
+
+TEST(TestSuite, AddingAFixtureMakesTheSuiteItsDispatcherAtOnce) {
+    std::vector<std::string> log;
+    LoggingFixture a("a", log);
+    TestSuite suite("s");
+    suite.addFixtureManager(&a);
+    EXPECT_EQ(a.getDispatcher(), &suite);  // before any run, as RTF 2.x's tests check
 }
 
 TEST(TestSuite, FailingFixtureTearsDownTheOnesAlreadyUpAndSkipsEveryTest) {

@@ -9,7 +9,7 @@ class DemoFixture : public FixtureManager {
 public:
     bool setup(int argc, char** argv) override {
         std::printf("demo fixture: setup with %d argument(s)\n", argc);
-        return argc > 1 && std::string(argv[1]) == "--ready";
+        return argc > 0 && std::string(argv[0]) == "--ready";  // RTF 2.x: no name first
     }
     void tearDown() override { std::printf("demo fixture: tear down\n"); }
 };

@@ -1,0 +1,171 @@
+// RTF_web's live page: a RunView filled by the run's events and served by a WebServer.
+#include <cstdint>
+#include <vector>
+
+#include <robottestingframework/TestSuite.h>
+
+#include "live_page.h"
+#include "run_view.h"
+#include "web_server.h"
+
+namespace robottestingframework {
+namespace web {
+
+namespace {
+
+// The view is filled by the run's events and read by the server; tests are found by the ids
+// the events carry.
+class ServedLivePage : public LivePage {
+public:
+    ServedLivePage(const std::string& host, unsigned int port, bool verbose)
+        : view(verbose), server(view) {
+        listening = server.start(host, port, failure);
+    }
+    ~ServedLivePage() override {
+        view.close();  // ends the event streams first, so stop() does not wait for them
+        server.stop();
+    }
+
+    bool isListening() const override { return listening; }
+    std::string error() const override { return failure; }
+    unsigned int port() const override { return listening ? server.port() : 0; }
+
+    void addReport(const Test* test, TestMessage msg) override;
+    void addError(const Test* test, TestMessage msg) override;
+    void addFailure(const Test* test, TestMessage msg) override;
+    void startTest(const Test* test) override;
+    void endTest(const Test* test) override;
+    void renameTest(const Test* test, const std::string& name) override;
+    void startTestSuite(const TestSuite* suite) override;
+    void endTestSuite(const TestSuite* suite) override;
+    void startTestSuite(const Test* suite) override;
+    void endTestSuite(const Test* suite) override;
+    void startTestRunner() override;
+    void endTestRunner() override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
+    void addSkipped(const Test* test, TestMessage reason) override;
+    void addCrash(const Test* test, TestMessage msg) override;
+    void addTimeout(const Test* test, TestMessage msg) override;
+    void addInterrupted(const Test* test, TestMessage msg) override;
+    void addOutput(const Test* test, const std::string& text) override;
+    void retryTest(const Test* test, TestMessage msg) override;
+    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
+    void addEvent(const Test* test, const ResultEvent& event) override;
+
+private:
+    // A message of `kind`: shown under its word, giving the test its state (the tables).
+    void said(ResultEvent::Kind kind, const Test* test, const TestMessage& msg) {
+        view.addMessage(idOf(test), toString(kind), msg, stateOf(kind));
+    }
+    static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
+
+    RunView view;
+    WebServer server;
+    std::string failure;
+    bool listening = false;
+};
+
+}  // namespace
+
+void ServedLivePage::addReport(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Report, test, msg);
+}
+
+void ServedLivePage::addError(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Error, test, msg);
+}
+
+void ServedLivePage::addFailure(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Failure, test, msg);
+}
+
+void ServedLivePage::addCheck(const Test* test, TestMessage msg, bool passed) {
+    // Passing checks are many and say little; a failed one is shown with its failure.
+    if (!passed) {
+        view.addMessage(idOf(test), "check failed", msg, TestStatus::Passed);
+    }
+}
+
+void ServedLivePage::addSkipped(const Test* test, TestMessage reason) {
+    said(ResultEvent::Kind::Skipped, test, reason);
+}
+
+void ServedLivePage::addCrash(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Crash, test, msg);
+}
+
+void ServedLivePage::addTimeout(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Timeout, test, msg);
+}
+
+void ServedLivePage::addInterrupted(const Test* test, TestMessage msg) {
+    said(ResultEvent::Kind::Interrupted, test, msg);
+}
+
+void ServedLivePage::addEvent(const Test* test, const ResultEvent& event) {
+    said(event.kind, test, event.message);
+}
+
+void ServedLivePage::addOutput(const Test* test, const std::string& text) {
+    view.addOutput(idOf(test), text);
+}
+
+void ServedLivePage::retryTest(const Test* test, TestMessage /*msg*/) {
+    view.retryTest(idOf(test));
+}
+
+void ServedLivePage::startRepetition(const Test* test, unsigned int index, unsigned int count) {
+    view.startRepetition(idOf(test), index, count);
+}
+
+void ServedLivePage::startTest(const Test* test) {
+    view.startTest(idOf(test), test != nullptr ? test->getName() : std::string());
+}
+
+void ServedLivePage::endTest(const Test* test) {
+    view.endTest(idOf(test));
+}
+
+void ServedLivePage::renameTest(const Test* test, const std::string& name) {
+    view.renameTest(idOf(test), name);
+}
+
+void ServedLivePage::startTestSuite(const TestSuite* suite) {
+    std::vector<RunView::Planned> tests;
+    if (suite != nullptr) {
+        for (const Test* test : suite->tests()) {
+            tests.push_back({test->getId(), test->getName()});
+        }
+    }
+    view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
+}
+
+void ServedLivePage::endTestSuite(const TestSuite* suite) {
+    endTestSuite(static_cast<const Test*>(suite));
+}
+
+void ServedLivePage::startTestSuite(const Test* suite) {
+    // A suite known only as a Test: its tests are learnt as they start.
+    view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
+}
+
+void ServedLivePage::endTestSuite(const Test* /*suite*/) {
+    view.endSuite();
+}
+
+void ServedLivePage::startTestRunner() {
+    view.startRun();
+}
+
+void ServedLivePage::endTestRunner() {
+    view.endRun();
+}
+
+}  // namespace web
+}  // namespace robottestingframework
+
+// Found by name (live_page.h) by RTF's WebProgressListener.
+extern "C" __attribute__((visibility("default"))) robottestingframework::web::LivePage*
+robottestingframework_web_open_live_page(const char* host, unsigned int port, bool verbose) {
+    return new robottestingframework::web::ServedLivePage(host, port, verbose);
+}
