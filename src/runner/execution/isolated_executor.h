@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "file_descriptor.h"
-#include "fork_server.h"
+#include "fork_server_client.h"
 #include "runner/model/test_executor.h"
 
 namespace robottestingframework {

@@ -16,7 +16,7 @@
 #include <robottestingframework/FixtureManager.h>
 
 #include "file_descriptor.h"
-#include "fork_server.h"
+#include "fork_server_client.h"
 #include "runner/execution/isolated_executor.h"
 #include "runner/model/test_executor.h"
 #include "wire_format.h"

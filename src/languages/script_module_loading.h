@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "language_module.h"
+#include "script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

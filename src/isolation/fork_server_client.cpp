@@ -1,4 +1,4 @@
-#include "fork_server.h"
+#include "fork_server_client.h"
 
 #include <errno.h>
 #include <signal.h>

@@ -1,4 +1,4 @@
-#include "language_modules.h"
+#include "script_module_loading.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
