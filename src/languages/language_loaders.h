@@ -19,7 +19,7 @@ std::unique_ptr<LoadedFixture> loadProcessFixture(const std::string& path, std::
 // exec/: any executable; TAP on its stdout becomes checks.
 std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error);
 
-// python/, lua/, ruby/: each built into a module of its own (language_module.h), which
+// python/, lua/, ruby/: each built into a module of its own (script_module_interface.h), which
 // test_loader.cpp loads on first use; not part of rtf_languages.
 std::unique_ptr<LoadedTest> loadPythonTest(const std::string& path, std::string& error);
 std::unique_ptr<LoadedFixture> loadPythonFixture(const std::string& path, std::string& error);

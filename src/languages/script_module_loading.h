@@ -1,4 +1,4 @@
-// Finding and loading the script language modules (see language_module.h) on first use.
+// Finding and loading the script language modules (see script_module_interface.h) on first use.
 #pragma once
 
 #include <string>

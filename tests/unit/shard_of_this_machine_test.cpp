@@ -1,4 +1,5 @@
-// Which shard a machine runs (shard_choice.h): flags first, then the CI engines' variables.
+// Which shard a machine runs (shard_of_this_machine.h): flags first, then the CI engines'
+// variables.
 #include <gtest/gtest.h>
 
 #include <map>

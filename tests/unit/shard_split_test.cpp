@@ -1,4 +1,4 @@
-// The split of suites between shards (shards.h): deterministic, complete, locks together,
+// The split of suites between shards (shard_split.h): deterministic, complete, locks together,
 // balanced by durations.
 #include <gtest/gtest.h>
 

@@ -18,7 +18,7 @@ namespace {
 
 const char* const program = "robottestingframework-testrunner";
 
-// A number check by the rule suite files follow too (numbers.h); its message says what is
+// A number check by the rule suite files follow too (value_limits.h); its message says what is
 // expected, where CLI11's own would print the type's range.
 template <typename Number>
 CLI::Validator numberRule(std::string (*check)(const std::string&, Number&),
