@@ -16,8 +16,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "in_process_executor.h"
-#include "isolated_executor.h"
+#include "runner/execution/in_process_executor.h"
+#include "runner/execution/isolated_executor.h"
 
 using namespace robottestingframework;
 

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <string>
 
-#include "fork_server.h"
+#include "fork_server_client.h"
 #include "fork_server_loop.h"
 
 int main(int argc, char** argv) {

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "file_descriptor.h"
-#include "fork_server.h"
+#include "fork_server_client.h"
 #include "output_tail.h"
 #include "wire_format.h"
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <utility>
 
-#include "language_modules.h"
+#include "script_module_loading.h"
 
 namespace robottestingframework {
 namespace plugin {

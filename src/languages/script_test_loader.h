@@ -1,5 +1,5 @@
 // What PythonPluginLoader, LuaPluginLoader and RubyPluginLoader share: a script test loaded
-// through its language's module (language_module.h), kept until closed.
+// through its language's module (script_module_interface.h), kept until closed.
 #pragma once
 
 #include <memory>

@@ -5,8 +5,8 @@
 
 #include <algorithm>
 
-#include "backends.h"
-#include "language_modules.h"
+#include "language_loaders.h"
+#include "script_module_loading.h"
 
 namespace robottestingframework {
 namespace languages {

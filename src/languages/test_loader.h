@@ -41,7 +41,7 @@ bool prestartLanguage(const std::string& type, std::string& error);
 // Forks this process once prestartLanguage(type) succeeded, with the runtime's own hooks.
 pid_t forkLanguage(const std::string& type);
 // In a fork made by forkLanguage(type) that waits for its test: what the runtime does ahead of
-// a test (see language_module.h).
+// a test (see script_module_interface.h).
 void rehearseLanguage(const std::string& type);
 // Runs `serve(context)` where forkLanguage(type) may be called: on the runtime's own thread
 // when it has one (`hosted` true: this thread then waits), else right here.

@@ -1,4 +1,4 @@
-"""Script languages are modules loaded on first use (src/languages/language_module.h): the
+"""Script languages are modules loaded on first use (src/languages/script_module_interface.h): the
 runner and its worker do not link any interpreter, the modules are found next to the program or
 in $RTF_LANGUAGE_DIR, and a missing module is a clear error, not a crash."""
 import subprocess

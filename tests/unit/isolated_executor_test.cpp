@@ -26,7 +26,7 @@
 #include <robottestingframework/TestResult.h>
 
 #include "clock.h"
-#include "isolated_executor.h"
+#include "runner/execution/isolated_executor.h"
 
 using namespace robottestingframework;
 using Kind = ResultEvent::Kind;

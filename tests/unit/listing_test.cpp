@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "listing.h"
+#include "runner/cli/listing.h"
 
 using namespace robottestingframework::runner;
 

@@ -9,7 +9,7 @@
 
 #include <pugixml.hpp>
 
-#include "merge_reports.h"
+#include "runner/reports/merge_reports.h"
 
 using namespace robottestingframework::runner;
 namespace fs = std::filesystem;

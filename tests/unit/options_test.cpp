@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "options.h"
+#include "runner/cli/options.h"
 
 using robottestingframework::runner::Isolation;
 using robottestingframework::runner::Options;

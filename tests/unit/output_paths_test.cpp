@@ -8,7 +8,7 @@
 #include <fstream>
 #include <string>
 
-#include "output_paths.h"
+#include "runner/cli/output_paths.h"
 
 using namespace robottestingframework::runner;
 namespace fs = std::filesystem;

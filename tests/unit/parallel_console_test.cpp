@@ -13,8 +13,8 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "core_test_helpers.h"
-#include "parallel_console.h"
-#include "suite_events.h"
+#include "runner/console/parallel_console.h"
+#include "runner/schedule/suite_events.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::runner;

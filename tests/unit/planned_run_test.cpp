@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "planned_run.h"
+#include "runner/cli/planned_run.h"
 
 using namespace robottestingframework::runner;
 namespace fs = std::filesystem;

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 
-#include "report_reader.h"
+#include "runner/reports/report_reader.h"
 
 using namespace robottestingframework::runner;
 namespace fs = std::filesystem;

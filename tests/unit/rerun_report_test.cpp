@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "rerun_report.h"
+#include "runner/reports/rerun_report.h"
 
 using namespace robottestingframework::runner;
 namespace fs = std::filesystem;

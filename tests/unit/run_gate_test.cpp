@@ -9,10 +9,10 @@
 
 #include <robottestingframework/TestResult.h>
 
-#include "plugin_test.h"
-#include "run_gate.h"
-#include "run_plan.h"
-#include "test_executor.h"
+#include "runner/model/stand_in_test.h"
+#include "runner/model/test_executor.h"
+#include "runner/plan/run_gate.h"
+#include "runner/plan/run_plan.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::runner;

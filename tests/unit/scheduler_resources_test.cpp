@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "options.h"
-#include "resources.h"
-#include "suite_file.h"
+#include "runner/cli/options.h"
+#include "runner/schedule/resources.h"
+#include "runner/suites/suite_file.h"
 #include "variables.h"
 #include "wire_format.h"
 

@@ -14,10 +14,10 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
-#include "resources.h"
-#include "run_plan.h"
-#include "scheduler.h"
-#include "test_executor.h"
+#include "runner/model/test_executor.h"
+#include "runner/plan/run_plan.h"
+#include "runner/schedule/resources.h"
+#include "runner/schedule/scheduler.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::runner;

@@ -1,7 +1,7 @@
 // Tag expressions, name filters and what applySelection leaves of a run.
 #include <gtest/gtest.h>
 
-#include "selection.h"
+#include "runner/plan/selection.h"
 
 using namespace robottestingframework::runner;
 

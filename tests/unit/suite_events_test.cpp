@@ -9,7 +9,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
-#include "suite_events.h"
+#include "runner/schedule/suite_events.h"
 
 using namespace robottestingframework;
 using robottestingframework::runner::SuiteEvents;

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "suite_file.h"
+#include "runner/suites/suite_file.h"
 
 using robottestingframework::runner::parseSuite;
 using robottestingframework::runner::parseTestFile;

@@ -8,8 +8,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "backends.h"
 #include "exec_process.h"
+#include "language_loaders.h"
 #include "output_tail.h"
 #include "signal_name.h"
 #include "tap_parser.h"

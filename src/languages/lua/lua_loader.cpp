@@ -9,8 +9,8 @@
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/Exception.h>
 
-#include "backends.h"
-#include "language_module.h"
+#include "language_loaders.h"
+#include "script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -23,13 +23,13 @@ namespace py = pybind11;
 // Starts the interpreter on first use (GIL released afterwards). Safe from any thread.
 void ensureInterpreter();
 
-// The pre-started interpreter of a fork server (language_module.h): started with nothing of any
-// test loaded. False with `error` when it failed to start.
+// The pre-started interpreter of a fork server (script_module_interface.h): started with nothing of
+// any test loaded. False with `error` when it failed to start.
 bool prestartInterpreter(std::string& error);
 // fork() with the interpreter's own hooks (os.register_at_fork, its locks, threading's state),
 // as os.fork() does; the GIL is released again on both sides.
 pid_t forkInterpreter();
-// In a fork waiting for its test: rehearses a test (language_module.h).
+// In a fork waiting for its test: rehearses a test (script_module_interface.h).
 void rehearseInFork();
 
 // Wakes the script running on `thread` (a PyThread ident) out of a blocking call (time.sleep,

@@ -16,7 +16,7 @@ public:
     // thrown by `job` is thrown here. Runs it directly when called from the Ruby thread.
     static void run(const std::function<void()>& job);
 
-    // Starts the VM (for a process that forks a worker per test, see language_module.h).
+    // Starts the VM (for a process that forks a worker per test, see script_module_interface.h).
     static void start();
     // fork() from the Ruby thread (the child's only thread), Ruby told of it in the child as
     // its own fork does (rb_thread_atfork).

@@ -1,0 +1,18 @@
+// Finding and loading the script language modules (see script_module_interface.h) on first use.
+#pragma once
+
+#include <string>
+
+#include "script_module_interface.h"
+
+namespace robottestingframework {
+namespace languages {
+
+// The module of `language` ("python", "lua", "ruby"), loaded the first time it is asked for and
+// kept for the life of the process. nullptr and `error` set (dlerror's words) when it cannot be
+// loaded. Looked for in $RTF_LANGUAGE_DIR when set, else in the folder the program's libraries
+// sit in (../lib/robottestingframework from the program), else where it was installed.
+const LanguageModule* languageModule(const std::string& language, std::string& error);
+
+}  // namespace languages
+}  // namespace robottestingframework

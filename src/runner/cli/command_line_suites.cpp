@@ -1,0 +1,133 @@
+#include "runner/cli/command_line_suites.h"
+
+#include <robottestingframework/dll/DllPluginLoader.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+#include "runner/suites/suite_file.h"
+#include "test_loader.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace fs = std::filesystem;
+
+const char* const commandLineSuiteName = "tests";
+
+namespace {
+
+bool hidden(const fs::path& path) {
+    std::string name = path.filename().string();
+    return !name.empty() && name[0] == '.';
+}
+
+bool isSuiteFile(const std::string& path) {
+    return fs::path(path).extension() == ".xml";
+}
+
+bool isTestFile(const std::string& path) {
+    return !languages::typeFromFile(path).empty();
+}
+
+TestSpec commandLineTest(const std::string& file) {
+    TestSpec test;
+    test.plugin = file;
+    // Bare names are looked for in the current folder first, as next to a suite file.
+    test.path = plugin::findPlugin(file, ".");
+    test.repetition = 0;
+    test.where = SourceLocation{"", 0};
+    return test;
+}
+
+}  // namespace
+
+std::vector<std::string> listFolder(const std::string& folder, bool recursive,
+                                    bool (*keep)(const std::string& path)) {
+    std::error_code error;
+    if (!fs::is_directory(folder, error)) {
+        throw std::runtime_error(folder + ": not a folder");
+    }
+    std::vector<std::string> files;
+    auto consider = [&](const fs::directory_entry& entry) {
+        if (!hidden(entry.path()) && entry.is_regular_file(error) && keep(entry.path().string())) {
+            files.push_back(entry.path().string());
+        }
+    };
+    if (recursive) {
+        fs::recursive_directory_iterator it(folder, fs::directory_options::skip_permission_denied,
+                                            error);
+        for (; !error && it != fs::recursive_directory_iterator(); it.increment(error)) {
+            if (it->is_directory() && hidden(it->path())) {
+                it.disable_recursion_pending();
+                continue;
+            }
+            consider(*it);
+        }
+    } else {
+        fs::directory_iterator it(folder, error);
+        for (; !error && it != fs::directory_iterator(); it.increment(error)) {
+            consider(*it);
+        }
+    }
+    if (error) {
+        throw std::runtime_error(folder + ": cannot list the folder (" + error.message() + ")");
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+std::vector<variables::Variable> commandLineVariables(const Options& options) {
+    std::vector<variables::Variable> found;
+    for (const auto& file : options.variableFiles) {
+        std::string error;
+        if (!variables::readVariableFile(file, found, error)) {
+            throw std::runtime_error("--var-file " + error);
+        }
+    }
+    for (const auto& variable : options.variables) {
+        found.push_back({variable.first, variable.second, variables::Source::CommandLine, "--var"});
+    }
+    return found;
+}
+
+std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::string>& warnings) {
+    std::vector<SuiteSpec> suites;
+    // First: a bad --var-file is an error even when no suite reads it.
+    const std::vector<variables::Variable> variables = commandLineVariables(options);
+
+    SuiteSpec commandLine;
+    commandLine.name = commandLineSuiteName;
+    for (const auto& file : options.tests) {
+        commandLine.tests.push_back(commandLineTest(file));
+    }
+    for (const auto& folder : options.testDirs) {
+        auto files = listFolder(folder, options.recursive, isTestFile);
+        if (files.empty()) {
+            warnings.push_back(folder + ": warning: no test files in this folder");
+        }
+        for (const auto& file : files) {
+            commandLine.tests.push_back(commandLineTest(file));
+        }
+    }
+    if (!commandLine.tests.empty()) {
+        suites.push_back(std::move(commandLine));
+    }
+
+    std::vector<std::string> suiteFiles = options.suites;
+    for (const auto& folder : options.suiteDirs) {
+        auto files = listFolder(folder, options.recursive, isSuiteFile);
+        if (files.empty()) {
+            warnings.push_back(folder + ": warning: no suite files (*.xml) in this folder");
+        }
+        suiteFiles.insert(suiteFiles.end(), files.begin(), files.end());
+    }
+    for (const auto& file : suiteFiles) {
+        suites.push_back(readSuiteFile(file, warnings, variables));
+    }
+    return suites;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

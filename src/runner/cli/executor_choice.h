@@ -1,0 +1,21 @@
+// --isolation: the executor that runs the tests, in worker processes (the fork server) or in the
+// runner's own process.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "runner/cli/options.h"
+#include "runner/model/test_executor.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// Starts the executor `options.isolation` asks for. Call it on the main thread, which lives for
+// the whole run: the fork server's parent-death signal is tied to the thread that started it.
+// --isolation none warns of what it cannot do, and runs one suite at a time (`options.jobs`
+// becomes 1). Nullptr with `error` when process isolation cannot start.
+std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error);
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,35 @@
+#include "runner/cli/list_command.h"
+
+#include <cstdio>
+#include <string>
+
+#include "runner/cli/exit_status.h"
+#include "runner/cli/listing.h"
+#include "runner/cli/program_name.h"
+
+namespace robottestingframework {
+namespace runner {
+
+int listCommand(const Options& options, PlannedRun& planned, const Overrides& overrides) {
+    std::vector<SuiteSpec>& suites = planned.suites;
+    for (auto& suite : suites) {
+        applyOverrides(suite, overrides);
+    }
+    std::fputs((options.listVariables ? listVariablesText(suites)
+                                      : listText(suites, planned.shardOf, planned.shard.count))
+                   .c_str(),
+               stdout);
+    for (const auto& output : options.outputs) {
+        std::string error;
+        if (options.list && output.type == "json" &&
+            !writeListJson(output.file, suites, error, planned.shardOf)) {
+            std::fprintf(stderr, "%s: cannot write the list %s: %s\n", programName,
+                         output.file.c_str(), error.c_str());
+            return configurationError;
+        }
+    }
+    return allPassed;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,96 @@
+// robottestingframework-testrunner: the story of a run. Each stage is a
+// function in a file named for what it does; the exit statuses are SPEC 3.1's
+// (exit_status.h).
+#include <unistd.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <utility>
+
+#include "process_tree.h"
+#include "runner/cli/executor_choice.h"
+#include "runner/cli/exit_status.h"
+#include "runner/cli/list_command.h"
+#include "runner/cli/live_web_page.h"
+#include "runner/cli/merge_command.h"
+#include "runner/cli/options.h"
+#include "runner/cli/planned_run.h"
+#include "runner/cli/program_name.h"
+#include "runner/cli/run_inputs.h"
+#include "runner/cli/run_listeners.h"
+#include "runner/cli/run_rounds.h"
+#include "runner/plan/run_plan.h"
+
+using namespace robottestingframework;
+using namespace robottestingframework::runner;
+
+int main(int argc, char** argv) {
+    Options options;
+    const ParseResult parsed = parseOptions(argc, argv, options);
+    if (parsed.outcome == ParseResult::Outcome::Exit) {
+        std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
+        return parsed.status;
+    }
+    if (!options.merge.type.empty()) {
+        return mergeCommand(options);
+    }
+
+    RunInputs inputs;
+    if (!readRunInputs(options, inputs)) {
+        return configurationError;
+    }
+    PlannedRun planned = planRun(options, std::move(inputs.suites), inputs.shard);
+    for (const PlanNote& note : planned.notes) {
+        std::fprintf(note.stream == PlanNote::Stream::Out ? stdout : stderr, "%s: %s\n",
+                     programName, note.text.c_str());
+    }
+    if (planned.outcome == PlannedRun::Outcome::NothingToRerun) {
+        return allPassed;
+    }
+    if (planned.outcome == PlannedRun::Outcome::Error) {
+        std::fprintf(stderr, "%s: %s\n", programName, planned.error.c_str());
+        return configurationError;
+    }
+    if (options.list || options.listVariables) {
+        return listCommand(options, planned, inputs.overrides);
+    }
+    std::fflush(stdout);
+
+    // On the main thread, which lives for the whole run (executor_choice.h).
+    std::string error;
+    const std::unique_ptr<TestExecutor> executor = chooseExecutor(options, error);
+    if (!executor) {
+        std::fprintf(stderr, "%s: cannot start process isolation: %s\n", programName,
+                     error.c_str());
+        return configurationError;
+    }
+    RunPlan plan(*executor);
+    plan.gate().setFailFast(options.failFast);
+    plan.setRetries(options.retries);
+    for (auto& suite : planned.suites) {
+        applyOverrides(suite, inputs.overrides);
+        plan.addSuite(std::move(suite));
+    }
+    planned.suites.clear();
+
+    std::unique_ptr<WebProgressListener> web;
+    if (options.webReporter && !(web = startWebPage(options))) {
+        return configurationError;
+    }
+    RunListeners listeners(options, planned.reportSettings, web.get());
+    const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);
+    listeners.stopCapture();
+    if (options.isolation == Isolation::None) {
+        platform::killDescendants(::getpid());  // what the tests left behind in our process
+    }
+
+    int status = runStatus(listeners.collector(), options.failOnFlaky, interrupted);
+    if (!listeners.writeOutputs(stderr)) {
+        status = configurationError;
+    }
+    if (web && options.webLinger > 0 && interrupted == 0) {
+        lingerOn(*web, options.webLinger);
+    }
+    return status;
+}

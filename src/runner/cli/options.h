@@ -1,0 +1,92 @@
+// The runner's command line: RTF 2.x options (same names, same meaning) and ours.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "runner/plan/selection.h"
+#include "runner/plan/shard_of_this_machine.h"
+
+namespace robottestingframework {
+namespace runner {
+
+struct OutputRequest {
+    std::string type;  // a name of the reporter table (reporter_registry.h)
+    std::string file;
+};
+
+// --isolation: where the tests run.
+enum class Isolation {
+    Process,  // "process": each test in a worker process (the default)
+    None,     // "none": in the runner's own process, one suite at a time
+};
+
+struct Options {
+    std::vector<std::string> tests;      // --test/-t FILE
+    std::vector<std::string> testDirs;   // --tests DIR
+    std::vector<std::string> suites;     // --suite/-s FILE
+    std::vector<std::string> suiteDirs;  // --suites DIR
+    bool recursive = false;              // --recursive/-r: --tests and --suites descend
+    std::string param;                   // --param/-p: for tests without a param of their own
+    std::string environment;             // --environment/-e: appended to the suite's
+    unsigned int repetition = 0;         // --repetition N; 0: not given
+    // --output/-o FILE or TYPE:FILE, with --output-type for the untyped ones. When none is
+    // given, RTF 2.x's default applies: result.txt, unless --no-output.
+    std::vector<OutputRequest> outputs;
+    bool noOutput = false;
+    bool noSummary = false;
+    bool webReporter = false;           // --web-reporter/-w
+    int webPort = 8080;                 // --web-port N; 0: a free port
+    std::string webHost = "127.0.0.1";  // --web-host ADDRESS
+    double webLinger = 0;               // --web-linger SECONDS: serve the final page that long
+    bool detail = false;                // --detail/-d: every check on the console
+    bool verbose = false;               // --verbose/-v: reports and output on the console
+    Isolation isolation = Isolation::Process;  // --isolation process|none
+    double timeout = 0;                        // --timeout SECONDS for every test; 0: none
+    bool failFast = false;                     // --fail-fast: the first failure stops the run
+    unsigned int retries = 0;          // --retries N: a failing test runs again up to N times
+    bool failOnFlaky = false;          // --fail-on-flaky: a flaky test fails the run
+    unsigned int repeatUntilFail = 0;  // --repeat-until-fail N; 0: not given (once)
+    std::string rerunFailed;           // --rerun-failed REPORT: only the tests it says failed
+    std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
+    std::vector<std::string> variableFiles;                      // --var-file FILE
+    bool list = false;                                           // --list: print, run nothing
+    bool listVariables = false;                                  // --list-vars
+    Selection selection;                                         // --tag, --exclude-tag, --filter
+    // Shards: --shard-index/--shard-count as given (checked with the environment's, by
+    // chooseShard), --durations REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
+    ShardFlags shard;
+    std::string durations;
+    OutputRequest merge;  // type empty: not merging
+    std::vector<std::string> mergeReports;
+    unsigned int expectShards = 0;
+    unsigned int jobs = 1;  // -j/--jobs N: suites at once; "auto": the machine's cores
+    std::string resources;  // --resources FILE: the pools of <resource pool="..."/>
+
+    bool nothingToRun() const {
+        return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();
+    }
+};
+
+struct ParseResult {
+    enum class Outcome { Run, Exit };
+    Outcome outcome = Outcome::Run;
+    int status = 0;    // exit status when outcome is Exit: 0 for --help/--version, 2 for errors
+    std::string text;  // what to print: help/version on stdout, an error on stderr
+};
+
+// The most suites at once (-j): more threads and workers than any machine runs well.
+constexpr unsigned long maxJobs = 1024;
+// -j/--jobs: a whole number from 1 to maxJobs, or "auto" (the machine's cores). Empty when
+// valid (and `jobs` set), else what is expected.
+std::string checkJobs(const std::string& text, unsigned int& jobs);
+
+// The output types this build writes.
+bool isKnownOutputType(const std::string& type);
+
+// Reads argv into `options`. Never exits and never prints: the caller does, from the result.
+ParseResult parseOptions(int argc, const char* const* argv, Options& options);
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,83 @@
+#include "runner/cli/output_paths.h"
+
+#include <sys/stat.h>
+
+#include <filesystem>
+#include <map>
+
+#include "atomic_file.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// What identifies a file: its device and inode when it exists, else its absolute path with
+// the links of its folders resolved. `writtenThrough`: a FIFO or a device, which several
+// outputs may share (each written in turn).
+std::string identity(const std::string& path, bool* writtenThrough = nullptr) {
+    struct stat info {};
+    if (::stat(path.c_str(), &info) == 0) {
+        if (writtenThrough != nullptr) {
+            *writtenThrough = !S_ISREG(info.st_mode);
+        }
+        return std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+    }
+    std::error_code error;
+    std::filesystem::path full =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path), error);
+    return error ? path : full.string();
+}
+
+std::string describe(const OutputRequest& output) {
+    return "--output " + output.type + ":" + output.file;
+}
+
+}  // namespace
+
+std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
+                             const std::vector<SuiteSpec>& suites) {
+    // What the run reads, by identity: the outputs must replace none of it.
+    std::map<std::string, std::string> inputs;
+    auto input = [&inputs](const std::string& path, const std::string& what) {
+        if (!path.empty()) {
+            inputs.emplace(identity(path), what + " " + path);
+        }
+    };
+    for (const auto& suite : suites) {
+        input(suite.where.file, "the suite file");
+        for (const auto& fixture : suite.fixtures) {
+            input(fixture.path, "the fixture");
+        }
+        for (const auto& test : suite.tests) {
+            input(test.path, "the test");
+        }
+    }
+
+    std::map<std::string, const OutputRequest*> files;
+    for (const auto& output : outputs) {
+        const std::string notFile = reporters::notAnOutputFile(output.file);
+        if (!notFile.empty()) {
+            return describe(output) + ": " + notFile;
+        }
+        bool writtenThrough = false;
+        const std::string id = identity(output.file, &writtenThrough);
+        auto read = inputs.find(id);
+        if (read != inputs.end()) {
+            return describe(output) + ": " + output.file + " is " + read->second +
+                   "; the output would replace it";
+        }
+        if (writtenThrough) {
+            continue;
+        }
+        auto other = files.emplace(id, &output);
+        if (!other.second) {
+            return describe(output) + ": " + output.file + " is also the file of " +
+                   describe(*other.first->second) + "; each output needs a file of its own";
+        }
+    }
+    return {};
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

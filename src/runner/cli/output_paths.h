@@ -1,0 +1,22 @@
+// Checks, before anything runs, that each --output can be written without destroying
+// something: not a folder, not a file the run reads (a suite file, a test, a fixture), not the
+// file of another output. A run of an hour should not end on "cannot write the output".
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "runner/cli/options.h"
+#include "runner/model/suite_model.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// Empty when every output is fine; else "--output junit:F: F is ..." naming the output and
+// what it would replace. Files are compared by what they are (device and inode), so
+// "./r.xml", "r.xml" and a link to it are one file.
+std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
+                             const std::vector<SuiteSpec>& suites);
+
+}  // namespace runner
+}  // namespace robottestingframework

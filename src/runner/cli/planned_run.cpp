@@ -1,0 +1,132 @@
+#include "runner/cli/planned_run.h"
+
+#include <stdexcept>
+#include <utility>
+
+#include "runner/cli/sharded_run_setup.h"
+#include "runner/plan/selection.h"
+#include "runner/reports/rerun_report.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+void say(PlannedRun& plan, const std::string& text) {
+    plan.notes.push_back({PlanNote::Stream::Out, text});
+}
+
+void warn(PlannedRun& plan, const std::string& text) {
+    plan.notes.push_back({PlanNote::Stream::Err, text});
+}
+
+// --rerun-failed: only the tests the report says failed. False when the run ends here.
+bool keepFailed(const Options& options, PlannedRun& plan) {
+    std::vector<FailedTest> failed;
+    try {
+        const Report earlier = readReport("--rerun-failed", options.rerunFailed);
+        failed = failedTests(earlier);
+        // A rerun of a shard's failures is that shard again: its tests as they are, and its
+        // report says so, for --merge to put it in place of the first one.
+        if (plan.shard.sharded) {
+            say(plan, "--rerun-failed: the failed tests of " + options.rerunFailed +
+                          " run again as they are; the shard (" + plan.shard.source +
+                          ") is not taken again");
+            plan.shard = ShardChoice();
+        }
+        plan.reportSettings.rerun = true;
+        plan.reportSettings.sharded = earlier.shard.known;
+        plan.reportSettings.shardIndex = earlier.shard.index;
+        plan.reportSettings.shardCount = earlier.shard.count;
+    } catch (const std::exception& e) {
+        plan.outcome = PlannedRun::Outcome::Error;
+        plan.error = e.what();
+        return false;
+    }
+    if (failed.empty()) {
+        say(plan, options.rerunFailed + " has no failed test: nothing to rerun");
+        plan.outcome = PlannedRun::Outcome::NothingToRerun;
+        return false;
+    }
+    keepFailedTests(plan.suites, failed);
+    if (plan.suites.empty()) {
+        warn(plan, "warning: no test of this run is one that failed in " + options.rerunFailed);
+    }
+    return true;
+}
+
+// Only this shard's suites are kept; each keeps its place in the whole selection, so the
+// shards' reports merge into the one a single machine would write.
+void keepShard(const Options& options, const std::vector<unsigned int>& shardOf, PlannedRun& plan) {
+    const ShardChoice& shard = plan.shard;
+    std::vector<SuiteSpec> mine;
+    for (std::size_t i = 0; i < plan.suites.size(); ++i) {
+        if (shardOf[i] != shard.index) {
+            continue;
+        }
+        SuiteSpec& suite = plan.suites[i];
+        plan.reportSettings.suitePlaces.push_back(i);
+        if (options.verbose) {
+            say(plan, "shard " + std::to_string(shard.index) + " runs suite " + suite.name +
+                          (suite.where.file.empty() ? "" : " (" + suite.where.file + ")"));
+        }
+        mine.push_back(std::move(suite));
+    }
+    plan.suites = std::move(mine);
+    if (plan.suites.empty()) {
+        say(plan, "shard " + std::to_string(shard.index) + " of " + std::to_string(shard.count) +
+                      " has no suite to run");
+    }
+    plan.reportSettings.sharded = true;
+    plan.reportSettings.shardIndex = shard.index;
+    plan.reportSettings.shardCount = shard.count;
+}
+
+}  // namespace
+
+PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardChoice shard) {
+    PlannedRun plan;
+    plan.suites = std::move(suites);
+    plan.shard = std::move(shard);
+    if (!options.rerunFailed.empty() && !keepFailed(options, plan)) {
+        return plan;
+    }
+    if (!options.selection.empty()) {
+        applySelection(plan.suites, options.selection);
+        if (plan.suites.empty()) {
+            warn(plan, "warning: no test is selected");
+        }
+    }
+    if (!plan.shard.sharded) {
+        if (!options.durations.empty()) {
+            warn(plan,
+                 "warning: --durations " + options.durations + ": not sharded, nothing to balance");
+        }
+        return plan;
+    }
+    std::vector<unsigned int> shardOf;
+    try {
+        shardOf = shardsOf(plan.suites, plan.shard.count, options.durations);
+    } catch (const std::exception& e) {
+        plan.outcome = PlannedRun::Outcome::Error;
+        plan.error = e.what();
+        return plan;
+    }
+    std::size_t mine = 0;
+    for (unsigned int of : shardOf) {
+        mine += of == plan.shard.index ? 1 : 0;
+    }
+    say(plan, "shard " + std::to_string(plan.shard.index) + " of " +
+                  std::to_string(plan.shard.count) + " (from " + plan.shard.source + ")" +
+                  (options.durations.empty() ? "" : ", balanced by " + options.durations) + ": " +
+                  std::to_string(mine) + " of " + std::to_string(plan.suites.size()) + " suites");
+    if (options.list || options.listVariables) {
+        plan.shardOf = std::move(shardOf);
+    } else {
+        keepShard(options, shardOf, plan);
+    }
+    return plan;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

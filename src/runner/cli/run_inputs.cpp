@@ -1,0 +1,73 @@
+#include "runner/cli/run_inputs.h"
+
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "runner/cli/command_line_suites.h"
+#include "runner/cli/output_paths.h"
+#include "runner/cli/program_name.h"
+#include "runner/cli/sharded_run_setup.h"
+#include "runner/plan/run_gate.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+void sayWarnings(const std::vector<std::string>& warnings) {
+    for (const auto& warning : warnings) {
+        std::fprintf(stderr, "%s\n", warning.c_str());
+    }
+}
+
+}  // namespace
+
+bool readRunInputs(Options& options, RunInputs& inputs) {
+    std::vector<std::string> warnings;
+    try {
+        inputs.suites = readSources(options, warnings);
+    } catch (const std::exception& e) {
+        sayWarnings(warnings);
+        std::fprintf(stderr, "%s: %s\n", programName, e.what());
+        return false;
+    }
+    sayWarnings(warnings);
+    // Once the suites have read ${env:...} and before anything starts: the CI engines' shard
+    // variables are read, then taken out of the environment the tests inherit.
+    std::string error;
+    if (!prepareShard(options, inputs.shard, error)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+        return false;
+    }
+    inputs.overrides = Overrides{options.param, options.environment, options.repetition,
+                                 options.timeout, options.variables};
+    for (const auto& warning : unreadVariables(inputs.suites, inputs.overrides)) {
+        std::fprintf(stderr, "%s: %s\n", programName, warning.c_str());
+    }
+    for (const std::string& problem :
+         {findUnknownDependency(inputs.suites), findDependencyCycle(inputs.suites),
+          checkOutputPaths(options.outputs, inputs.suites)}) {
+        if (!problem.empty()) {
+            std::fprintf(stderr, "%s: %s\n", programName, problem.c_str());
+            return false;
+        }
+    }
+    if (!options.resources.empty()) {
+        try {
+            inputs.pools = readResourceFile(options.resources);
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "%s: --resources %s\n", programName, e.what());
+            return false;
+        }
+    }
+    const std::string poolProblem = checkPools(inputs.suites, inputs.pools);
+    if (!poolProblem.empty()) {
+        std::fprintf(stderr, "%s: %s\n", programName, poolProblem.c_str());
+        return false;
+    }
+    return true;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

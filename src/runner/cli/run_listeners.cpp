@@ -1,0 +1,141 @@
+#include "runner/cli/run_listeners.h"
+
+#include <unistd.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "reporter_registry.h"
+#include "runner/cli/program_name.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+bool wantColours() {
+    const char* term = std::getenv("TERM");
+    return ::isatty(1) && std::getenv("NO_COLOR") == nullptr &&
+           !(term != nullptr && std::string(term) == "dumb");
+}
+
+}  // namespace
+
+// One requested output: its file and the reporter of its type (from the one table).
+struct RunListeners::Output {
+    OutputRequest request;
+    std::unique_ptr<reporters::Reporter> reporter;
+};
+
+// The lines the scheduler has to say when one suite runs at a time (a wait for a lock).
+class RunListeners::Notes : public SchedulerView {
+public:
+    explicit Notes(std::FILE* stream) : stream_(stream) {}
+    void note(const std::string& line) override {
+        std::fprintf(stream_, "%s: %s\n", programName, line.c_str());
+        std::fflush(stream_);
+    }
+
+private:
+    std::FILE* stream_;
+};
+
+RunListeners::RunListeners(const Options& options,
+                           const reporters::ReporterSettings& reportSettings, TestListener* web)
+    : captureListener_(capture_, result_), console_(options.verbose) {
+    const bool colours = wantColours();  // before the capture takes stdout
+    std::string captureError;
+    if (capture_.start(captureError)) {
+        result_.addListener(&captureListener_);  // first: output arrives before endTest
+    } else {
+        std::fprintf(stderr, "%s: warning: %s; the tests' output goes to the console\n",
+                     programName, captureError.c_str());
+    }
+
+    const bool parallel = options.jobs > 1;
+    console_.setStream(capture_.console());
+    console_.setColors(colours);
+    console_.showChecks(options.detail);
+    console_.showSummary(!options.noSummary);
+    console_.setRetries(options.retries);
+    if (!options.verbose) {
+        console_.hideUncriticalMessages();
+    }
+    // The outputs read the per-test records only, and show checks only when verbose.
+    collector_.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
+    collector_.setKeepEventLog(false);
+    collector_.setKeepChecks(options.verbose);
+    ParallelConsoleSettings parallelSettings;
+    parallelSettings.verbose = options.verbose;
+    parallelSettings.colours = colours;
+    parallelSettings.summary = !options.noSummary;
+    parallelSettings.retries = options.retries;
+    parallelSettings.statusLine = ::isatty(::fileno(capture_.console())) == 1;
+    parallelConsole_ =
+        std::make_unique<ParallelConsole>(capture_.console(), collector_, parallelSettings);
+    // One line per test as it ends, from any suite (-j N); else the console of one suite at a
+    // time.
+    // 64 KiB per test, but not for every one of 10 000 talkative tests (README: Output limits).
+    collector_.setOutputBudget(8 * 1024 * 1024);
+    if (!parallel) {
+        result_.addListener(&console_);
+    }
+    result_.addListener(&collector_);
+    if (parallel) {
+        result_.addListener(parallelConsole_.get());  // the summary, after the collector has it
+    }
+    // The gate (--fail-fast, depends) listens to each suite's events as they come: the
+    // scheduler adds it to them.
+    reporters::ReporterSettings settings = reportSettings;
+    settings.verbose = options.verbose;
+    settings.summary = !options.noSummary;
+    for (const auto& request : options.outputs) {
+        // The option parser let only the table's types through.
+        outputs_.push_back(
+            {request, reporters::findReporterType(request.type)->make(collector_, settings)});
+    }
+    for (const auto& output : outputs_) {
+        result_.addListener(output.reporter.get());
+    }
+    if (web != nullptr) {
+        result_.addListener(web);
+    }
+    if (!parallel) {
+        notes_ = std::make_unique<Notes>(capture_.console());
+    }
+}
+
+RunListeners::~RunListeners() = default;
+
+SchedulerView& RunListeners::schedulerView() {
+    if (notes_) {
+        return *notes_;
+    }
+    return *parallelConsole_;
+}
+
+void RunListeners::quit() {
+    result_.removeListener(&collector_);
+    for (const auto& output : outputs_) {
+        result_.removeListener(output.reporter.get());
+    }
+    collector_.interruptOpen(TestMessage("interrupted: the runner quit"));
+    writeOutputs(capture_.console());
+}
+
+bool RunListeners::writeOutputs(std::FILE* console) const {
+    bool ok = true;
+    for (const auto& output : outputs_) {
+        TestMessage error;
+        if (!output.reporter->write(output.request.file, &error)) {
+            std::fprintf(console, "%s: cannot write the %s output %s: %s\n", programName,
+                         output.request.type.c_str(), output.request.file.c_str(),
+                         error.toString().c_str());
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,76 @@
+#include "runner/cli/sharded_run_setup.h"
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+
+#include "runner/plan/shard_split.h"
+#include "runner/reports/report_reader.h"
+
+namespace robottestingframework {
+namespace runner {
+
+bool prepareShard(Options& options, ShardChoice& choice, std::string& error) {
+    if (!chooseShard(
+            options.shard, [](const char* name) { return std::getenv(name); }, choice, error)) {
+        return false;
+    }
+    // Bazel: the JUnit report goes where Bazel collects it (--no-output too: Bazel reads it),
+    // unless the command line already writes one there.
+    const char* bazelXml = std::getenv("XML_OUTPUT_FILE");
+    if (bazelXml != nullptr && *bazelXml != '\0') {
+        bool written = false;
+        for (const auto& output : options.outputs) {
+            written = written || (output.type == "junit" && output.file == bazelXml);
+        }
+        if (!written) {
+            options.outputs.push_back(OutputRequest{"junit", bazelXml});
+        }
+    }
+    const char* scratch = std::getenv("TEST_TMPDIR");
+    if (scratch != nullptr && *scratch != '\0') {
+        ::setenv("TMPDIR", scratch, 1);
+    }
+    // Bazel asks a test that shards to say so by touching this file.
+    const char* status = std::getenv("TEST_SHARD_STATUS_FILE");
+    if (status != nullptr && *status != '\0' && choice.sharded) {
+        std::ofstream touch(status, std::ios::app);
+        if (!touch) {
+            error = "TEST_SHARD_STATUS_FILE " + std::string(status) + ": cannot be written";
+            return false;
+        }
+    }
+    for (const auto& name : shardVariables()) {
+        ::unsetenv(name.c_str());
+    }
+    return true;
+}
+
+std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigned int count,
+                                   const std::string& durations) {
+    std::map<std::string, long long> known;
+    if (!durations.empty()) {
+        for (const auto& suite : readReport("--durations", durations).suites) {
+            known[suite.name] = std::llround(suite.seconds * 1000.0);
+        }
+    }
+    std::vector<ShardItem> items;
+    for (const auto& suite : suites) {
+        ShardItem item;
+        // By name, then file (as given): the same on every machine running the same command.
+        item.id = suite.name + '\n' + suite.where.file;
+        for (const auto& resource : suite.resources) {
+            if (!resource.lock.empty()) {
+                item.locks.push_back(resource.lock);
+            }
+        }
+        const auto found = known.find(suite.name);
+        item.milliseconds = found == known.end() ? -1 : found->second;
+        items.push_back(std::move(item));
+    }
+    return assignShards(items, count, !durations.empty());
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

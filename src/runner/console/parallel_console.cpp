@@ -1,0 +1,225 @@
+#include "runner/console/parallel_console.h"
+
+#include <robottestingframework/TestSuite.h>
+
+#include "summary.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+using namespace reporters::colour;
+using Kind = ResultEvent::Kind;
+
+const char* const clearLine = "\r\033[K";
+
+}  // namespace
+
+// Turns one suite's events into lines: a test's line when it ends.
+class ParallelConsole::Live : public TestListener {
+public:
+    Live(ParallelConsole& console, const TestSuite& suite) : console_(console), suite_(suite) {}
+
+    void startTest(const Test* test) override {
+        Open& open = open_()[test];
+        const unsigned int attempts = open.attempts;  // a retry starts again
+        open = Open();
+        open.started = std::chrono::steady_clock::now();
+        open.attempts = attempts;
+    }
+    void endTest(const Test* test) override {
+        auto found = open_().find(test);
+        if (found == open_().end()) {
+            return;
+        }
+        const Open& open = found->second;
+        const double took =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - open.started).count();
+        // As the -j1 console: an attempt that will run again did not decide the test's state
+        // (an interrupted one never runs again), and a pass after a retry is flaky.
+        const bool retried = isFailure(open.status) && open.status != TestStatus::Interrupted &&
+                             open.attempts < console_.settings_.retries;
+        const TestStatus shown = open.status == TestStatus::Passed && open.attempts > 0
+                                     ? TestStatus::Flaky
+                                     : open.status;
+        char word[16];
+        std::snprintf(word, sizeof(word), "%-11s",
+                      retried ? "RETRY" : reporters::statusWord(shown));
+        std::string text = "  ";
+        if (console_.settings_.colours) {
+            text += retried ? yellow : reporters::colourOf(shown);
+            text += word;
+            text += plain;
+        } else {
+            text += word;
+        }
+        text += " " + suite_.getName() + " :: " + (test != nullptr ? test->getName() : "") + "  (" +
+                reporters::seconds(took) + ")";
+        console_.line(text);
+        for (const auto& said : open.lines) {
+            console_.line(said);
+        }
+        if (retried) {
+            // retryTest comes after endTest: keep the count of attempts for it.
+            const unsigned int attempts = found->second.attempts;
+            found->second = Open();
+            found->second.attempts = attempts;
+        } else {
+            open_().erase(found);
+        }
+    }
+    void addFailure(const Test* test, TestMessage msg) override { raise(Kind::Failure, test, msg); }
+    void addError(const Test* test, TestMessage msg) override { raise(Kind::Error, test, msg); }
+    void addCrash(const Test* test, TestMessage msg) override { raise(Kind::Crash, test, msg); }
+    void addTimeout(const Test* test, TestMessage msg) override { raise(Kind::Timeout, test, msg); }
+    void addInterrupted(const Test* test, TestMessage msg) override {
+        raise(Kind::Interrupted, test, msg);
+    }
+    void addSkipped(const Test* test, TestMessage msg) override { raise(Kind::Skipped, test, msg); }
+    void addCheck(const Test* test, TestMessage msg, bool passed) override {
+        if (!passed) {
+            raise(Kind::Check, test, msg, passed);
+        }
+    }
+    void addReport(const Test* test, TestMessage msg) override {
+        if (console_.settings_.verbose) {
+            raise(Kind::Report, test, msg);
+        }
+    }
+    void addEvent(const Test* test, const ResultEvent& event) override {
+        raise(event.kind, test, event.message, event.passed);
+    }
+    void addOutput(const Test* test, const std::string& text) override {
+        auto found = open_().find(test);
+        if (!console_.settings_.verbose || found == open_().end()) {
+            return;
+        }
+        std::size_t begin = 0;
+        while (begin < text.size()) {
+            std::size_t end = text.find('\n', begin);
+            if (end == std::string::npos) {
+                end = text.size();
+            }
+            found->second.lines.push_back("      | " + text.substr(begin, end - begin));
+            begin = end + 1;
+        }
+    }
+    void retryTest(const Test* test, TestMessage msg) override {
+        console_.line("  retry       " + suite_.getName() +
+                      " :: " + (test != nullptr ? test->getName() : "") + ": " +
+                      reporters::messageText(msg));
+        Open& open = open_()[test];
+        const unsigned int attempts = open.attempts + 1;
+        open = Open();
+        open.started = std::chrono::steady_clock::now();
+        open.attempts = attempts;
+    }
+    void endTestSuite(const TestSuite* suite) override {
+        if (suite == nullptr) {
+            return;
+        }
+        const bool ok = suite->succeeded();
+        std::string text = "  suite ";
+        if (console_.settings_.colours) {
+            text += ok ? green : red;
+        }
+        text += ok ? "passed" : "FAILED";
+        text += console_.settings_.colours ? plain : "";
+        text += "  " + suite->getName();
+        console_.line(text);
+    }
+
+private:
+    std::map<const Test*, Open>& open_() { return console_.open_; }
+
+    // A message of `kind`: its word and the state it gives come from the tables.
+    void raise(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
+               bool passed = true) {
+        const TestStatus status = stateOf(kind);
+        const std::string label = reporters::eventLabel(kind, passed);
+        auto found = open_().find(test);
+        const std::string text = "      " + label + ": " + reporters::messageText(msg);
+        if (found == open_().end()) {
+            // About the suite itself (a fixture that failed): said at once.
+            console_.line("  " + suite_.getName() + ": " + label + ": " +
+                          reporters::messageText(msg));
+            return;
+        }
+        if (status > found->second.status) {
+            found->second.status = status;
+        }
+        found->second.lines.push_back(text);
+    }
+
+    ParallelConsole& console_;
+    const TestSuite& suite_;
+};
+
+ParallelConsole::ParallelConsole(std::FILE* stream, const TestResultCollector& collector,
+                                 ParallelConsoleSettings settings)
+    : stream_(stream), collector_(collector), settings_(settings) {}
+
+void ParallelConsole::line(const std::string& text) {
+    if (!status_.empty()) {
+        std::fputs(clearLine, stream_);
+    }
+    std::fwrite(text.data(), 1, text.size(), stream_);
+    std::fputc('\n', stream_);
+    if (!status_.empty()) {
+        std::fputs(status_.c_str(), stream_);
+    }
+    if (settings_.statusLine) {
+        std::fflush(stream_);
+    }
+}
+
+void ParallelConsole::events(const TestSuite& suite,
+                             const std::vector<SuiteEvents::Event>& events) {
+    Live live(*this, suite);
+    for (const auto& event : events) {
+        live.onEvent(event);
+    }
+}
+
+void ParallelConsole::note(const std::string& text) {
+    line("robottestingframework-testrunner: " + text);
+}
+
+void ParallelConsole::running(const std::string& text) {
+    if (!settings_.statusLine) {
+        return;
+    }
+    std::string shown = text.empty() ? "" : "running: " + text;
+    if (shown.size() > 120) {
+        shown = shown.substr(0, 117) + "...";
+    }
+    std::fputs(clearLine, stream_);
+    std::fputs(shown.c_str(), stream_);
+    std::fflush(stream_);
+    status_ = shown;
+}
+
+void ParallelConsole::endTestRunner() {
+    if (!status_.empty()) {
+        std::fputs(clearLine, stream_);
+        status_.clear();
+    }
+    line("");
+    if (settings_.summary) {
+        line("Summary");
+        for (const std::string& text : reporters::summaryLines(collector_)) {
+            line(text);
+        }
+    }
+    const std::string closing = reporters::closingLine(collector_);
+    if (settings_.colours) {
+        line(std::string(collector_.failedCount() > 0 ? red : green) + closing + plain);
+    } else {
+        line(closing);
+    }
+    std::fflush(stream_);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,211 @@
+#include "runner/execution/isolated_executor.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <sstream>
+
+#include "clock.h"
+#include "event_relay.h"
+#include "plugin_locator.h"
+#include "process.h"
+#include "runner/execution/isolated_fixture.h"
+#include "signal_name.h"
+#include "test_loader.h"
+
+#include "worker_process.h"
+
+namespace robottestingframework {
+namespace isolation {
+
+namespace {
+
+using Kind = ResultEvent::Kind;
+
+std::string seconds(double value) {
+    std::ostringstream text;
+    text << value << " s";
+    return text.str();
+}
+
+std::string said(const EventRelay& relay) {
+    return relay.lastSaid().empty() ? "it reported nothing before"
+                                    : "last reported: " + relay.lastSaid();
+}
+
+void drain(int fd) {
+    char buffer[64];
+    while (::read(fd, buffer, sizeof(buffer)) > 0) {
+    }
+}
+
+}  // namespace
+
+IsolatedExecutor::IsolatedExecutor(IsolationOptions options)
+    : options_(std::move(options)), server_(std::make_shared<ForkServer>()) {
+    platform::makePipe(wakeRead_, wakeWrite_);
+    platform::setNonBlocking(wakeRead_.get());
+    platform::setNonBlocking(wakeWrite_.get());
+}
+
+IsolatedExecutor::~IsolatedExecutor() {
+    shutdown();
+}
+
+bool IsolatedExecutor::start(std::string& error) {
+    if (server_->running()) {
+        return true;
+    }
+    std::string worker = options_.workerPath.empty() ? findWorker() : options_.workerPath;
+    if (worker.empty()) {
+        error = "cannot find robottestingframework-worker (next to the runner, or set RTF_WORKER)";
+        return false;
+    }
+    return server_->start(worker, error, options_.verbose);
+}
+
+void IsolatedExecutor::shutdown() {
+    if (ownsServer_) {
+        server_->stop();
+    }
+}
+
+std::unique_ptr<runner::TestExecutor> IsolatedExecutor::makeLane() {
+    auto lane = std::make_unique<IsolatedExecutor>(options_);
+    lane->server_ = server_;
+    lane->ownsServer_ = false;
+    return lane;
+}
+
+void IsolatedExecutor::interrupt() {
+    interrupted_ = true;
+    char byte = 1;
+    // Async-signal-safe: may be called from a signal handler as well as another thread.
+    ssize_t ignored = ::write(wakeWrite_.get(), &byte, 1);
+    (void)ignored;
+}
+
+TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestResult& result) {
+    self.clearCriticalError();
+    EventRelay relay(self, result);
+    drain(wakeRead_.get());
+    interrupted_ = false;
+
+    WorkRequest request;
+    request.name = spec.name;
+    request.param = spec.param;
+    request.environment = spec.environment;
+    request.repetition = spec.repetition == 0 ? 1 : spec.repetition;
+    request.variables = environment_;
+
+    std::string error;
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
+                                 request.type, error)) {
+        relay.add(Kind::Failure, TestMessage("cannot load " + spec.plugin, error));
+        relay.end("");
+        return relay.status();
+    }
+    WorkerProcess worker;
+    if (start(error)) {
+        worker.start(*server_, request, error, false);  // the pid comes with the events
+    }
+    if (!error.empty()) {
+        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker", error));
+        relay.end("");
+        return relay.status();
+    }
+
+    // The test starts with its worker (as in-process): one that hangs while loading and times
+    // out reports the time it took, not the moment its timeout was reported.
+    relay.start();
+    enum class Stop { None, Timeout, Interrupt, Garbage } why = Stop::None;
+    platform::Deadline deadline(spec.timeout);
+    std::vector<WireRecord> records;
+    for (;;) {
+        records.clear();
+        bool woken = false;
+        worker.pump(deadline.remainingMs(), records, wakeRead_.get(), &woken);
+        for (const WireRecord& record : records) {
+            relay.relay(record);
+        }
+        // Finished is the worker's last word (only _exit follows): the test is over.
+        if (worker.exited() || relay.finished()) {
+            break;
+        }
+        if (woken || interrupted_) {
+            why = Stop::Interrupt;
+        } else if (deadline.expired()) {
+            why = Stop::Timeout;
+        } else if (worker.corrupt()) {
+            why = Stop::Garbage;
+        }
+        if (why != Stop::None) {
+            break;
+        }
+    }
+
+    bool polite = true;
+    if (why != Stop::None) {
+        records.clear();
+        polite = worker.stop(options_.killGrace, records);
+        for (const WireRecord& record : records) {
+            // A test that stops when asked (an exec test) says it was interrupted: that is our
+            // SIGTERM, reported below as what it was.
+            if (record.kind != WireKind::Event || record.event != Kind::Interrupted) {
+                relay.relay(record);
+            }
+        }
+    }
+    if (relay.finished() && !worker.exited()) {
+        worker.drainOutput();
+    }
+    platform::ExitStatus ending = platform::ExitStatus::fromWaitStatus(worker.waitStatus());
+    std::string forced = polite ? "" : " (it ignored SIGTERM and was killed)";
+    if (why == Stop::Timeout) {
+        relay.add(Kind::Timeout,
+                  TestMessage("timed out after " + seconds(spec.timeout) + forced, said(relay)));
+    } else if (why == Stop::Interrupt) {
+        relay.add(Kind::Interrupted, TestMessage("interrupted" + forced, said(relay)));
+    } else if (why == Stop::Garbage || worker.corrupt()) {
+        relay.add(Kind::Error, TestMessage("the worker sent unreadable events; it was stopped",
+                                           ending.toString()));
+    } else if (!relay.finished() && worker.pid() <= 0) {
+        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker",
+                                           "the fork server could not start a worker"));
+    } else if (!relay.finished()) {
+        // The worker died before it finished (in the test, or destroying it after endTest).
+        if (ending.signaled) {
+            const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
+            relay.add(Kind::Crash,
+                      TestMessage("crashed" + in + ": " + platform::signalName(ending.signal) +
+                                      " (" + platform::signalDescription(ending.signal) + ")",
+                                  said(relay)));
+        } else {
+            const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
+            relay.add(Kind::Error, TestMessage("exited with status " + std::to_string(ending.code) +
+                                                   " before the test ended" + in,
+                                               said(relay)));
+        }
+    }
+    relay.end(worker.output().take());
+    return relay.status();
+}
+
+std::unique_ptr<FixtureManager> IsolatedExecutor::makeFixture(const runner::FixtureSpec& spec,
+                                                              std::string& error) {
+    WorkRequest request;
+    request.role = WorkRequest::Role::Fixture;
+    request.param = spec.param;
+    request.name = spec.plugin;
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
+                                 request.type, error)) {
+        return nullptr;
+    }
+    if (!start(error)) {
+        return nullptr;
+    }
+    return std::unique_ptr<FixtureManager>(new IsolatedFixture(server_, request, options_));
+}
+
+}  // namespace isolation
+}  // namespace robottestingframework

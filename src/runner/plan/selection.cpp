@@ -1,0 +1,347 @@
+#include "runner/plan/selection.h"
+
+#include <algorithm>
+#include <cctype>
+
+#include "runner/model/stand_in_test.h"
+#include "runner/plan/run_gate.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// Tags compare without case and spaces, as Robot Framework's do.
+std::string normalized(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c != ' ' && c != '\t') {
+            out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        }
+    }
+    return out;
+}
+
+struct Token {
+    enum class Kind { Tag, And, Or, Not } kind;
+    std::string text;
+    std::size_t column;  // 1-based
+};
+
+// The operators need no spaces around them ("armANDslow"), as in Robot Framework.
+std::vector<Token> tokenize(const std::string& text) {
+    std::vector<Token> tokens;
+    std::string tag;
+    std::size_t tagColumn = 0;
+    auto endTag = [&] {
+        if (!normalized(tag).empty()) {
+            tokens.push_back({Token::Kind::Tag, normalized(tag), tagColumn});
+        }
+        tag.clear();
+    };
+    for (std::size_t i = 0; i < text.size();) {
+        const struct {
+            const char* word;
+            Token::Kind kind;
+        } operators[] = {{"AND", Token::Kind::And},
+                         {"&", Token::Kind::And},
+                         {"OR", Token::Kind::Or},
+                         {"NOT", Token::Kind::Not}};
+        bool found = false;
+        for (const auto& op : operators) {
+            const std::size_t length = std::char_traits<char>::length(op.word);
+            if (text.compare(i, length, op.word) == 0) {
+                endTag();
+                tokens.push_back({op.kind, op.word, i + 1});
+                i += length;
+                found = true;
+                break;
+            }
+        }
+        if (!found) {
+            if (tag.empty() || normalized(tag).empty()) {
+                tagColumn = i + 1;
+            }
+            tag += text[i++];
+        }
+    }
+    endTag();
+    return tokens;
+}
+
+}  // namespace
+
+struct TagExpression::Node {
+    Token::Kind kind = Token::Kind::Tag;
+    std::string pattern;
+    std::unique_ptr<Node> left;  // null for a leading NOT
+    std::unique_ptr<Node> right;
+
+    bool matches(const std::vector<std::string>& tags) const {
+        switch (kind) {
+            case Token::Kind::Tag:
+                return std::any_of(tags.begin(), tags.end(), [this](const std::string& tag) {
+                    return globMatches(pattern, normalized(tag));
+                });
+            case Token::Kind::And:
+                return left->matches(tags) && right->matches(tags);
+            case Token::Kind::Or:
+                return left->matches(tags) || right->matches(tags);
+            case Token::Kind::Not:
+                return (!left || left->matches(tags)) && !right->matches(tags);
+        }
+        return false;
+    }
+};
+
+namespace {
+
+class ExpressionParser {
+public:
+    explicit ExpressionParser(std::vector<Token> tokens) : tokens_(std::move(tokens)) {}
+
+    // Lowest first: NOT, then OR, then AND.
+    std::unique_ptr<TagExpression::Node> parseNot() {
+        std::unique_ptr<TagExpression::Node> left;
+        if (!atKind(Token::Kind::Not)) {
+            left = parseBinary(Token::Kind::Or);
+        }
+        while (atKind(Token::Kind::Not)) {
+            const Token& op = tokens_[next_++];
+            auto node = std::make_unique<TagExpression::Node>();
+            node->kind = Token::Kind::Not;
+            node->left = std::move(left);
+            node->right = operand(op, [this] { return parseBinary(Token::Kind::Or); });
+            left = std::move(node);
+        }
+        return left;
+    }
+
+    bool done() const { return next_ == tokens_.size(); }
+    const Token& current() const { return tokens_[next_]; }
+
+private:
+    bool atKind(Token::Kind kind) const { return !done() && tokens_[next_].kind == kind; }
+
+    template <typename Parse>
+    std::unique_ptr<TagExpression::Node> operand(const Token& op, Parse parse) {
+        if (done() || tokens_[next_].kind != Token::Kind::Tag) {
+            throw std::string("no tag after " + op.text + " at column " +
+                              std::to_string(op.column));
+        }
+        return parse();
+    }
+
+    std::unique_ptr<TagExpression::Node> parseBinary(Token::Kind kind) {
+        auto left = kind == Token::Kind::Or ? parseBinary(Token::Kind::And) : parseTag();
+        while (atKind(kind)) {
+            const Token& op = tokens_[next_++];
+            auto node = std::make_unique<TagExpression::Node>();
+            node->kind = kind;
+            node->left = std::move(left);
+            node->right = operand(op, [this, kind] {
+                return kind == Token::Kind::Or ? parseBinary(Token::Kind::And) : parseTag();
+            });
+            left = std::move(node);
+        }
+        return left;
+    }
+
+    std::unique_ptr<TagExpression::Node> parseTag() {
+        if (done()) {
+            throw std::string("no tag at the end");
+        }
+        const Token& token = tokens_[next_];
+        if (token.kind != Token::Kind::Tag) {
+            throw std::string("no tag before " + token.text + " at column " +
+                              std::to_string(token.column));
+        }
+        ++next_;
+        auto node = std::make_unique<TagExpression::Node>();
+        node->pattern = token.text;
+        return node;
+    }
+
+    std::vector<Token> tokens_;
+    std::size_t next_ = 0;
+};
+
+}  // namespace
+
+TagExpression::TagExpression() = default;
+TagExpression::~TagExpression() = default;
+TagExpression::TagExpression(TagExpression&&) noexcept = default;
+TagExpression& TagExpression::operator=(TagExpression&&) noexcept = default;
+
+bool TagExpression::parse(const std::string& text, TagExpression& expression, std::string& error) {
+    std::vector<Token> tokens = tokenize(text);
+    if (tokens.empty()) {
+        error = "an empty tag expression (expected e.g. arm, armANDslow, arm OR leg, NOT slow)";
+        return false;
+    }
+    ExpressionParser parser(tokens);
+    try {
+        expression.root_ = parser.parseNot();
+        if (!parser.done()) {
+            throw std::string("unexpected " + parser.current().text + " at column " +
+                              std::to_string(parser.current().column));
+        }
+    } catch (const std::string& problem) {
+        error =
+            problem + " of '" + text + "' (expected e.g. arm, armANDslow, arm OR leg, NOT slow)";
+        return false;
+    }
+    return true;
+}
+
+bool TagExpression::matches(const std::vector<std::string>& tags) const {
+    return root_ && root_->matches(tags);
+}
+
+bool globMatches(const std::string& pattern, const std::string& text) {
+    // Iterative, with one backtrack point: linear enough for names and tags.
+    std::size_t p = 0;
+    std::size_t t = 0;
+    std::size_t star = std::string::npos;
+    std::size_t mark = 0;
+    while (t < text.size()) {
+        if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
+            ++p;
+            ++t;
+        } else if (p < pattern.size() && pattern[p] == '*') {
+            star = p++;
+            mark = t;
+        } else if (star != std::string::npos) {
+            p = star + 1;
+            t = ++mark;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') {
+        ++p;
+    }
+    return p == pattern.size();
+}
+
+bool NameFilter::parse(const std::string& text, NameFilter& filter, std::string& error) {
+    const std::string example = " (expected e.g. 'arm/*', 'arm/*:leg/*-*slow*')";
+    if (text.empty()) {
+        error = "an empty filter" + example;
+        return false;
+    }
+    const std::size_t dash = text.find('-');
+    auto split = [&](std::size_t begin, std::size_t end, std::vector<std::string>& into) {
+        std::size_t start = begin;
+        for (std::size_t i = begin; i <= end; ++i) {
+            if (i == end || text[i] == ':') {
+                if (i == start) {
+                    error = "an empty pattern at column " + std::to_string(start + 1) + " of '" +
+                            text + "'" + example;
+                    return false;
+                }
+                into.push_back(text.substr(start, i - start));
+                start = i + 1;
+            }
+        }
+        return true;
+    };
+    NameFilter parsed;
+    if (dash != 0 && !split(0, dash == std::string::npos ? text.size() : dash, parsed.positive_)) {
+        return false;
+    }
+    if (dash != std::string::npos && !split(dash + 1, text.size(), parsed.negative_)) {
+        return false;
+    }
+    if (parsed.positive_.empty()) {
+        parsed.positive_.push_back("*");
+    }
+    filter = std::move(parsed);
+    return true;
+}
+
+bool NameFilter::matches(const std::string& id) const {
+    auto any = [&id](const std::vector<std::string>& patterns) {
+        return std::any_of(patterns.begin(), patterns.end(),
+                           [&id](const std::string& pattern) { return globMatches(pattern, id); });
+    };
+    return any(positive_) && !any(negative_);
+}
+
+namespace {
+
+bool selected(const Selection& selection, const SuiteSpec& suite, const TestSpec& test) {
+    const std::string id = suite.name + "/" + PluginTest::displayName(test);
+    for (const auto& filter : selection.filters) {
+        if (!filter.matches(id)) {
+            return false;
+        }
+    }
+    for (const auto& expression : selection.exclude) {
+        if (expression.matches(test.tags)) {
+            return false;
+        }
+    }
+    return selection.include.empty() ||
+           std::any_of(selection.include.begin(), selection.include.end(),
+                       [&test](const TagExpression& e) { return e.matches(test.tags); });
+}
+
+}  // namespace
+
+void applySelection(std::vector<SuiteSpec>& suites, const Selection& selection) {
+    if (selection.empty()) {
+        return;
+    }
+    std::vector<std::vector<bool>> keep;
+    std::vector<const TestSpec*> left;  // the tests not selected
+    std::vector<const TestSpec*> kept;
+    for (const auto& suite : suites) {
+        keep.emplace_back();
+        for (const auto& test : suite.tests) {
+            keep.back().push_back(selected(selection, suite, test));
+            (keep.back().back() ? kept : left).push_back(&test);
+        }
+    }
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        for (std::size_t t = 0; t < suites[s].tests.size(); ++t) {
+            TestSpec& test = suites[s].tests[t];
+            if (!keep[s][t]) {
+                continue;
+            }
+            // A dependency only on tests left out: skipped, and said why.
+            std::vector<std::string> depends;
+            for (const auto& dependency : test.depends) {
+                auto namedBy = [&dependency](const TestSpec* other) {
+                    return dependencyNames(dependency, *other);
+                };
+                if (std::none_of(kept.begin(), kept.end(), namedBy) &&
+                    std::any_of(left.begin(), left.end(), namedBy)) {
+                    if (test.skipReason.empty()) {
+                        test.skipReason = "depends on " + dependency + ", which is not selected";
+                    }
+                } else {
+                    depends.push_back(dependency);
+                }
+            }
+            test.depends = std::move(depends);
+        }
+    }
+    std::vector<SuiteSpec> chosen;
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        std::vector<TestSpec> tests;
+        for (std::size_t t = 0; t < suites[s].tests.size(); ++t) {
+            if (keep[s][t]) {
+                tests.push_back(std::move(suites[s].tests[t]));
+            }
+        }
+        if (!tests.empty()) {
+            suites[s].tests = std::move(tests);
+            chosen.push_back(std::move(suites[s]));
+        }
+    }
+    suites = std::move(chosen);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,61 @@
+// Which tests of the run are selected: --tag / --exclude-tag (tag expressions, as Robot
+// Framework writes them) and --filter (name patterns on "suite/test", as GoogleTest writes
+// them). A test not selected is not run and not reported.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runner/model/suite_model.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// "arm", "armANDslow", "arm OR leg", "arm NOT slow", "NOT slow", "a*", "l?g": AND (or &) binds
+// tighter than OR, OR tighter than NOT; tags and patterns ignore case and spaces.
+class TagExpression {
+public:
+    struct Node;
+    TagExpression();
+    ~TagExpression();
+    TagExpression(TagExpression&&) noexcept;
+    TagExpression& operator=(TagExpression&&) noexcept;
+
+    // False with `error` ("... at column N of 'TEXT'") when `text` is not an expression.
+    static bool parse(const std::string& text, TagExpression& expression, std::string& error);
+    bool matches(const std::vector<std::string>& tags) const;
+
+private:
+    std::unique_ptr<Node> root_;
+};
+
+// "arm/*:leg/*-*slow*": patterns separated by ':', the negative ones after '-'; '*' any text,
+// '?' one character; matched against the whole "suite/test".
+class NameFilter {
+public:
+    static bool parse(const std::string& text, NameFilter& filter, std::string& error);
+    bool matches(const std::string& id) const;
+
+private:
+    std::vector<std::string> positive_;
+    std::vector<std::string> negative_;
+};
+
+struct Selection {
+    std::vector<TagExpression> include;  // --tag: a test matching any is selected
+    std::vector<TagExpression> exclude;  // --exclude-tag: a test matching any is not
+    std::vector<NameFilter> filters;     // --filter: a test must match each
+    bool empty() const { return include.empty() && exclude.empty() && filters.empty(); }
+};
+
+// "*", "?" glob, the whole text.
+bool globMatches(const std::string& pattern, const std::string& text);
+
+// Takes out of `suites` the tests `selection` does not select, and the suites left without a
+// test (their fixtures are then never set up). A selected test that depends on a test not
+// selected is kept, to be skipped with that reason (TestSpec::skipReason).
+void applySelection(std::vector<SuiteSpec>& suites, const Selection& selection);
+
+}  // namespace runner
+}  // namespace robottestingframework

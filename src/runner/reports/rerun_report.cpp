@@ -1,0 +1,61 @@
+#include "runner/reports/rerun_report.h"
+
+#include <algorithm>
+
+#include "runner/model/stand_in_test.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// The states a rerun takes again, as the reports spell them (TestStatus's toString).
+bool rerunState(const std::string& state) {
+    return state == "failed" || state == "error" || state == "crashed" || state == "timed out";
+}
+
+}  // namespace
+
+std::vector<FailedTest> failedTests(const Report& report) {
+    std::vector<FailedTest> failed;
+    for (const ReportedTest& test : report.tests) {
+        if (rerunState(test.state)) {
+            failed.push_back({test.suite, test.name});
+        }
+    }
+    return failed;
+}
+
+std::vector<FailedTest> readFailedTests(const std::string& path) {
+    return failedTests(readReport("--rerun-failed", path));
+}
+
+std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path) {
+    return failedTests(parseReport("--rerun-failed", text, path));
+}
+
+void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed) {
+    std::vector<SuiteSpec> chosen;
+    for (auto& suite : suites) {
+        std::vector<TestSpec> tests;
+        for (auto& test : suite.tests) {
+            const bool named =
+                std::any_of(failed.begin(), failed.end(), [&](const FailedTest& other) {
+                    return other.suite == suite.name &&
+                           (other.test == test.name || other.test == PluginTest::displayName(test));
+                });
+            if (named) {
+                test.depends.clear();  // what it depends on passed in the earlier run
+                tests.push_back(std::move(test));
+            }
+        }
+        if (!tests.empty()) {
+            suite.tests = std::move(tests);
+            chosen.push_back(std::move(suite));
+        }
+    }
+    suites = std::move(chosen);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,232 @@
+#include "runner/schedule/resources.h"
+
+#include <algorithm>
+#include <cctype>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+using json = nlohmann::json;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw std::runtime_error(path + ": " + what);
+}
+
+// CTest's rule for resource type and id names: lower-case letters, digits and _, a type not
+// starting with a digit. We also take upper-case letters, '-' and '.' in ids.
+bool isPoolName(const std::string& name) {
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) {
+        return false;
+    }
+    return std::all_of(name.begin(), name.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+    });
+}
+
+bool isItemId(const std::string& id) {
+    return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
+}
+
+}  // namespace
+
+ResourcePools readResourceFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        fail(path, "cannot read the resource file");
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseResourceFile(text.str(), path);
+}
+
+ResourcePools parseResourceFile(const std::string& text, const std::string& path) {
+    json document;
+    try {
+        document = json::parse(text);
+    } catch (const json::exception& e) {
+        // parse_error, or out_of_range for a number too large for a double.
+        fail(path, std::string("not valid JSON: ") + e.what());
+    }
+    const std::string shape =
+        " (expected {\"version\": {\"major\": 1, \"minor\": 0}, \"local\": [{\"POOL\": "
+        "[{\"id\": \"ITEM\", \"slots\": 1}, ...]}]})";
+    if (!document.is_object() || !document.contains("version") || !document.contains("local")) {
+        fail(path, "not a resource spec file" + shape);
+    }
+    const json& version = document["version"];
+    if (!version.is_object() || !version.contains("major") || version["major"] != 1) {
+        fail(path, "\"version\" must be {\"major\": 1, \"minor\": 0}" + shape);
+    }
+    const json& local = document["local"];
+    if (!local.is_array() || local.size() != 1 || !local[0].is_object()) {
+        fail(path, "\"local\" must be an array of one object" + shape);
+    }
+    ResourcePools pools;
+    pools.file = path;
+    for (const auto& pool : local[0].items()) {
+        const std::string name = pool.key();
+        if (!isPoolName(name)) {
+            fail(path, "pool \"" + name +
+                           "\": a pool name is letters, digits and _, not starting with a digit");
+        }
+        if (!pool.value().is_array()) {
+            fail(path, "pool \"" + name + "\" must be an array of items" + shape);
+        }
+        std::set<std::string> ids;
+        std::vector<PoolItem>& items = pools.pools[name];
+        for (const json& item : pool.value()) {
+            if (!item.is_object() || !item.contains("id") || !item["id"].is_string()) {
+                fail(path, "pool \"" + name + "\": each item is {\"id\": \"...\"}" + shape);
+            }
+            PoolItem parsed;
+            parsed.id = item["id"].get<std::string>();
+            if (!isItemId(parsed.id)) {
+                fail(path, "pool \"" + name + "\": item id \"" + parsed.id +
+                               "\" is not letters, digits, _, - and .");
+            }
+            if (!ids.insert(parsed.id).second) {
+                fail(path, "pool \"" + name + "\": item id \"" + parsed.id + "\" given twice");
+            }
+            if (item.contains("slots")) {
+                const json& slots = item["slots"];
+                if (!slots.is_number_integer() || slots.get<long long>() < 1 ||
+                    slots.get<long long>() > 1000000) {
+                    fail(path, "pool \"" + name + "\", item \"" + parsed.id +
+                                   "\": \"slots\" must be a whole number from 1 to 1000000");
+                }
+                parsed.slots = slots.get<unsigned int>();
+            }
+            items.push_back(parsed);
+        }
+    }
+    return pools;
+}
+
+std::string checkPools(const std::vector<SuiteSpec>& suites, const ResourcePools& pools) {
+    for (const auto& suite : suites) {
+        for (const auto& resource : suite.resources) {
+            if (resource.pool.empty()) {
+                continue;
+            }
+            auto found = pools.pools.find(resource.pool);
+            if (found == pools.pools.end()) {
+                std::string known;
+                for (const auto& pool : pools.pools) {
+                    known += (known.empty() ? "" : ", ") + pool.first;
+                }
+                return resource.where.toString() + ": pool \"" + resource.pool +
+                       "\" does not exist" +
+                       (pools.file.empty() ? std::string(" (no --resources FILE gives pools)")
+                                           : " in " + pools.file +
+                                                 (known.empty() ? " (it has no pool)"
+                                                                : " (it has " + known + ")"));
+            }
+            if (resource.count > found->second.size()) {
+                return resource.where.toString() + ": pool \"" + resource.pool + "\" of " +
+                       pools.file + " has " + std::to_string(found->second.size()) +
+                       " item(s); suite \"" + suite.name + "\" takes " +
+                       std::to_string(resource.count) + " and could never run";
+            }
+        }
+    }
+    return {};
+}
+
+std::string resourceVariable(const std::string& pool) {
+    std::string name = "RTF_RESOURCE_";
+    for (char c : pool) {
+        name += std::isalnum(static_cast<unsigned char>(c))
+                    ? static_cast<char>(std::toupper(static_cast<unsigned char>(c)))
+                    : '_';
+    }
+    return name;
+}
+
+ResourceTable::ResourceTable(const ResourcePools& pools) : pools_(pools.pools) {
+    for (const auto& pool : pools_) {
+        used_[pool.first].assign(pool.second.size(), 0);
+    }
+}
+
+bool ResourceTable::take(const SuiteSpec& suite, const std::string& holder, Held& held,
+                         std::string& busyLock, std::string& busyPool) {
+    busyLock.clear();
+    busyPool.clear();
+    std::set<std::string> locks;  // sorted, each once
+    std::map<std::string, unsigned int> wanted;
+    for (const auto& resource : suite.resources) {
+        if (!resource.lock.empty()) {
+            locks.insert(resource.lock);
+        } else {
+            wanted[resource.pool] += resource.count;
+        }
+    }
+    for (const auto& lock : locks) {
+        if (locks_.count(lock) != 0) {
+            busyLock = lock;
+            return false;
+        }
+    }
+    // Items: the first with a free slot, in the file's order; all or nothing.
+    std::map<std::string, std::vector<std::size_t>> chosen;
+    for (const auto& want : wanted) {
+        const std::vector<PoolItem>& items = pools_[want.first];
+        const std::vector<unsigned int>& used = used_[want.first];
+        for (std::size_t i = 0; i < items.size() && chosen[want.first].size() < want.second; ++i) {
+            if (used[i] < items[i].slots) {
+                chosen[want.first].push_back(i);
+            }
+        }
+        if (chosen[want.first].size() < want.second) {
+            busyPool = want.first;
+            return false;
+        }
+    }
+    held = Held();
+    for (const auto& lock : locks) {
+        locks_[lock] = holder;
+        held.locks.push_back(lock);
+    }
+    for (const auto& pool : chosen) {
+        for (std::size_t i : pool.second) {
+            ++used_[pool.first][i];
+            held.items[pool.first].push_back(pools_[pool.first][i].id);
+        }
+    }
+    return true;
+}
+
+void ResourceTable::release(const Held& held) {
+    for (const auto& lock : held.locks) {
+        locks_.erase(lock);
+    }
+    for (const auto& pool : held.items) {
+        const std::vector<PoolItem>& items = pools_[pool.first];
+        for (const auto& id : pool.second) {
+            for (std::size_t i = 0; i < items.size(); ++i) {
+                if (items[i].id == id && used_[pool.first][i] > 0) {
+                    --used_[pool.first][i];
+                    break;
+                }
+            }
+        }
+    }
+}
+
+std::string ResourceTable::holderOf(const std::string& lock) const {
+    auto found = locks_.find(lock);
+    return found == locks_.end() ? std::string() : found->second;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,367 @@
+#include "runner/schedule/scheduler.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <thread>
+
+#include <robottestingframework/TestSuite.h>
+
+#include "variables.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// Follows which test of a suite runs now, for the line of what runs.
+class Current : public TestListener {
+public:
+    void startTest(const Test* test) override { name = test != nullptr ? test->getName() : ""; }
+    void endTest(const Test*) override { name.clear(); }
+    std::string name;
+};
+
+std::string quote(const std::string& name) {
+    return "\"" + name + "\"";
+}
+
+}  // namespace
+
+struct Scheduler::Job {
+    Job(std::size_t at, std::function<void()> wake) : index(at), events(std::move(wake)) {
+        result.addListener(&events);
+    }
+    enum class State { Waiting, Running, Finished };
+
+    std::size_t index;
+    State state = State::Waiting;
+    SuiteEvents events;  // what the suite reports, until the loop takes it
+    TestResult result;   // where the suite reports, on its thread
+    std::thread thread;
+    std::atomic<bool> done{false};
+    ResourceTable::Held held;
+    std::vector<SuiteEvents::Event> pending;  // taken, not yet handed on (a later suite)
+    std::string waitSaid;                     // what it was last said to wait for
+    Current current;
+};
+
+Scheduler::Scheduler(RunPlan& plan, ResourcePools pools, SchedulerSettings settings)
+    : plan_(plan), pools_(std::move(pools)), table_(pools_), settings_(settings) {
+    if (settings_.jobs == 0) {
+        settings_.jobs = 1;
+    }
+    platform::makePipe(wakeRead_, wakeWrite_);
+    platform::setNonBlocking(wakeRead_.get());
+    platform::setNonBlocking(wakeWrite_.get());
+
+    const std::size_t count = plan_.suiteCount();
+    after_.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const SuiteSpec& spec = plan_.spec(i);
+        std::vector<std::string> params, environments, fixtureParams;
+        for (const auto& test : spec.tests) {
+            params.push_back(test.param);
+            environments.push_back(test.environment);
+        }
+        for (const auto& fixture : spec.fixtures) {
+            fixtureParams.push_back(fixture.param);
+        }
+        params_.push_back(std::move(params));
+        environments_.push_back(std::move(environments));
+        fixtureParams_.push_back(std::move(fixtureParams));
+        // A test that depends on a test of another suite sees it as run one suite at a time
+        // would: the later of the two suites starts once the earlier one ended.
+        for (std::size_t j = 0; j < count; ++j) {
+            if (j == i) {
+                continue;
+            }
+            bool linked = false;
+            for (const auto& test : spec.tests) {
+                for (const auto& dependency : test.depends) {
+                    for (const auto& other : plan_.spec(j).tests) {
+                        linked = linked || dependencyNames(dependency, other);
+                    }
+                }
+            }
+            if (linked) {
+                after_[std::max(i, j)].push_back(std::min(i, j));
+            }
+        }
+    }
+}
+
+Scheduler::~Scheduler() {
+    // Only when run() was left by an exception: a suite still running is stopped first.
+    bool left = false;
+    for (const auto& job : jobs_) {
+        left = left || job->thread.joinable();
+    }
+    if (left) {
+        interrupt();
+    }
+    for (auto& job : jobs_) {
+        if (job->thread.joinable()) {
+            job->thread.join();
+        }
+    }
+}
+
+void Scheduler::wake() {
+    char byte = 1;
+    ssize_t ignored = ::write(wakeWrite_.get(), &byte, 1);
+    (void)ignored;
+}
+
+void Scheduler::interrupt() {
+    interrupted_ = true;
+    // Every suite: one that has not started is never started now, and a suite's own flag is
+    // safe to set from any thread.
+    for (std::size_t i = 0; i < plan_.suiteCount(); ++i) {
+        plan_.suite(i).interrupt();
+    }
+    plan_.interruptFixtures();
+    wake();
+}
+
+void Scheduler::notRun(Job& job, const TestMessage& reason, bool interrupted) {
+    plan_.suite(job.index).reportNotRun(job.result, reason, interrupted);
+    job.state = Job::State::Finished;
+}
+
+bool Scheduler::mayStart(Job& job) {
+    for (std::size_t before : after_[job.index]) {
+        if (jobs_[before]->state != Job::State::Finished) {
+            return false;
+        }
+    }
+    const SuiteSpec& spec = plan_.spec(job.index);
+    std::string busyLock, busyPool;
+    if (table_.take(spec, spec.name, job.held, busyLock, busyPool)) {
+        return true;
+    }
+    std::string line = "suite " + quote(spec.name) + " waits for ";
+    if (!busyLock.empty()) {
+        line += "lock " + busyLock;
+        if (settings_.verbose) {
+            line += " (held by suite " + quote(table_.holderOf(busyLock)) + ")";
+        }
+    } else {
+        line += "an item of pool " + busyPool;
+    }
+    if (line != job.waitSaid && settings_.view != nullptr) {
+        settings_.view->note(line);
+    }
+    job.waitSaid = line;
+    return false;
+}
+
+void Scheduler::start(Job& job) {
+    const std::size_t i = job.index;
+    SuiteSpec& spec = plan_.spec(i);
+    // The items it took reach it as ${resource.POOL} and RTF_RESOURCE_POOL.
+    auto value = [&job](const std::string& pool) {
+        std::string text;
+        auto found = job.held.items.find(pool);
+        if (found != job.held.items.end()) {
+            for (const auto& id : found->second) {
+                text += (text.empty() ? "" : ",") + id;
+            }
+        }
+        return text;
+    };
+    for (std::size_t t = 0; t < spec.tests.size(); ++t) {
+        spec.tests[t].param = variables::fillResources(params_[i][t], value);
+        spec.tests[t].environment = variables::fillResources(environments_[i][t], value);
+    }
+    std::vector<std::string> environment;
+    for (const auto& pool : job.held.items) {
+        environment.push_back(resourceVariable(pool.first) + "=" + value(pool.first));
+    }
+    const std::vector<FixtureManager*> fixtures = plan_.fixtures(i);
+    for (std::size_t f = 0; f < fixtures.size() && f < fixtureParams_[i].size(); ++f) {
+        spec.fixtures[f].param = variables::fillResources(fixtureParams_[i][f], value);
+        fixtures[f]->setParam(spec.fixtures[f].param);
+        if (auto* holder = dynamic_cast<WorkerEnvironment*>(fixtures[f])) {
+            holder->setWorkerEnvironment(environment);
+        }
+    }
+    plan_.lane(i).open(environment);
+    TestSuite& suite = plan_.suite(i);
+    suite.setGate(&plan_.gate());
+    job.state = Job::State::Running;
+    ++running_;
+    aloneRunning_ = aloneRunning_ || spec.exclusive;
+    if (settings_.inlineSuites) {
+        // One suite at a time in this process: its items are this process's environment
+        // while it runs.
+        for (const auto& variable : environment) {
+            const std::size_t equals = variable.find('=');
+            ::setenv(variable.substr(0, equals).c_str(), variable.c_str() + equals + 1, 1);
+        }
+        job.events.passTo(result_);
+        suite.run(job.result);
+        job.events.passTo(nullptr);
+        for (const auto& variable : environment) {
+            ::unsetenv(variable.substr(0, variable.find('=')).c_str());
+        }
+        finish(job);
+        return;
+    }
+    job.thread = std::thread([this, &job, &suite] {
+        suite.run(job.result);
+        job.done = true;
+        wake();
+    });
+}
+
+void Scheduler::finish(Job& job) {
+    if (job.thread.joinable()) {
+        job.thread.join();
+    }
+    plan_.lane(job.index).close();
+    table_.release(job.held);
+    job.held = ResourceTable::Held();
+    job.state = Job::State::Finished;
+    --running_;
+    if (plan_.spec(job.index).exclusive) {
+        aloneRunning_ = false;
+    }
+}
+
+void Scheduler::startReady() {
+    for (auto& owned : jobs_) {
+        Job& job = *owned;
+        if (job.state != Job::State::Waiting) {
+            continue;
+        }
+        if (interrupted_) {
+            notRun(job, TestMessage("interrupted"), true);
+            continue;
+        }
+        // As the library's TestRunner asks before each suite (--fail-fast).
+        TestMessage reason;
+        if (plan_.gate().skip(&plan_.suite(job.index), reason)) {
+            notRun(job, reason, false);
+            continue;
+        }
+        const bool exclusive = plan_.spec(job.index).exclusive;
+        if (aloneRunning_) {
+            continue;  // nothing starts beside an exclusive suite
+        }
+        if (running_ >= settings_.jobs || (exclusive && running_ > 0)) {
+            // An exclusive suite holds back the ones after it, or it might never run alone.
+            if (exclusive) {
+                break;
+            }
+            continue;
+        }
+        if (!mayStart(job)) {
+            continue;
+        }
+        start(job);
+        if (exclusive) {
+            break;
+        }
+    }
+}
+
+void Scheduler::collect(bool& changed) {
+    for (auto& owned : jobs_) {
+        Job& job = *owned;
+        if (job.state == Job::State::Running && job.done) {
+            finish(job);
+            changed = true;
+        }
+        std::vector<SuiteEvents::Event> taken = job.events.take();
+        if (taken.empty()) {
+            continue;
+        }
+        changed = true;
+        for (const auto& event : taken) {
+            job.current.onEvent(event);
+        }
+        if (settings_.view != nullptr) {
+            settings_.view->events(plan_.suite(job.index), taken);
+        }
+        job.pending.insert(job.pending.end(), std::make_move_iterator(taken.begin()),
+                           std::make_move_iterator(taken.end()));
+    }
+}
+
+std::string Scheduler::runningLine() const {
+    std::string line;
+    for (const auto& job : jobs_) {
+        if (job->state != Job::State::Running) {
+            continue;
+        }
+        line += (line.empty() ? "" : " | ") + plan_.spec(job->index).name;
+        line += job->current.name.empty() ? " (fixtures)" : ": " + job->current.name;
+    }
+    return line;
+}
+
+void Scheduler::run(TestResult& result) {
+    jobs_.clear();
+    running_ = 0;
+    aloneRunning_ = false;
+    for (std::size_t i = 0; i < plan_.suiteCount(); ++i) {
+        jobs_.push_back(std::make_unique<Job>(i, [this] { wake(); }));
+        jobs_.back()->result.addListener(&plan_.gate());  // --fail-fast learns at once
+    }
+    result_ = &result;
+    if (settings_.inlineSuites) {
+        settings_.jobs = 1;
+    }
+    result.startTestRunner();
+    std::size_t head = 0;  // the first suite not yet handed on whole
+    std::string shown;
+    for (;;) {
+        {
+            std::string drained;
+            while (platform::readSome(wakeRead_.get(), drained) > 0) {
+                drained.clear();
+            }
+        }
+        bool changed = false;
+        collect(changed);
+        for (; head < jobs_.size(); ++head) {
+            Job& job = *jobs_[head];
+            for (const auto& event : job.pending) {
+                replay(event, result);
+            }
+            job.pending.clear();
+            if (job.state != Job::State::Finished) {
+                break;
+            }
+        }
+        startReady();
+        collect(changed);  // a suite reported not run is handed on at once
+        for (; head < jobs_.size() && jobs_[head]->state == Job::State::Finished; ++head) {
+            for (const auto& event : jobs_[head]->pending) {
+                replay(event, result);
+            }
+            jobs_[head]->pending.clear();
+        }
+        if (settings_.view != nullptr) {
+            const std::string line = runningLine();
+            if (line != shown) {
+                settings_.view->running(line);
+                shown = line;
+            }
+        }
+        if (head == jobs_.size()) {
+            break;
+        }
+        if (!changed) {
+            std::vector<bool> ready;
+            platform::waitReadable({wakeRead_.get()}, 1000, ready);
+        }
+    }
+    result.endTestRunner();
+    result_ = nullptr;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,712 @@
+#include "runner/suites/suite_file.h"
+
+#include <robottestingframework/dll/DllPluginLoader.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <unordered_map>
+
+#include <pugixml.hpp>
+
+#include "runner/model/value_limits.h"
+
+#include <sys/stat.h>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+const char* const testTypes[] = {"dll", "python", "lua", "ruby", "exec"};
+const char* const fixtureTypes[] = {"dll", "python", "process"};
+
+std::string trim(const std::string& text) {
+    const char* space = " \t\r\n";
+    std::size_t first = text.find_first_not_of(space);
+    if (first == std::string::npos) {
+        return {};
+    }
+    std::size_t last = text.find_last_not_of(space);
+    return text.substr(first, last - first + 1);
+}
+
+std::string folderOf(const std::string& path) {
+    std::size_t slash = path.rfind('/');
+    if (slash == std::string::npos) {
+        return ".";
+    }
+    return slash == 0 ? "/" : path.substr(0, slash);
+}
+
+std::string stemOf(const std::string& path) {
+    std::size_t slash = path.rfind('/');
+    std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+    std::size_t dot = name.rfind('.');
+    return dot == std::string::npos || dot == 0 ? name : name.substr(0, dot);
+}
+
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    // No stream: this runs twice per test, and a stringstream costs more than the rest of it.
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find(',', begin);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        std::string item = trim(text.substr(begin, end - begin));
+        if (!item.empty()) {
+            items.push_back(std::move(item));
+        }
+        begin = end + 1;
+    }
+    return items;
+}
+
+// One word for a param, as a shell would quote it.
+std::string quoted(const std::string& word) {
+    std::string text = "'";
+    for (char c : word) {
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return text + "'";
+}
+
+template <std::size_t N>
+std::string listOf(const char* const (&names)[N]) {
+    std::string text;
+    for (std::size_t i = 0; i < N; ++i) {
+        text += (i == 0 ? "" : i + 1 == N ? " or " : ", ") + std::string(names[i]);
+    }
+    return text;
+}
+
+template <std::size_t N>
+bool isOneOf(const std::string& value, const char* const (&names)[N]) {
+    return std::any_of(std::begin(names), std::end(names),
+                       [&value](const char* name) { return value == name; });
+}
+
+// A regular file of at most maxSuiteFileBytes; `what` names it in messages ("suite file").
+std::string readBoundedFile(const std::string& path, const std::string& what) {
+    // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
+    // runs out: only a regular file of a bounded size is read.
+    struct stat info {};
+    if (::stat(path.c_str(), &info) != 0) {
+        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
+                             ")");
+    }
+    if (S_ISDIR(info.st_mode)) {
+        throw SuiteFileError(path + ": is a folder, not a " + what + "");
+    }
+    if (!S_ISREG(info.st_mode)) {
+        const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO (named pipe)"
+                           : S_ISCHR(info.st_mode)  ? "a character device"
+                           : S_ISBLK(info.st_mode)  ? "a block device"
+                           : S_ISSOCK(info.st_mode) ? "a socket"
+                                                    : "not a regular file";
+        throw SuiteFileError(path + ": is " + std::string(kind) + ", not a " + what + " (a " +
+                             what + " is a regular file)");
+    }
+    const std::string tooLarge = path + ": the " + what + " is larger than " +
+                                 std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
+                                 " MiB, the limit of a " + what;
+    if (static_cast<unsigned long long>(info.st_size) > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
+                             ")");
+    }
+    // Up to one byte past the limit: a file can grow after stat().
+    std::string content;
+    content.reserve(static_cast<std::size_t>(info.st_size));
+    char chunk[65536];
+    while (in && content.size() <= maxSuiteFileBytes) {
+        in.read(chunk, sizeof chunk);
+        content.append(chunk, static_cast<std::size_t>(in.gcount()));
+    }
+    if (in.bad()) {
+        throw SuiteFileError(path + ": cannot read the " + what + "");
+    }
+    if (content.size() > maxSuiteFileBytes) {
+        throw SuiteFileError(tooLarge);
+    }
+    return content;
+}
+
+// Reads one suite document; every error names the file and the line of the offending element.
+class SuiteReader {
+public:
+    SuiteReader(const std::string& text, const std::string& path,
+                std::vector<std::string>& warnings, variables::VariableTable& table)
+        : text_(text), path_(path), folder_(folderOf(path)), warnings_(warnings), table_(table) {
+        for (std::size_t i = 0; i < text_.size(); ++i) {
+            if (text_[i] == '\n') {
+                newlines_.push_back(i);
+            }
+        }
+    }
+
+private:
+    unsigned int lineAt(std::ptrdiff_t offset) const {
+        if (offset < 0) {
+            offset = 0;
+        }
+        auto before =
+            std::lower_bound(newlines_.begin(), newlines_.end(), static_cast<std::size_t>(offset));
+        return static_cast<unsigned int>(before - newlines_.begin()) + 1;
+    }
+
+    SourceLocation where(pugi::xml_node node) const {
+        return SourceLocation{path_, lineAt(node.offset_debug())};
+    }
+
+    [[noreturn]] void fail(std::ptrdiff_t offset, const std::string& what) const {
+        throw SuiteFileError(path_ + ":" + std::to_string(lineAt(offset)) + ": " + what);
+    }
+    [[noreturn]] void fail(pugi::xml_node node, const std::string& what) const {
+        fail(node.offset_debug(), what);
+    }
+
+    void checkAttributes(pugi::xml_node node, std::initializer_list<const char*> allowed) const {
+        for (pugi::xml_attribute attribute : node.attributes()) {
+            bool known = std::any_of(allowed.begin(), allowed.end(), [&](const char* name) {
+                return std::strcmp(name, attribute.name()) == 0;
+            });
+            if (!known) {
+                std::string expected;
+                for (const char* name : allowed) {
+                    expected += (expected.empty() ? "" : ", ") + std::string(name);
+                }
+                fail(node,
+                     "unknown attribute '" + std::string(attribute.name()) + "' on <" +
+                         node.name() + ">" +
+                         (expected.empty() ? " (it takes none)" : " (expected " + expected + ")"));
+            }
+        }
+    }
+
+    // The element's text, trimmed; it may hold nothing but text.
+    std::string textOf(pugi::xml_node node) const {
+        std::string text;
+        for (pugi::xml_node child : node.children()) {
+            if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+                text += child.value();
+            } else if (child.type() == pugi::node_element) {
+                fail(child, "<" + std::string(child.name()) + "> inside <" + node.name() + ">; <" +
+                                node.name() + "> holds only text");
+            }
+        }
+        return trim(text);
+    }
+
+    std::string pluginOf(pugi::xml_node node) const {
+        std::string plugin = textOf(node);
+        if (plugin.empty()) {
+            fail(node, "<" + std::string(node.name()) +
+                           "> without a plug-in; write its file name as the element's text, "
+                           "e.g. <" +
+                           node.name() + ">libmytest.so</" + node.name() + ">");
+        }
+        return plugin;
+    }
+
+    unsigned int repetitionOf(pugi::xml_node node, const std::string& text) const {
+        unsigned int runs = 0;
+        const std::string problem = checkRepetition(text, runs);
+        if (!problem.empty()) {
+            fail(node, "repetition=\"" + text + "\" " + problem + " (e.g. repetition=\"3\")");
+        }
+        return runs;
+    }
+
+    double secondsOf(pugi::xml_node node, const std::string& text, const std::string& what) const {
+        double seconds = 0;
+        const std::string problem = checkSeconds(text, seconds);
+        if (!problem.empty()) {
+            fail(node, what + " \"" + text + "\" " + problem);
+        }
+        return seconds;
+    }
+
+    std::string typeOf(pugi::xml_node node, const char* const* begin, const char* const* end,
+                       const std::string& expected) const {
+        pugi::xml_attribute attribute = node.attribute("type");
+        if (!attribute) {
+            return {};
+        }
+        std::string type = trim(attribute.value());
+        if (std::find_if(begin, end, [&type](const char* name) { return type == name; }) == end) {
+            fail(node, "unknown " + std::string(node.name()) + " type '" + type + "' (expected " +
+                           expected + ")");
+        }
+        return type;
+    }
+
+    // Suites often list one plug-in many times: look each name up once.
+    std::string resolve(const std::string& plugin) const {
+        auto known = resolved_.find(plugin);
+        if (known != resolved_.end()) {
+            return known->second;
+        }
+        return resolved_[plugin] = plugin::findPlugin(plugin, folder_);
+    }
+
+public:
+    SuiteSpec readSuite(pugi::xml_node root) {
+        std::string rootName = root.name();
+        if (rootName == "suit") {
+            warnings_.push_back(where(root).toString() +
+                                ": warning: the root element <suit> is the old spelling of "
+                                "<suite>; it is read the same way");
+        } else if (rootName != "suite") {
+            fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
+        }
+        checkAttributes(root, {"name", "tags", "exclusive"});
+
+        SuiteSpec suite;
+        suite.where = where(root);
+        if (root.attribute("exclusive")) {
+            const std::string exclusive = trim(root.attribute("exclusive").value());
+            if (exclusive != "true" && exclusive != "false") {
+                fail(root, "exclusive=\"" + exclusive + "\": expected true or false");
+            }
+            suite.exclusive = exclusive == "true";
+        }
+        suite.name = trim(root.attribute("name").value());
+        if (suite.name.empty()) {
+            suite.name = stemOf(path_);
+        }
+        bool haveDescription = false;
+        bool haveEnvironment = false;
+        bool haveTimeout = false;
+        auto once = [this](pugi::xml_node node, bool& seen) {
+            if (seen) {
+                fail(node, "<" + std::string(node.name()) + "> given twice; a suite has one");
+            }
+            seen = true;
+        };
+
+        // Variables first: they may be used anywhere in the suite, before or after them.
+        std::vector<pugi::xml_node> declared;
+        for (pugi::xml_node node = root.child("variable"); node;
+             node = node.next_sibling("variable")) {
+            defineVariable(node, variables::Source::Suite, declared);
+        }
+        checkVariables(declared);
+        suite.tags = splitList(expand(root, root.attribute("tags").value()));
+
+        // One allocation of the right size: growing (or shrinking) a vector of 10 000 specs
+        // holds two copies at once, the largest moment of a big run.
+        std::size_t tests = 0;
+        for (pugi::xml_node node = root.child("test"); node; node = node.next_sibling("test")) {
+            ++tests;
+        }
+        suite.tests.reserve(tests);
+        for (pugi::xml_node node : root.children()) {
+            if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+                fail(node, "text \"" + trim(node.value()) +
+                               "\" directly inside <suite>; put plug-ins in <test> elements");
+            }
+            if (node.type() != pugi::node_element) {
+                continue;
+            }
+            std::string name = node.name();
+            if (name == "description") {
+                once(node, haveDescription);
+                checkAttributes(node, {});
+                suite.description = textOf(node);
+            } else if (name == "environment") {
+                once(node, haveEnvironment);
+                checkAttributes(node, {});
+                suite.environment = expand(node, textOf(node));
+            } else if (name == "timeout") {
+                once(node, haveTimeout);
+                checkAttributes(node, {});
+                suite.timeout = secondsOf(node, expand(node, textOf(node)), "<timeout>");
+            } else if (name == "variable") {
+                continue;  // read above
+            } else if (name == "fixture") {
+                suite.fixtures.push_back(readFixture(node));
+            } else if (name == "resource") {
+                suite.resources.push_back(readResource(node));
+            } else if (name == "test") {
+                suite.tests.push_back(node.attribute("file")
+                                          ? readTestFile(node)
+                                          : readTest(node, expand(node, pluginOf(node))));
+                TestSpec& added = suite.tests.back();
+                for (const auto& tag : suite.tags) {
+                    if (std::find(added.tags.begin(), added.tags.end(), tag) == added.tags.end()) {
+                        added.tags.push_back(tag);
+                    }
+                }
+            } else {
+                fail(node, "unknown element <" + name +
+                               "> (expected description, environment, timeout, variable, "
+                               "fixture, resource or test)");
+            }
+        }
+        checkResourceUses(suite);
+        for (const auto& variable : table_.all()) {
+            suite.variables.push_back(
+                {variable.first, valueOf(root, variable.first), variable.second.origin});
+        }
+        suite.variablesUsed = table_.used();
+        for (const auto& name : usedInTestFiles_) {
+            if (std::find(suite.variablesUsed.begin(), suite.variablesUsed.end(), name) ==
+                suite.variablesUsed.end()) {
+                suite.variablesUsed.push_back(name);
+            }
+        }
+        return suite;
+    }
+
+    // A test file: one <test> as in a suite, with <variable> defaults of its own; the
+    // attributes of the suite's <test file="..."> (`overrides`) win over the file's.
+    TestSpec readTestDocument(pugi::xml_node root, pugi::xml_node overrides) {
+        if (std::string(root.name()) != "test") {
+            fail(root, "the root element is <" + std::string(root.name()) +
+                           ">; a test file holds one <test> written as in a suite");
+        }
+        checkAttributes(root, {"type", "param", "environment", "repetition", "name", "timeout",
+                               "depends", "tags"});
+        std::vector<pugi::xml_node> declared;
+        std::string plugin;
+        for (pugi::xml_node child : root.children()) {
+            if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+                plugin += child.value();
+            } else if (child.type() == pugi::node_element &&
+                       std::string(child.name()) == "variable") {
+                defineVariable(child, variables::Source::TestFile, declared);
+            } else if (child.type() == pugi::node_element) {
+                fail(child, "<" + std::string(child.name()) +
+                                "> inside <test>; a test file's <test> holds its plug-in as "
+                                "text and <variable> defaults");
+            }
+        }
+        checkVariables(declared);
+        plugin = trim(plugin);
+        if (plugin.empty()) {
+            fail(root, "<test> without a plug-in; write its file name as the element's text");
+        }
+        return readTest(root, expand(root, plugin), overrides);
+    }
+
+    const variables::VariableTable& table() const { return table_; }
+
+private:
+    void defineVariable(pugi::xml_node node, variables::Source source,
+                        std::vector<pugi::xml_node>& declared) {
+        checkAttributes(node, {"name"});
+        const std::string name = trim(node.attribute("name").value());
+        if (!variables::isVariableName(name)) {
+            fail(node, "<variable name=\"" + name +
+                           "\">: a name is letters, digits, _, - and ., not starting with a "
+                           "digit (e.g. <variable name=\"robot\">icubSim</variable>)");
+        }
+        for (const pugi::xml_node& other : declared) {
+            if (name == trim(other.attribute("name").value())) {
+                fail(node, "<variable name=\"" + name + "\"> given twice (first at line " +
+                               std::to_string(where(other).line) + ")");
+            }
+        }
+        declared.push_back(node);
+        table_.define({name, textOf(node), source, where(node).toString()});
+    }
+
+    // Each variable is expanded once at its own line: a wrong one is reported there.
+    void checkVariables(const std::vector<pugi::xml_node>& declared) {
+        for (const pugi::xml_node& node : declared) {
+            valueOf(node, trim(node.attribute("name").value()));
+        }
+    }
+
+    std::string valueOf(pugi::xml_node node, const std::string& name) {
+        return guarded(node, [&] { return table_.valueOf(name); });
+    }
+
+    // ${...} in `text` of `node`; an error names this file and the node's line.
+    std::string expand(pugi::xml_node node, const std::string& text) {
+        return guarded(node, [&] { return table_.expand(text); });
+    }
+
+    template <typename Expansion>
+    std::string guarded(pugi::xml_node node, Expansion expansion) {
+        try {
+            return expansion();
+        } catch (const variables::ExpandError& e) {
+            std::string message = e.message;
+            if (e.kind == variables::ExpandError::Kind::Undefined) {
+                message += " (define it with <variable name=\"" + e.name +
+                           "\">VALUE</variable> in the suite, or pass --var " + e.name + "=VALUE";
+                std::string defined;
+                for (const auto& variable : table_.all()) {
+                    defined += (defined.empty() ? "" : ", ") + variable.first;
+                }
+                message +=
+                    defined.empty() ? "; no variable is defined)" : "; defined: " + defined + ")";
+            }
+            fail(node, message);
+        }
+    }
+
+    // <resource lock="robot:left-arm"/> or <resource pool="ros_domain" count="1"/>.
+    ResourceSpec readResource(pugi::xml_node node) {
+        checkAttributes(node, {"lock", "pool", "count"});
+        if (!textOf(node).empty()) {
+            fail(node,
+                 "<resource> holds no text; write <resource lock=\"NAME\"/> or "
+                 "<resource pool=\"NAME\" count=\"1\"/>");
+        }
+        ResourceSpec resource;
+        resource.where = where(node);
+        const bool lock = static_cast<bool>(node.attribute("lock"));
+        const bool pool = static_cast<bool>(node.attribute("pool"));
+        if (lock == pool) {
+            fail(node, "<resource> takes one of lock=\"NAME\" or pool=\"NAME\"");
+        }
+        if (lock) {
+            if (node.attribute("count")) {
+                fail(node, "<resource lock=...> takes no count: a lock has one holder");
+            }
+            resource.lock = expand(node, node.attribute("lock").value());
+            if (resource.lock.empty()) {
+                fail(node, "<resource lock=\"\">: a lock needs a name (e.g. robot:left-arm)");
+            }
+            for (char c : resource.lock) {
+                if (std::isspace(static_cast<unsigned char>(c)) ||
+                    static_cast<unsigned char>(c) < 0x20) {
+                    fail(node, "<resource lock=\"" + resource.lock +
+                                   "\">: a lock name has no spaces (e.g. robot:left-arm)");
+                }
+            }
+            return resource;
+        }
+        resource.pool = trim(expand(node, node.attribute("pool").value()));
+        bool name =
+            !resource.pool.empty() && !std::isdigit(static_cast<unsigned char>(resource.pool[0]));
+        for (char c : resource.pool) {
+            name = name && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+        }
+        if (!name) {
+            fail(node, "<resource pool=\"" + resource.pool +
+                           "\">: a pool name is letters, digits and _, not starting with a "
+                           "digit (as in the --resources file)");
+        }
+        if (node.attribute("count")) {
+            const std::string text = trim(expand(node, node.attribute("count").value()));
+            const bool digits =
+                !text.empty() && text.size() <= 4 &&
+                std::all_of(text.begin(), text.end(), [](char c) { return c >= '0' && c <= '9'; });
+            const unsigned long count = digits ? std::stoul(text) : 0;
+            if (count < 1 || count > 1000) {
+                fail(node, "count=\"" + text + "\": expected a whole number from 1 to 1000");
+            }
+            resource.count = static_cast<unsigned int>(count);
+        }
+        return resource;
+    }
+
+    // ${resource.NAME} gets an item of the pool NAME: the suite must take one.
+    void checkResourceUses(const SuiteSpec& suite) const {
+        auto check = [&](const std::string& text, const SourceLocation& at) {
+            for (const auto& pool : variables::resourcesUsed(text)) {
+                const bool taken = std::any_of(
+                    suite.resources.begin(), suite.resources.end(),
+                    [&pool](const ResourceSpec& resource) { return resource.pool == pool; });
+                if (!taken) {
+                    throw SuiteFileError(at.toString() + ": ${resource." + pool +
+                                         "} but the suite takes no item of pool " + pool +
+                                         " (add <resource pool=\"" + pool + "\"/>)");
+                }
+            }
+        };
+        for (const auto& test : suite.tests) {
+            check(test.param, test.where);
+            check(test.environment, test.where);
+        }
+        for (const auto& fixture : suite.fixtures) {
+            check(fixture.param, fixture.where);
+        }
+    }
+
+    FixtureSpec readFixture(pugi::xml_node node) {
+        checkAttributes(node, {"param", "type"});
+        FixtureSpec fixture;
+        fixture.where = where(node);
+        fixture.plugin = expand(node, pluginOf(node));
+        fixture.type =
+            typeOf(node, std::begin(fixtureTypes), std::end(fixtureTypes), listOf(fixtureTypes));
+        fixture.param = expand(node, node.attribute("param").value());
+        if (fixture.type == "process") {
+            // Every variable reaches the world file: the suite's under the fixture's own
+            // --var, the command line's over it.
+            std::string before;
+            std::string after;
+            for (const auto& variable : table_.all()) {
+                const std::string word =
+                    "--var " +
+                    quoted(variable.first + "=" + variables::escape(valueOf(node, variable.first)));
+                std::string& side =
+                    variable.second.source >= variables::Source::VarFile ? after : before;
+                side += (side.empty() ? "" : " ") + word;
+            }
+            for (const std::string* part : {&fixture.param, &after}) {
+                if (!part->empty()) {
+                    before += (before.empty() ? "" : " ") + *part;
+                }
+            }
+            fixture.param = before;
+        }
+        fixture.path = resolve(fixture.plugin);
+        return fixture;
+    }
+
+    TestSpec readTest(pugi::xml_node node, const std::string& plugin,
+                      pugi::xml_node overrides = pugi::xml_node()) {
+        if (!overrides) {
+            checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
+                                   "depends", "tags"});
+        }
+        auto attribute = [&](const char* name) {
+            pugi::xml_attribute given = overrides.attribute(name);
+            return given ? given : node.attribute(name);
+        };
+        auto value = [&](const char* name) { return expand(node, attribute(name).value()); };
+        TestSpec test;
+        test.where = where(node);
+        test.plugin = plugin;
+        pugi::xml_node typed = overrides.attribute("type") ? overrides : node;
+        test.type = typeOf(typed, std::begin(testTypes), std::end(testTypes), listOf(testTypes));
+        test.param = value("param");
+        test.environment = value("environment");
+        test.name = trim(value("name"));
+        if (attribute("repetition")) {
+            test.repetition = repetitionOf(node, value("repetition"));
+        } else {
+            test.repetition = 0;  // not given: the command line or the default decides
+        }
+        if (attribute("timeout")) {
+            test.timeout = secondsOf(node, value("timeout"), "timeout");
+        }
+        test.depends = splitList(value("depends"));
+        test.tags = splitList(value("tags"));
+        test.path = resolve(test.plugin);
+        return test;
+    }
+
+    // <test file="tests/left_arm.xml" .../>: the file is found from this suite's folder and
+    // read with this suite's variables over its own defaults.
+    TestSpec readTestFile(pugi::xml_node node) {
+        checkAttributes(node, {"file", "type", "param", "environment", "repetition", "name",
+                               "timeout", "depends", "tags"});
+        if (!textOf(node).empty()) {
+            fail(node,
+                 "<test file=\"...\"> with a plug-in as text; the test file names the "
+                 "plug-in, write <test file=\"...\"/>");
+        }
+        const std::string file = trim(expand(node, node.attribute("file").value()));
+        if (file.empty()) {
+            fail(node, "<test file=\"\"> names no file; expected the path of a test file");
+        }
+        const std::string path = file[0] == '/' ? file : folder_ + "/" + file;
+        std::string text;
+        try {
+            text = readBoundedFile(path, "test file");
+        } catch (const SuiteFileError& e) {
+            fail(node, "<test file=\"" + file + "\">: " + e.what());
+        }
+        variables::VariableTable table = table_;  // the suite's and the command line's
+        table.resetTotal();
+        SuiteReader reader(text, path, warnings_, table);
+        try {
+            pugi::xml_document document;
+            TestSpec test = reader.readTestDocument(reader.parseRoot(document, "<test>"), node);
+            for (const auto& name : table.used()) {
+                usedInTestFiles_.push_back(name);
+            }
+            return test;
+        } catch (const SuiteFileError& e) {
+            fail(node, "in the test file named here: " + std::string(e.what()));
+        }
+    }
+
+public:
+    // The one root element of the document, parsed into `document`; `expected` names it.
+    pugi::xml_node parseRoot(pugi::xml_document& document, const std::string& expected) {
+        pugi::xml_parse_result parsed = document.load_buffer(
+            text_.data(), text_.size(), pugi::parse_default, pugi::encoding_auto);
+        if (!parsed) {
+            fail(parsed.offset, std::string("malformed XML: ") + parsed.description());
+        }
+        pugi::xml_node root;
+        for (pugi::xml_node node : document.children()) {
+            if (node.type() == pugi::node_element) {
+                if (root) {
+                    fail(node, "a second root element <" + std::string(node.name()) +
+                                   ">; the file holds one " + expected);
+                }
+                root = node;
+            } else if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+                fail(node, "text outside the " + expected + " element");
+            }
+        }
+        if (!root) {
+            fail(text_.size(), "no root element; expected " + expected);
+        }
+        return root;
+    }
+
+private:
+    const std::string& text_;
+    std::string path_;
+    std::string folder_;
+    std::vector<std::string>& warnings_;
+    variables::VariableTable& table_;
+    std::vector<std::size_t> newlines_;
+    std::vector<std::string> usedInTestFiles_;
+    mutable std::unordered_map<std::string, std::string> resolved_;
+};
+
+variables::VariableTable tableOf(const std::vector<variables::Variable>& given) {
+    variables::VariableTable table;
+    for (const auto& variable : given) {
+        table.define(variable);
+    }
+    return table;
+}
+
+}  // namespace
+
+SuiteSpec parseSuite(const std::string& text, const std::string& path,
+                     std::vector<std::string>& warnings,
+                     const std::vector<variables::Variable>& commandLine) {
+    variables::VariableTable table = tableOf(commandLine);
+    SuiteReader reader(text, path, warnings, table);
+    pugi::xml_document document;
+    return reader.readSuite(reader.parseRoot(document, "<suite name=\"...\">"));
+}
+
+TestSpec parseTestFile(const std::string& text, const std::string& path,
+                       std::vector<std::string>& warnings,
+                       const std::vector<variables::Variable>& suiteVariables) {
+    variables::VariableTable table = tableOf(suiteVariables);
+    SuiteReader reader(text, path, warnings, table);
+    pugi::xml_document document;
+    return reader.readTestDocument(reader.parseRoot(document, "<test>"), pugi::xml_node());
+}
+
+SuiteSpec readSuiteFile(const std::string& path, std::vector<std::string>& warnings,
+                        const std::vector<variables::Variable>& commandLine) {
+    return parseSuite(readBoundedFile(path, "suite file"), path, warnings, commandLine);
+}
+
+}  // namespace runner
+}  // namespace robottestingframework
