@@ -17,8 +17,8 @@
 #include <thread>
 #include <vector>
 
-#include "process_supervisor.h"
-#include "world_file.h"
+#include "fixtures/process/process_supervisor.h"
+#include "fixtures/process/world_file.h"
 
 using namespace robottestingframework::fixtures;
 

@@ -30,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 extern char** environ;
 

@@ -5,7 +5,7 @@
 
 #include <robottestingframework/TestResult.h>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 

@@ -3,7 +3,7 @@
 #include <robottestingframework/dll/Plugin.h>
 #include <robottestingframework/dll/SharedLibraryFactory.h>
 
-#include "shared_library.h"
+#include "dll/shared_library.h"
 
 namespace robottestingframework {
 namespace plugin {

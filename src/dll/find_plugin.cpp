@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <filesystem>
 
-#include "shared_library.h"
+#include "dll/shared_library.h"
 
 namespace robottestingframework {
 namespace plugin {

@@ -1,4 +1,4 @@
-#include "shared_library.h"
+#include "dll/shared_library.h"
 
 #include <dlfcn.h>
 #include <glob.h>

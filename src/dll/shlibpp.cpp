@@ -5,7 +5,7 @@
 
 #include <sys/stat.h>
 
-#include "shared_library.h"
+#include "dll/shared_library.h"
 
 namespace shlibpp {
 

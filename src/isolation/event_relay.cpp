@@ -1,4 +1,4 @@
-#include "event_relay.h"
+#include "isolation/event_relay.h"
 
 namespace robottestingframework {
 namespace isolation {

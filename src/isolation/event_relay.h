@@ -8,7 +8,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestStatus.h>
 
-#include "wire_format.h"
+#include "isolation/wire_format.h"
 
 namespace robottestingframework {
 namespace isolation {

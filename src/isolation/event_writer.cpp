@@ -1,8 +1,8 @@
-#include "event_writer.h"
+#include "isolation/event_writer.h"
 
 #include <robottestingframework/Test.h>
 
-#include "file_descriptor.h"
+#include "platform/file_descriptor.h"
 
 namespace robottestingframework {
 namespace isolation {

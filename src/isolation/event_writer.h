@@ -7,7 +7,7 @@
 
 #include <robottestingframework/TestListener.h>
 
-#include "wire_format.h"
+#include "isolation/wire_format.h"
 
 namespace robottestingframework {
 namespace isolation {

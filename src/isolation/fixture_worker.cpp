@@ -6,10 +6,10 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestResult.h>
 
-#include "event_writer.h"
-#include "file_descriptor.h"
-#include "test_loader.h"
-#include "worker.h"
+#include "isolation/event_writer.h"
+#include "isolation/worker.h"
+#include "languages/test_loader.h"
+#include "platform/file_descriptor.h"
 
 namespace robottestingframework {
 namespace isolation {

@@ -1,4 +1,4 @@
-#include "fork_server_client.h"
+#include "isolation/fork_server_client.h"
 
 #include <errno.h>
 #include <signal.h>
@@ -7,9 +7,9 @@
 
 #include <cstdlib>
 
-#include "fd_passing.h"
-#include "process.h"
-#include "process_tree.h"
+#include "platform/fd_passing.h"
+#include "platform/process.h"
+#include "platform/process_tree.h"
 
 #ifndef RTF_WORKER_INSTALL_PATH
 #define RTF_WORKER_INSTALL_PATH ""

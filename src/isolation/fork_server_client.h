@@ -8,8 +8,8 @@
 #include <mutex>
 #include <string>
 
-#include "file_descriptor.h"
-#include "wire_format.h"
+#include "isolation/wire_format.h"
+#include "platform/file_descriptor.h"
 
 namespace robottestingframework {
 namespace isolation {

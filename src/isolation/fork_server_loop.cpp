@@ -1,4 +1,4 @@
-#include "fork_server_loop.h"
+#include "isolation/fork_server_loop.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -15,16 +15,16 @@
 #include <map>
 #include <thread>
 
-#include "clock.h"
-#include "coverage.h"
-#include "fd_passing.h"
-#include "file_descriptor.h"
-#include "process.h"
-#include "process_tree.h"
-#include "signal_pipe.h"
-#include "test_loader.h"
-#include "wire_format.h"
-#include "worker.h"
+#include "isolation/wire_format.h"
+#include "isolation/worker.h"
+#include "languages/test_loader.h"
+#include "platform/clock.h"
+#include "platform/coverage.h"
+#include "platform/fd_passing.h"
+#include "platform/file_descriptor.h"
+#include "platform/process.h"
+#include "platform/process_tree.h"
+#include "platform/signal_pipe.h"
 
 namespace robottestingframework {
 namespace isolation {

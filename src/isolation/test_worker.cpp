@@ -9,10 +9,10 @@
 
 #include <robottestingframework/TestResult.h>
 
-#include "event_writer.h"
-#include "signal_pipe.h"
-#include "test_loader.h"
-#include "worker.h"
+#include "isolation/event_writer.h"
+#include "isolation/worker.h"
+#include "languages/test_loader.h"
+#include "platform/signal_pipe.h"
 
 namespace robottestingframework {
 namespace isolation {

@@ -1,4 +1,4 @@
-#include "wire_format.h"
+#include "isolation/wire_format.h"
 
 #include <cstring>
 

@@ -11,8 +11,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "event_relay.h"
-#include "wire_format.h"
+#include "isolation/event_relay.h"
+#include "isolation/wire_format.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::isolation;

@@ -2,7 +2,7 @@
 // sending its events on `channel`. Its stdout and stderr are already the runner's pipe.
 #pragma once
 
-#include "wire_format.h"
+#include "isolation/wire_format.h"
 
 namespace robottestingframework {
 namespace isolation {

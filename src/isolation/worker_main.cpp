@@ -6,8 +6,8 @@
 #include <cstring>
 #include <string>
 
-#include "fork_server_client.h"
-#include "fork_server_loop.h"
+#include "isolation/fork_server_client.h"
+#include "isolation/fork_server_loop.h"
 
 int main(int argc, char** argv) {
     // The loader has bound every symbol already (see ForkServer::start); the tests' own

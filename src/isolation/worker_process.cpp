@@ -1,11 +1,11 @@
-#include "worker_process.h"
+#include "isolation/worker_process.h"
 
 #include <errno.h>
 #include <signal.h>
 
-#include "clock.h"
-#include "coverage.h"
-#include "process_tree.h"
+#include "platform/clock.h"
+#include "platform/coverage.h"
+#include "platform/process_tree.h"
 
 namespace robottestingframework {
 namespace isolation {

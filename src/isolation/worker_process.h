@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "file_descriptor.h"
-#include "fork_server_client.h"
-#include "output_tail.h"
-#include "wire_format.h"
+#include "isolation/fork_server_client.h"
+#include "isolation/wire_format.h"
+#include "languages/output_tail.h"
+#include "platform/file_descriptor.h"
 
 namespace robottestingframework {
 namespace isolation {

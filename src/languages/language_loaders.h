@@ -4,7 +4,7 @@
 #include <memory>
 #include <string>
 
-#include "test_loader.h"
+#include "languages/test_loader.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,4 +1,4 @@
-#include "output_tail.h"
+#include "languages/output_tail.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,8 +1,8 @@
-#include "plugin_locator.h"
+#include "languages/plugin_locator.h"
 
 #include <robottestingframework/dll/DllPluginLoader.h>
 
-#include "test_loader.h"
+#include "languages/test_loader.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,4 +1,4 @@
-#include "script_module_loading.h"
+#include "languages/script_module_loading.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -9,7 +9,7 @@
 #include <mutex>
 #include <vector>
 
-#include "process.h"
+#include "platform/process.h"
 
 #ifndef RTF_LANGUAGE_RELATIVE_DIR
 #define RTF_LANGUAGE_RELATIVE_DIR "../lib/robottestingframework"

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "script_module_interface.h"
+#include "languages/script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

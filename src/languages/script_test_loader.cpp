@@ -1,4 +1,4 @@
-#include "script_test_loader.h"
+#include "languages/script_test_loader.h"
 
 #include <sys/stat.h>
 
@@ -7,7 +7,7 @@
 #include <fstream>
 #include <utility>
 
-#include "script_module_loading.h"
+#include "languages/script_module_loading.h"
 
 namespace robottestingframework {
 namespace plugin {

@@ -7,7 +7,7 @@
 
 #include <robottestingframework/TestCase.h>
 
-#include "test_loader.h"
+#include "languages/test_loader.h"
 
 namespace robottestingframework {
 namespace plugin {

@@ -1,12 +1,12 @@
-#include "test_loader.h"
+#include "languages/test_loader.h"
 
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 
-#include "language_loaders.h"
-#include "script_module_loading.h"
+#include "languages/language_loaders.h"
+#include "languages/script_module_loading.h"
 
 namespace robottestingframework {
 namespace languages {

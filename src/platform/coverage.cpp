@@ -1,4 +1,4 @@
-#include "coverage.h"
+#include "platform/coverage.h"
 
 #ifdef RTF_COVERAGE
 // libgcov's, linked in by --coverage: writes the counters so far to the .gcda files.

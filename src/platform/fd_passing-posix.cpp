@@ -1,4 +1,4 @@
-#include "fd_passing.h"
+#include "platform/fd_passing.h"
 
 #include <errno.h>
 #include <sys/mman.h>

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "file_descriptor.h"
+#include "platform/file_descriptor.h"
 
 namespace robottestingframework {
 namespace platform {

@@ -1,4 +1,4 @@
-#include "file_descriptor.h"
+#include "platform/file_descriptor.h"
 
 #include <errno.h>
 #include <fcntl.h>

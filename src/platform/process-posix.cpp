@@ -1,4 +1,4 @@
-#include "process.h"
+#include "platform/process.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -19,9 +19,9 @@
 #include <map>
 #include <thread>
 
-#include "clock.h"
-#include "file_descriptor.h"
-#include "signal_name.h"
+#include "platform/clock.h"
+#include "platform/file_descriptor.h"
+#include "platform/signal_name.h"
 
 extern char** environ;
 

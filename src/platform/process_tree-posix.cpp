@@ -1,4 +1,4 @@
-#include "process_tree.h"
+#include "platform/process_tree.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -11,7 +11,7 @@
 #include <map>
 #include <set>
 
-#include "process.h"
+#include "platform/process.h"
 
 namespace robottestingframework {
 namespace platform {

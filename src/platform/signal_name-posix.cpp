@@ -1,4 +1,4 @@
-#include "signal_name.h"
+#include "platform/signal_name.h"
 
 #include <signal.h>
 #include <string.h>

@@ -1,4 +1,4 @@
-#include "signal_pipe.h"
+#include "platform/signal_pipe.h"
 
 #include <errno.h>
 #include <fcntl.h>

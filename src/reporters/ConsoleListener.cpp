@@ -5,7 +5,7 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
-#include "summary.h"
+#include "reporters/summary.h"
 
 namespace robottestingframework {
 

@@ -1,8 +1,8 @@
 // RTF 2.x's JUnitOutputter, kept for programs that use it: the JUnit reporter under its old name.
 #include <robottestingframework/JUnitOutputter.h>
 
-#include "atomic_file.h"
-#include "junit_reporter.h"
+#include "reporters/atomic_file.h"
+#include "reporters/junit_reporter.h"
 
 namespace robottestingframework {
 

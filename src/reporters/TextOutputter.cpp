@@ -1,8 +1,8 @@
 // RTF 2.x's TextOutputter, kept for programs that use it: the text reporter under its old name.
 #include <robottestingframework/TextOutputter.h>
 
-#include "atomic_file.h"
-#include "text_reporter.h"
+#include "reporters/atomic_file.h"
+#include "reporters/text_reporter.h"
 
 namespace robottestingframework {
 

@@ -1,10 +1,10 @@
-#include "html_reporter.h"
+#include "reporters/html_reporter.h"
 
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

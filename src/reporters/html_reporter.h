@@ -7,7 +7,7 @@
 
 #include <cstddef>
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

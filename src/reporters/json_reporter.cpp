@@ -1,11 +1,11 @@
-#include "json_reporter.h"
+#include "reporters/json_reporter.h"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

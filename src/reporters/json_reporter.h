@@ -3,7 +3,7 @@
 // under "extra" -> "rtf". The mapping is in docs/ctrf.md.
 #pragma once
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -1,12 +1,12 @@
-#include "junit_reporter.h"
+#include "reporters/junit_reporter.h"
 
 #include <unistd.h>
 
 #include <cstdio>
 #include <ctime>
 
-#include "summary.h"
-#include "text_safety.h"
+#include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

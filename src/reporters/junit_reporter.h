@@ -2,7 +2,7 @@
 // testsuite per suite, one testcase per test.
 #pragma once
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

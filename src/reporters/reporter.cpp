@@ -1,6 +1,6 @@
-#include "reporter.h"
+#include "reporters/reporter.h"
 
-#include "atomic_file.h"
+#include "reporters/atomic_file.h"
 
 namespace robottestingframework {
 namespace reporters {

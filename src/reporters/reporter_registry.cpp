@@ -1,10 +1,10 @@
-#include "reporter_registry.h"
+#include "reporters/reporter_registry.h"
 
-#include "html_reporter.h"
-#include "json_reporter.h"
-#include "junit_reporter.h"
-#include "tap_reporter.h"
-#include "text_reporter.h"
+#include "reporters/html_reporter.h"
+#include "reporters/json_reporter.h"
+#include "reporters/junit_reporter.h"
+#include "reporters/tap_reporter.h"
+#include "reporters/text_reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

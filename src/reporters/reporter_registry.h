@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -1,4 +1,4 @@
-#include "summary.h"
+#include "reporters/summary.h"
 
 #include <cstdio>
 

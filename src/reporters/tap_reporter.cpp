@@ -1,11 +1,11 @@
-#include "tap_reporter.h"
+#include "reporters/tap_reporter.h"
 
 #include <algorithm>
 
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

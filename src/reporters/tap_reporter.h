@@ -8,7 +8,7 @@
 
 #include <robottestingframework/ResultEvent.h>
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -1,9 +1,9 @@
-#include "text_reporter.h"
+#include "reporters/text_reporter.h"
 
 #include <cstdio>
 
-#include "summary.h"
-#include "text_safety.h"
+#include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -1,7 +1,7 @@
 // The text output: suites, each test's state and messages, and the run's summary.
 #pragma once
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -1,4 +1,4 @@
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "variables.h"
+#include "variables/variables.h"
 
 #include <algorithm>
 #include <cerrno>

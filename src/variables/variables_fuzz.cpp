@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "variables.h"
+#include "variables/variables.h"
 
 using namespace robottestingframework::variables;
 

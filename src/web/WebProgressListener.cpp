@@ -5,8 +5,8 @@
 
 #include <cstdio>
 
-#include "live_page.h"
-#include "live_page_library.h"
+#include "web/live_page.h"
+#include "web/live_page_library.h"
 
 namespace robottestingframework {
 

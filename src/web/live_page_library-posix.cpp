@@ -1,4 +1,4 @@
-#include "live_page_library.h"
+#include "web/live_page_library.h"
 
 #include <dlfcn.h>
 

@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "live_page.h"
+#include "web/live_page.h"
 
 namespace robottestingframework {
 namespace web {

@@ -1,4 +1,4 @@
-#include "run_view.h"
+#include "web/run_view.h"
 
 #include <algorithm>
 
@@ -6,7 +6,7 @@
 
 #include <robottestingframework/ResultEvent.h>
 
-#include "text_safety.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace web {

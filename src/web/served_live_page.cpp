@@ -4,9 +4,9 @@
 
 #include <robottestingframework/TestSuite.h>
 
-#include "live_page.h"
-#include "run_view.h"
-#include "web_server.h"
+#include "web/live_page.h"
+#include "web/run_view.h"
+#include "web/web_server.h"
 
 namespace robottestingframework {
 namespace web {

@@ -1,4 +1,4 @@
-#include "web_server.h"
+#include "web/web_server.h"
 
 #include <sys/socket.h>
 
@@ -9,7 +9,7 @@
 
 #include <httplib.h>
 
-#include "page_assets.h"
+#include "web/page_assets.h"
 
 namespace robottestingframework {
 namespace web {

@@ -6,7 +6,7 @@
 #include <string>
 #include <thread>
 
-#include "run_view.h"
+#include "web/run_view.h"
 
 namespace httplib {
 class Server;

@@ -13,7 +13,7 @@
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestSuite.h>
 
-#include "html_reporter.h"
+#include "reporters/html_reporter.h"
 
 using namespace robottestingframework;
 

@@ -11,9 +11,9 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "event_relay.h"
-#include "event_writer.h"
-#include "file_descriptor.h"
+#include "isolation/event_relay.h"
+#include "isolation/event_writer.h"
+#include "platform/file_descriptor.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::isolation;

@@ -25,7 +25,7 @@
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResult.h>
 
-#include "clock.h"
+#include "platform/clock.h"
 #include "runner/execution/isolated_executor.h"
 
 using namespace robottestingframework;

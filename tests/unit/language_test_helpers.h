@@ -14,7 +14,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "test_loader.h"
+#include "languages/test_loader.h"
 
 namespace rtf_test {
 

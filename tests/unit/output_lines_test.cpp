@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "output_lines.h"
+#include "fixtures/process/output_lines.h"
 
 using robottestingframework::fixtures::OutputLines;
 

@@ -14,13 +14,13 @@
 #include <string>
 #include <thread>
 
-#include "clock.h"
-#include "fd_passing.h"
-#include "file_descriptor.h"
-#include "process.h"
-#include "process_tree.h"
-#include "signal_name.h"
-#include "signal_pipe.h"
+#include "platform/clock.h"
+#include "platform/fd_passing.h"
+#include "platform/file_descriptor.h"
+#include "platform/process.h"
+#include "platform/process_tree.h"
+#include "platform/signal_name.h"
+#include "platform/signal_pipe.h"
 
 using namespace robottestingframework::platform;
 

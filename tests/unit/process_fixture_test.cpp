@@ -1,5 +1,5 @@
 // The process fixture as a suite sees it: set-up failures with their story, reports, collapse.
-#include "process_fixture.h"
+#include "fixtures/process/process_fixture.h"
 
 #include <chrono>
 #include <thread>

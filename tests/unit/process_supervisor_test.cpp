@@ -1,5 +1,5 @@
 // The process supervisor with real processes: start, readiness, dependencies, collapse, stop.
-#include "process_supervisor.h"
+#include "fixtures/process/process_supervisor.h"
 
 #include <netinet/in.h>
 #include <signal.h>

@@ -1,5 +1,5 @@
 // The readiness checks of the process fixture, one at a time.
-#include "readiness.h"
+#include "fixtures/process/readiness.h"
 
 #include <netinet/in.h>
 #include <sys/socket.h>

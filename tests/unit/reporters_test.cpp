@@ -9,9 +9,9 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "core_test_helpers.h"
-#include "reporter_registry.h"
-#include "tap_reporter.h"
-#include "text_safety.h"
+#include "reporters/reporter_registry.h"
+#include "reporters/tap_reporter.h"
+#include "reporters/text_safety.h"
 
 using namespace rtf_test;
 using namespace robottestingframework::reporters;

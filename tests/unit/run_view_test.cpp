@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "run_view.h"
+#include "web/run_view.h"
 
 using robottestingframework::TestMessage;
 using robottestingframework::TestStatus;

@@ -9,11 +9,11 @@
 #include <string>
 #include <vector>
 
+#include "isolation/wire_format.h"
 #include "runner/cli/options.h"
 #include "runner/schedule/resources.h"
 #include "runner/suites/suite_file.h"
-#include "variables.h"
-#include "wire_format.h"
+#include "variables/variables.h"
 
 using namespace robottestingframework;
 using namespace robottestingframework::runner;

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "tap_parser.h"
+#include "languages/exec/tap_parser.h"
 
 using robottestingframework::languages::parseTap;
 using robottestingframework::languages::TapPoint;

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "variables.h"
+#include "variables/variables.h"
 
 using namespace robottestingframework::variables;
 

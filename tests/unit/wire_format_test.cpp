@@ -7,8 +7,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "event_relay.h"
-#include "wire_format.h"
+#include "isolation/event_relay.h"
+#include "isolation/wire_format.h"
 
 using robottestingframework::ResultEvent;
 using robottestingframework::TestMessage;

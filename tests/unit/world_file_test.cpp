@@ -1,5 +1,5 @@
 // The world file of the process fixture: what it reads, and how it says what is wrong.
-#include "world_file.h"
+#include "fixtures/process/world_file.h"
 
 #include <signal.h>
 

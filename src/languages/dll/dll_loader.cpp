@@ -1,7 +1,7 @@
 // C++ test and fixture plug-ins: the library stays loaded as long as the object lives.
 #include <robottestingframework/dll/DllPluginLoader.h>
 
-#include "language_loaders.h"
+#include "languages/language_loaders.h"
 
 namespace robottestingframework {
 namespace languages {

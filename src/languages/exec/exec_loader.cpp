@@ -8,11 +8,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "exec_process.h"
-#include "language_loaders.h"
-#include "output_tail.h"
-#include "signal_name.h"
-#include "tap_parser.h"
+#include "languages/exec/exec_process.h"
+#include "languages/exec/tap_parser.h"
+#include "languages/language_loaders.h"
+#include "languages/output_tail.h"
+#include "platform/signal_name.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,4 +1,4 @@
-#include "exec_process.h"
+#include "languages/exec/exec_process.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -9,9 +9,9 @@
 #include <cstring>
 #include <thread>
 
-#include "file_descriptor.h"
-#include "process.h"
-#include "process_tree.h"
+#include "platform/file_descriptor.h"
+#include "platform/process.h"
+#include "platform/process_tree.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,4 +1,4 @@
-#include "tap_parser.h"
+#include "languages/exec/tap_parser.h"
 
 #include <cctype>
 #include <cstddef>

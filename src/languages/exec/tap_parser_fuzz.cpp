@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string>
 
-#include "tap_parser.h"
+#include "languages/exec/tap_parser.h"
 
 using namespace robottestingframework::languages;
 

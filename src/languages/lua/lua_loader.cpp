@@ -9,8 +9,8 @@
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/Exception.h>
 
-#include "language_loaders.h"
-#include "script_module_interface.h"
+#include "languages/language_loaders.h"
+#include "languages/script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

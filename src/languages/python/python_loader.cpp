@@ -6,9 +6,9 @@
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/Exception.h>
 
-#include "language_loaders.h"
-#include "python_runtime.h"
-#include "script_module_interface.h"
+#include "languages/language_loaders.h"
+#include "languages/python/python_runtime.h"
+#include "languages/script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

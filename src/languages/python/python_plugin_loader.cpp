@@ -2,7 +2,7 @@
 // loaded on the first open(), through the code the runner uses.
 #include <robottestingframework/python/PythonPluginLoader.h>
 
-#include "script_test_loader.h"
+#include "languages/script_test_loader.h"
 
 namespace robottestingframework {
 namespace plugin {

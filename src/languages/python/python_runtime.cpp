@@ -1,4 +1,4 @@
-#include "python_runtime.h"
+#include "languages/python/python_runtime.h"
 
 #include <pthread.h>
 #include <signal.h>

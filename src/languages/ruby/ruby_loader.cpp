@@ -10,9 +10,9 @@
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/Exception.h>
 
-#include "language_loaders.h"
-#include "ruby_vm.h"
-#include "script_module_interface.h"
+#include "languages/language_loaders.h"
+#include "languages/ruby/ruby_vm.h"
+#include "languages/script_module_interface.h"
 
 namespace robottestingframework {
 namespace languages {

@@ -1,4 +1,4 @@
-#include "ruby_vm.h"
+#include "languages/ruby/ruby_vm.h"
 
 #include <pthread.h>
 #include <signal.h>

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "languages/test_loader.h"
 #include "runner/suites/suite_file.h"
-#include "test_loader.h"
 
 namespace robottestingframework {
 namespace runner {

@@ -7,7 +7,7 @@
 
 #include "runner/cli/options.h"
 #include "runner/model/suite_model.h"
-#include "variables.h"
+#include "variables/variables.h"
 
 namespace robottestingframework {
 namespace runner {

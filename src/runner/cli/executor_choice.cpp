@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "process.h"
+#include "platform/process.h"
 #include "runner/cli/program_name.h"
 #include "runner/execution/in_process_executor.h"
 #include "runner/execution/isolated_executor.h"

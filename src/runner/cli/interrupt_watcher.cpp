@@ -3,8 +3,8 @@
 #include <signal.h>
 #include <unistd.h>
 
-#include "coverage.h"
-#include "process_tree.h"
+#include "platform/coverage.h"
+#include "platform/process_tree.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/program_name.h"
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <thread>
 
-#include "signal_pipe.h"
+#include "platform/signal_pipe.h"
 
 namespace robottestingframework {
 namespace runner {

@@ -4,10 +4,10 @@
 
 #include <sstream>
 
-#include "atomic_file.h"
+#include "languages/test_loader.h"
+#include "reporters/atomic_file.h"
 #include "runner/model/stand_in_test.h"
-#include "test_loader.h"
-#include "variables.h"
+#include "variables/variables.h"
 
 namespace robottestingframework {
 namespace runner {

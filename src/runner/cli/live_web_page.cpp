@@ -4,8 +4,8 @@
 
 #include <cstdio>
 
+#include "platform/signal_pipe.h"
 #include "runner/cli/program_name.h"
-#include "signal_pipe.h"
 
 namespace robottestingframework {
 namespace runner {

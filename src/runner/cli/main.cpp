@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "process_tree.h"
+#include "platform/process_tree.h"
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/list_command.h"

@@ -4,7 +4,7 @@
 #include <exception>
 #include <string>
 
-#include "atomic_file.h"
+#include "reporters/atomic_file.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/program_name.h"
 #include "runner/reports/merge_reports.h"

@@ -1,8 +1,8 @@
 #include "runner/cli/options.h"
 
-#include "reporter_registry.h"
+#include "reporters/reporter_registry.h"
 #include "runner/model/value_limits.h"
-#include "variables.h"
+#include "variables/variables.h"
 
 #include <CLI/CLI.hpp>
 

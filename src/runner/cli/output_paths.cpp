@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <map>
 
-#include "atomic_file.h"
+#include "reporters/atomic_file.h"
 
 namespace robottestingframework {
 namespace runner {

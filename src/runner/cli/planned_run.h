@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 #include "runner/cli/options.h"
 #include "runner/model/suite_model.h"
 #include "runner/plan/shard_of_this_machine.h"

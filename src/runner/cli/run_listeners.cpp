@@ -5,7 +5,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "reporter_registry.h"
+#include "reporters/reporter_registry.h"
 #include "runner/cli/program_name.h"
 
 namespace robottestingframework {

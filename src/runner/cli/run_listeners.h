@@ -12,7 +12,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
-#include "reporter.h"
+#include "reporters/reporter.h"
 #include "runner/cli/options.h"
 #include "runner/console/parallel_console.h"
 #include "runner/execution/output_capture.h"

@@ -2,7 +2,7 @@
 
 #include <robottestingframework/TestSuite.h>
 
-#include "summary.h"
+#include "reporters/summary.h"
 
 namespace robottestingframework {
 namespace runner {

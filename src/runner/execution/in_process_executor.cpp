@@ -10,7 +10,7 @@
 #include <sstream>
 #include <thread>
 
-#include "plugin_locator.h"
+#include "languages/plugin_locator.h"
 #include "runner/model/stand_in_test.h"
 
 namespace robottestingframework {

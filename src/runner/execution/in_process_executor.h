@@ -11,8 +11,8 @@
 #include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestResult.h>
 
+#include "languages/test_loader.h"
 #include "runner/model/test_executor.h"
-#include "test_loader.h"
 
 namespace robottestingframework {
 namespace runner {

@@ -5,15 +5,15 @@
 
 #include <sstream>
 
-#include "clock.h"
-#include "event_relay.h"
-#include "plugin_locator.h"
-#include "process.h"
+#include "isolation/event_relay.h"
+#include "languages/plugin_locator.h"
+#include "languages/test_loader.h"
+#include "platform/clock.h"
+#include "platform/process.h"
+#include "platform/signal_name.h"
 #include "runner/execution/isolated_fixture.h"
-#include "signal_name.h"
-#include "test_loader.h"
 
-#include "worker_process.h"
+#include "isolation/worker_process.h"
 
 namespace robottestingframework {
 namespace isolation {

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "file_descriptor.h"
-#include "fork_server_client.h"
+#include "isolation/fork_server_client.h"
+#include "platform/file_descriptor.h"
 #include "runner/model/test_executor.h"
 
 namespace robottestingframework {

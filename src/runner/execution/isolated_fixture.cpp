@@ -11,10 +11,10 @@
 #include <robottestingframework/Exception.h>
 #include <robottestingframework/TestResult.h>
 
-#include "clock.h"
-#include "event_relay.h"
-#include "process.h"
-#include "process_tree.h"
+#include "isolation/event_relay.h"
+#include "platform/clock.h"
+#include "platform/process.h"
+#include "platform/process_tree.h"
 
 namespace robottestingframework {
 namespace isolation {

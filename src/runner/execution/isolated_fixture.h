@@ -15,12 +15,12 @@
 
 #include <robottestingframework/FixtureManager.h>
 
-#include "file_descriptor.h"
-#include "fork_server_client.h"
+#include "isolation/fork_server_client.h"
+#include "isolation/wire_format.h"
+#include "isolation/worker_process.h"
+#include "platform/file_descriptor.h"
 #include "runner/execution/isolated_executor.h"
 #include "runner/model/test_executor.h"
-#include "wire_format.h"
-#include "worker_process.h"
 
 namespace robottestingframework {
 namespace isolation {

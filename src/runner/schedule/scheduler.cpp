@@ -8,7 +8,7 @@
 
 #include <robottestingframework/TestSuite.h>
 
-#include "variables.h"
+#include "variables/variables.h"
 
 namespace robottestingframework {
 namespace runner {

@@ -19,7 +19,7 @@
 
 #include <robottestingframework/TestResult.h>
 
-#include "file_descriptor.h"
+#include "platform/file_descriptor.h"
 #include "runner/plan/run_plan.h"
 #include "runner/schedule/resources.h"
 #include "runner/schedule/suite_events.h"

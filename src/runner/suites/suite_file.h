@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "runner/model/suite_model.h"
-#include "variables.h"
+#include "variables/variables.h"
 
 namespace robottestingframework {
 namespace runner {
