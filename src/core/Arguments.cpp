@@ -138,20 +138,8 @@ bool Arguments::getOption(int argc, char** argv, const char* option, std::string
 }
 
 bool Arguments::hasOption(int argc, char** argv, const char* option) {
-    if (argv == nullptr || option == nullptr) {
-        return false;
-    }
-    const std::string name = optionName(option);
-    const std::string prefix = name + "=";
-    for (int i = 0; i < argc; ++i) {
-        if (argv[i] == nullptr) {
-            break;
-        }
-        if (name == argv[i] || std::strncmp(argv[i], prefix.c_str(), prefix.size()) == 0) {
-            return true;
-        }
-    }
-    return false;
+    std::string value;  // unused: found is what counts
+    return getOption(argc, argv, option, value);
 }
 
 ArgumentVector::ArgumentVector(const std::string& name, const std::string& param)

@@ -81,11 +81,13 @@ void setCloseOnExec(int fd, bool on) {
     }
 }
 
-bool writeAll(int fd, const void* data, std::size_t size) {
-    const char* p = static_cast<const char*>(data);
+namespace {
+
+// Writes all of [p, p + size) with `put` (write or send), waiting while the other end is full.
+template <typename Put>
+bool putAll(int fd, const char* p, std::size_t size, Put put) {
     while (size > 0) {
-        // send() with MSG_NOSIGNAL would only work on sockets; writers ignore SIGPIPE instead.
-        ssize_t n = ::write(fd, p, size);
+        ssize_t n = put(fd, p, size);
         if (n > 0) {
             p += n;
             size -= static_cast<std::size_t>(n);
@@ -101,24 +103,18 @@ bool writeAll(int fd, const void* data, std::size_t size) {
     return true;
 }
 
+}  // namespace
+
+bool writeAll(int fd, const void* data, std::size_t size) {
+    // send() with MSG_NOSIGNAL would only work on sockets; writers ignore SIGPIPE instead.
+    return putAll(fd, static_cast<const char*>(data), size,
+                  [](int to, const char* p, std::size_t n) { return ::write(to, p, n); });
+}
+
 bool sendAll(int socket, const std::string& data) {
-    const char* p = data.data();
-    std::size_t size = data.size();
-    while (size > 0) {
-        ssize_t n = ::send(socket, p, size, MSG_NOSIGNAL);
-        if (n > 0) {
-            p += n;
-            size -= static_cast<std::size_t>(n);
-        } else if (n < 0 && errno == EINTR) {
-            continue;
-        } else if (n < 0 && (errno == EAGAIN || errno == EWOULDBLOCK)) {
-            pollfd pfd{socket, POLLOUT, 0};
-            ::poll(&pfd, 1, 100);
-        } else {
-            return false;
-        }
-    }
-    return true;
+    return putAll(socket, data.data(), data.size(), [](int to, const char* p, std::size_t n) {
+        return ::send(to, p, n, MSG_NOSIGNAL);
+    });
 }
 
 long readSome(int fd, std::string& out, std::size_t max) {

@@ -135,14 +135,8 @@ void ConsoleListener::addOutput(const Test* test, const std::string& text) {
     if (!verbose_ || text.empty()) {
         return;
     }
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-        std::size_t end = text.find('\n', begin);
-        if (end == std::string::npos) {
-            end = text.size();
-        }
-        line("      | " + text.substr(begin, end - begin));
-        begin = end + 1;
+    for (const std::string& shown : reporters::outputLines(text)) {
+        line(shown);
     }
 }
 

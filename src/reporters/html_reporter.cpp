@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "reporters/summary.h"
 #include "reporters/text_safety.h"
 
 namespace robottestingframework {
@@ -286,16 +287,6 @@ std::string capped(const std::string& text, std::size_t& cut) {
     return valid.substr(0, end);
 }
 
-std::string problems(const std::vector<ResultEvent>& events) {
-    std::string out;
-    for (const ResultEvent& event : events) {
-        if (isFailure(stateOf(event.kind))) {
-            out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
-        }
-    }
-    return out;
-}
-
 }  // namespace
 
 std::string HtmlReporter::document() {
@@ -325,7 +316,7 @@ std::string HtmlReporter::document() {
         std::size_t cut = 0;
         out += "{\"name\":" + jsonString(suite.name) + ",\"duration\":" + number(suite.duration);
         if (suite.fixtureFailed) {
-            out += ",\"problems\":" + jsonString(problems(suite.events));
+            out += ",\"problems\":" + jsonString(traceText(suite.events));
         }
         if (!suite.output.empty()) {
             out += ",\"output\":" + jsonString(capped(suite.output, cut));

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "reporters/summary.h"
 #include "reporters/text_safety.h"
 
 namespace robottestingframework {
@@ -58,17 +59,6 @@ std::string lines(const std::string& text) {
     return out + "]";
 }
 
-// Every problem of a test, one per line: what CTRF calls the trace.
-std::string problems(const std::vector<ResultEvent>& events) {
-    std::string out;
-    for (const ResultEvent& event : events) {
-        if (isFailure(stateOf(event.kind))) {
-            out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
-        }
-    }
-    return out;
-}
-
 // `testId` is the test's place in the run ("suite.test", from 1): the same in every run of
 // the same suites, and apart for two tests of one name. `executionId` is the id its events
 // carried in this run.
@@ -88,7 +78,7 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
     }
     if (const ResultEvent* reason = test.reason()) {
         out += ",\"message\":" + jsonString(reason->message.toString());
-        const std::string trace = problems(test.events);
+        const std::string trace = traceText(test.events);
         if (!trace.empty()) {
             out += ",\"trace\":" + jsonString(trace);
         }
@@ -218,7 +208,7 @@ std::string JsonReporter::document() {
         if (suite.fixtureFailed) {
             fixtures += std::string(fixtures.empty() ? "" : ",") +
                         "{\"suite\":" + jsonString(suite.name) +
-                        ",\"problems\":" + jsonString(problems(suite.events));
+                        ",\"problems\":" + jsonString(traceText(suite.events));
             if (!suite.output.empty()) {
                 fixtures += ",\"stdout\":" + lines(suite.output);
             }

@@ -32,6 +32,30 @@ std::string messageText(const TestMessage& msg) {
     return text;
 }
 
+std::string traceText(const std::vector<ResultEvent>& events) {
+    std::string out;
+    for (const ResultEvent& event : events) {
+        if (isFailure(stateOf(event.kind))) {
+            out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
+        }
+    }
+    return out;
+}
+
+std::vector<std::string> outputLines(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        lines.push_back("      | " + text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    return lines;
+}
+
 std::string seconds(double value) {
     // Printed for every test: integer formatting of the milliseconds is much cheaper than %f.
     const double millis = value * 1000.0 + 0.5;

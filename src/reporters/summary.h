@@ -29,6 +29,11 @@ const char* statusWord(TestStatus status);
 std::string eventLabel(ResultEvent::Kind kind, bool passed);
 // "message: detail [file:line]".
 std::string messageText(const TestMessage& msg);
+// Every problem of a test (failure, error, crash, ...), one "kind: message" per line: the
+// trace of the HTML and JSON reports.
+std::string traceText(const std::vector<ResultEvent>& events);
+// A test's output as the consoles show it under the test: one "      | line" per line.
+std::vector<std::string> outputLines(const std::string& text);
 // "0.002 s".
 std::string seconds(double value);
 

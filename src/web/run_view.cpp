@@ -364,12 +364,20 @@ Json toJson(const std::vector<RunView::Message>& messages) {
     return list;
 }
 
-// A test that runs several times says which repetition it is in; one that runs once is shown
-// as it always was.
-void withRepetition(Json& test, const std::string& repetition) {
-    if (!repetition.empty()) {
-        test["repetition"] = repetition;
+// A test as the page reads it. One that runs several times says which repetition it is in; one
+// that runs once is shown as it always was.
+Json toJson(const RunView::TestView& test) {
+    Json json = {{"id", test.id},
+                 {"name", test.name},
+                 {"state", test.state},
+                 {"duration", test.duration},
+                 {"messages", toJson(test.messages)},
+                 {"hiddenReports", test.hiddenReports},
+                 {"output", test.output}};
+    if (!test.repetition.empty()) {
+        json["repetition"] = test.repetition;
     }
+    return json;
 }
 
 }  // namespace
@@ -390,32 +398,14 @@ void RunView::publishSuite(std::size_t index) {
                    {"hiddenReports", suite.hiddenReports},
                    {"tests", Json::array()}}}};
     for (const auto& test : suite.tests) {
-        json["suite"]["tests"].push_back({{"id", test.id},
-                                          {"name", test.name},
-                                          {"state", test.state},
-                                          {"duration", test.duration},
-                                          {"messages", toJson(test.messages)},
-                                          {"hiddenReports", test.hiddenReports},
-                                          {"output", test.output}});
-        withRepetition(json["suite"]["tests"].back(), test.repetition);
+        json["suite"]["tests"].push_back(toJson(test));
     }
     publish("s" + std::to_string(index), dump(json));
 }
 
 void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
     const TestView& test = suites_[suiteIndex].tests[index];
-    Json json = {{"type", "test"},
-                 {"suite", suiteIndex},
-                 {"index", index},
-                 {"test",
-                  {{"id", test.id},
-                   {"name", test.name},
-                   {"state", test.state},
-                   {"duration", test.duration},
-                   {"messages", toJson(test.messages)},
-                   {"hiddenReports", test.hiddenReports},
-                   {"output", test.output}}}};
-    withRepetition(json["test"], test.repetition);
+    Json json = {{"type", "test"}, {"suite", suiteIndex}, {"index", index}, {"test", toJson(test)}};
     publish("t" + std::to_string(suiteIndex) + "." + std::to_string(index), dump(json));
 }
 
@@ -443,14 +433,7 @@ std::string RunView::snapshotJson() const {
     for (const auto& suite : suites_) {
         Json tests = Json::array();
         for (const auto& test : suite.tests) {
-            tests.push_back({{"id", test.id},
-                             {"name", test.name},
-                             {"state", test.state},
-                             {"duration", test.duration},
-                             {"messages", toJson(test.messages)},
-                             {"hiddenReports", test.hiddenReports},
-                             {"output", test.output}});
-            withRepetition(tests.back(), test.repetition);
+            tests.push_back(toJson(test));
         }
         suites.push_back({{"name", suite.name},
                           {"state", suite.state},

@@ -65,8 +65,7 @@ public:
         std::string where;       // "file:line" when known
         std::string repetition;  // the id of the repetition it came in; empty for none
     };
-
-private:
+    // A test as the page shows it (the snapshot and each change of it).
     struct TestView {
         std::uint64_t id = 0;
         std::string name;
@@ -80,6 +79,8 @@ private:
         std::size_t retries = 0;  // earlier failed attempts
         std::string repetition;   // the id of the repetition it is in; empty when it runs once
     };
+
+private:
     struct SuiteView {
         std::string name;
         std::string state = "running";  // "running", "passed", "failed"

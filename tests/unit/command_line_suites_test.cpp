@@ -1,4 +1,4 @@
-// Reading what the command line names (test_sources.h): --test files and --tests folders as one
+// Reading what the command line names (cli/command_line_suites.h): --test files and --tests folders as one
 // suite, then the --suite files and the suites of --suites folders, and the --var-file / --var
 // variables they see.
 #include <gtest/gtest.h>

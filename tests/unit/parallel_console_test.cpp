@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <robottestingframework/TestMessage.h>
+#include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestSuite.h>
 
@@ -37,11 +38,13 @@ public:
     ParallelConsole* operator->() { return console_.get(); }
     TestResultCollector& collector() { return collector_; }
 
-    // The events `report` makes on a suite's queue, shown as the scheduler shows them.
+    // The events `report` publishes on a suite's queue, shown as the scheduler shows them.
     template <typename Report>
     void show(const TestSuite& suite, Report report) {
         SuiteEvents events([] {});
-        report(static_cast<TestListener&>(events));
+        TestResult result;
+        result.addListener(&events);
+        report(result);
         console_->events(suite, events.take());
     }
 
@@ -65,7 +68,7 @@ TEST(ParallelConsole, APassedTestIsOneLineNamingItsSuiteAndTest) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });
@@ -76,7 +79,7 @@ TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("dropped the cup"));
         events.addCheck(&grip, TestMessage("force within limits"), false);
@@ -93,7 +96,7 @@ TEST(ParallelConsole, TheWorstStateOfATestIsItsWord) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addTimeout(&grip, TestMessage("after 2 s"));
         events.addFailure(&grip, TestMessage("late"));
@@ -108,13 +111,13 @@ TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
     TestSuite leg("leg");
     rtf_test::LambdaTest reach("reach");
     rtf_test::LambdaTest walk("walk");
-    console.show(arm, [&](TestListener& events) { events.startTest(&reach); });
-    console.show(leg, [&](TestListener& events) {
+    console.show(arm, [&](TestResult& events) { events.startTest(&reach); });
+    console.show(leg, [&](TestResult& events) {
         events.startTest(&walk);
         events.addError(&walk, TestMessage("no floor"));
         events.endTest(&walk);
     });
-    console.show(arm, [&](TestListener& events) { events.endTest(&reach); });
+    console.show(arm, [&](TestResult& events) { events.endTest(&reach); });
     EXPECT_EQ(console.text(),
               "  ERROR       leg :: walk  (T)\n"
               "      error: no floor\n"
@@ -127,7 +130,7 @@ TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("slipped"));
         events.endTest(&grip);
@@ -148,7 +151,7 @@ TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addCrash(&grip, TestMessage("signal 11"));
         events.endTest(&grip);
@@ -170,7 +173,7 @@ TEST(ParallelConsole, AnInterruptedTestIsNeverARetry) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addInterrupted(&grip, TestMessage("Ctrl-C"));
         events.endTest(&grip);
@@ -185,7 +188,7 @@ TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
         Console console(settings);
         TestSuite suite("arm");
         rtf_test::LambdaTest reach("reach");
-        console.show(suite, [&](TestListener& events) {
+        console.show(suite, [&](TestResult& events) {
             events.startTest(&reach);
             events.addReport(&reach, TestMessage("at 3 cm"));
             events.addOutput(&reach, "line one\nline two\n");
@@ -202,7 +205,7 @@ TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
 TEST(ParallelConsole, AProblemOutsideATestIsSaidAtOnceNamingTheSuite) {
     Console console;
     TestSuite suite("arm");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.addError(nullptr, TestMessage("fixture did not start"));
     });
     EXPECT_EQ(console.text(), "  arm: error: fixture did not start\n");
@@ -211,7 +214,7 @@ TEST(ParallelConsole, AProblemOutsideATestIsSaidAtOnceNamingTheSuite) {
 TEST(ParallelConsole, TheEndOfASuiteSaysWhetherItPassed) {
     Console console;
     TestSuite suite("arm");
-    console.show(suite, [&](TestListener& events) { events.endTestSuite(&suite); });
+    console.show(suite, [&](TestResult& events) { events.endTestSuite(&suite); });
     EXPECT_EQ(console.text(), "  suite passed  arm\n");
 }
 
@@ -221,7 +224,7 @@ TEST(ParallelConsole, ColoursWrapTheStatusWord) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
-    console.show(suite, [&](TestListener& events) {
+    console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });

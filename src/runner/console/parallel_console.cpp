@@ -95,14 +95,8 @@ public:
         if (!console_.settings_.verbose || found == open_().end()) {
             return;
         }
-        std::size_t begin = 0;
-        while (begin < text.size()) {
-            std::size_t end = text.find('\n', begin);
-            if (end == std::string::npos) {
-                end = text.size();
-            }
-            found->second.lines.push_back("      | " + text.substr(begin, end - begin));
-            begin = end + 1;
+        for (std::string& shown : reporters::outputLines(text)) {
+            found->second.lines.push_back(std::move(shown));
         }
     }
     void retryTest(const Test* test, TestMessage msg) override {
