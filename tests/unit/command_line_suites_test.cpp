@@ -1,6 +1,6 @@
-// Reading what the command line names (cli/command_line_suites.h): --test files and --tests folders as one
-// suite, then the --suite files and the suites of --suites folders, and the --var-file / --var
-// variables they see.
+// Reading what the command line names (cli/command_line_suites.h): --test files and --tests folders
+// as one suite, then the --suite files and the suites of --suites folders, and the --var-file /
+// --var variables they see.
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>

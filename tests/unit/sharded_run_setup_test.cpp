@@ -1,6 +1,6 @@
-// A sharded run before it starts (cli/sharded_run_setup.h): the shard from the flags and this process's
-// environment, Bazel's conventions, the shard variables taken out of the tests' environment,
-// and each suite's shard.
+// A sharded run before it starts (cli/sharded_run_setup.h): the shard from the flags and this
+// process's environment, Bazel's conventions, the shard variables taken out of the tests'
+// environment, and each suite's shard.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
