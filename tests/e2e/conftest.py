@@ -19,6 +19,20 @@ SANITIZED = os.environ.get("RTF_SANITIZED") == "1"
 SCHEMA = SOURCE_DIR / "schemas" / "junit.xsd"
 
 
+def cache_value(name, default):
+    """A variable of the build tree's CMake cache (the install layout the package tests use)."""
+    cache = BUILD_DIR / "CMakeCache.txt"
+    if not cache.is_file():  # pytest run by hand outside a build tree
+        return default
+    for line in cache.read_text().splitlines():
+        if line.startswith(name + ":"):
+            return line.split("=", 1)[1]
+    return default
+
+
+LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
+
+
 def _changes_a_runtime(name):
     """True for a variable that changes how the runtimes under test behave: the embedded
     Python (PYTHONUNBUFFERED once hid that a test's print() was lost), Ruby, Lua, the dynamic

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import BUILD_DIR, SOURCE_DIR, validate_junit
+from conftest import BUILD_DIR, LIBDIR, SOURCE_DIR, validate_junit
 
 EXTERNAL = Path(__file__).parent / "external_project"
 
@@ -29,16 +29,6 @@ def check(args, timeout=300, **kwargs):
     result = run(args, timeout, **kwargs)
     assert result.returncode == 0, f"{args}\n{result.stdout}\n{result.stderr}"
     return result
-
-
-def cache_value(name, default):
-    for line in (BUILD_DIR / "CMakeCache.txt").read_text().splitlines():
-        if line.startswith(name + ":"):
-            return line.split("=", 1)[1]
-    return default
-
-
-LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
 
 
 @pytest.fixture(scope="module")

@@ -9,19 +9,11 @@ from pathlib import Path
 
 import pytest
 
-from conftest import BUILD_DIR
+from conftest import BUILD_DIR, LIBDIR
 
 PROGRAM = Path(__file__).parent / "loader_program"
 
 
-def cache_value(name, default):
-    for line in (BUILD_DIR / "CMakeCache.txt").read_text().splitlines():
-        if line.startswith(name + ":"):
-            return line.split("=", 1)[1]
-    return default
-
-
-LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
 MODULES = BUILD_DIR / LIBDIR / "robottestingframework"
 LANGUAGES = [language for language in ("python", "lua", "ruby")
              if (MODULES / f"robottestingframework-{language}.so").is_file()]

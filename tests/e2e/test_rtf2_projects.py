@@ -11,19 +11,11 @@ from pathlib import Path
 
 import pytest
 
-from conftest import BUILD_DIR, plugin, run_runner
+from conftest import BUILD_DIR, LIBDIR, plugin, run_runner
 
 PROJECTS = Path(__file__).parent / "external_project"
 
 
-def cache_value(name, default):
-    for line in (BUILD_DIR / "CMakeCache.txt").read_text().splitlines():
-        if line.startswith(name + ":"):
-            return line.split("=", 1)[1]
-    return default
-
-
-LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
 LANGUAGES = [language for language in ("lua", "python", "ruby")
              if (BUILD_DIR / LIBDIR / f"libRobotTestingFramework{language.capitalize()}.so")
              .exists()]
