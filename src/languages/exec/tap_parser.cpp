@@ -177,7 +177,19 @@ void TapParser::process(const std::string& text) {
             }
             return;
         }
-        closeYaml(false);  // a less indented line ends the block, and is read as what it is
+        // A less indented line: text and comments are tolerated inside the block (TAP 14:
+        // invalid lines should not fail a run); a TAP line means the block was not YAML
+        // after all (its lines stay the point's diagnostics) and is read as what it is.
+        const std::string content = text.substr(lead);
+        if (!endsSubtests(content) && !startsWith(content, "pragma ")) {
+            if (startsWith(content, "#")) {
+                emitComment(trim(content.substr(1)));
+            } else {
+                emitText(text);
+            }
+            return;
+        }
+        closeYaml(true);
     }
     if (blank) {
         return;
@@ -188,6 +200,17 @@ void TapParser::process(const std::string& text) {
         return;
     }
     flushPending();
+    if (levels_.size() > 1 && lead < levels_.back().indent && !endsSubtests(text.substr(lead))) {
+        // A less indented line that is not TAP (text, a comment) inside a subtest: TAP 14 reads
+        // it as what it is, and the subtest goes on.
+        const std::string content = text.substr(lead);
+        if (startsWith(content, "#")) {
+            emitComment(trim(content.substr(1)));
+        } else {
+            emitText(text);
+        }
+        return;
+    }
     while (levels_.size() > 1 && lead < levels_.back().indent) {
         closeLevel();
     }
@@ -238,10 +261,11 @@ void TapParser::process(const std::string& text) {
         if (!point(content)) {
             emitText(text);
         }
-    } else if (startsWith(content, "Bail out!")) {
+    } else if (startsWithWordNoCase(content, "bail out!")) {
+        // TAP 14: the words are case-insensitive, and the reason may escape '#' and '\'.
         decideTap();
         bailedOut_ = true;
-        bailOutReason_ = trim(content.substr(9));
+        bailOutReason_ = unescape(trim(content.substr(9)));
         bailOutLine_ = lineNumber_;
     } else if (startsWith(content, "#")) {
         std::string comment = trim(content.substr(1));
@@ -255,6 +279,19 @@ void TapParser::process(const std::string& text) {
     } else {
         emitText(text);
     }
+}
+
+// A line that is TAP of its own (a test point, a plan, a version, a bail out): less indented
+// than the open subtests, it ends them. Anything else does not: text, and comments, a
+// "# Subtest:" one too (TAP 14: the parent's test point ends a subtest; a stray "# Subtest:"
+// inside one is a comment and names nothing).
+bool TapParser::endsSubtests(const std::string& content) const {
+    if (startsWith(content, "ok") || startsWith(content, "not ok")) {
+        const std::size_t after = startsWith(content, "ok") ? 2 : 6;
+        return after == content.size() || content[after] == ' ' || content[after] == '#';
+    }
+    return startsWith(content, "1..") || startsWith(content, "TAP version ") ||
+           startsWithWordNoCase(content, "bail out!");
 }
 
 void TapParser::plan(const std::string& content) {
@@ -301,10 +338,10 @@ bool TapParser::point(const std::string& content) {
     unsigned long number = 0;
     bool numbered = readNumber(content, pos, number);
     ++level.count;
-    if (numbered && number != level.count) {
-        emitProblem(lineNumber_, "test number " + std::to_string(number) +
-                                     " out of sequence (expected " + std::to_string(level.count) +
-                                     ")");
+    // TAP 14: numbers out of order are valid ("ok 1", "ok 3", "ok 2"); one beyond the plan is
+    // checked when the level ends (only the highest is kept: memory stays bounded).
+    if (numbered && number > level.highestNumber) {
+        level.highestNumber = number;
     }
     p.number = numbered ? static_cast<unsigned int>(number) : level.count;
     std::string rest = content.substr(pos);
@@ -382,6 +419,10 @@ void TapParser::closeLevel() {
         if (static_cast<unsigned long>(level.planned) != level.count) {
             emitProblem(level.planLine, "planned " + std::to_string(level.planned) +
                                             " test(s) but ran " + std::to_string(level.count));
+        } else if (level.highestNumber > static_cast<unsigned long>(level.planned)) {
+            emitProblem(level.planLine, "test number " + std::to_string(level.highestNumber) +
+                                            " is beyond the plan 1.." +
+                                            std::to_string(level.planned));
         }
     }
     if (levels_.size() > 1) {

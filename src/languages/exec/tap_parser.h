@@ -29,12 +29,15 @@ struct TapPoint {
     std::string subtest;      // the enclosing subtests' names ("outer > inner"); empty at top
     unsigned int line = 0;    // 1-based line of the point in the stream
 
-    // A failing TODO point is expected to fail: it does not fail the stream.
-    bool failed() const { return !ok && directive != Directive::Todo; }
+    // A failing TODO point is expected to fail, and a failing SKIP point was not run (TAP 14:
+    // "Harnesses must not treat failing SKIP test points as a test failure"): neither fails
+    // the stream.
+    bool failed() const { return !ok && directive == Directive::None; }
 };
 
 // Something in the stream that makes it fail although no point failed: a plan that does not
-// match, a plan in the middle, a missing plan, a test number out of sequence.
+// match, a plan in the middle, a missing plan, a test number beyond the plan. (Numbers out of
+// order are valid TAP 14; lines that are not TAP never fail a stream.)
 struct TapProblem {
     unsigned int line = 0;  // where it was noticed (0: at the end of the stream)
     std::string message;
@@ -91,6 +94,7 @@ private:
         unsigned int count = 0;
         unsigned int beforePlan = 0;
         unsigned int afterPlan = 0;
+        unsigned long highestNumber = 0;  // of the numbered points
     };
     // A line or an event from before the stream was known to be TAP.
     struct Held {
@@ -101,6 +105,7 @@ private:
     };
 
     void process(const std::string& text);
+    bool endsSubtests(const std::string& content) const;
     void plan(const std::string& content);
     bool point(const std::string& content);
     void closeYaml(bool closed);
