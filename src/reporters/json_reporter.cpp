@@ -15,6 +15,11 @@ namespace {
 
 using Kind = ResultEvent::Kind;
 
+// The key of the runner's extensions in every "extra" object, namespaced as the CTRF
+// specification recommends (4.6.1: an owner's prefix and a delimiter, the same key throughout
+// the document). report_reader.cpp reads it, and the "rtf" of earlier versions.
+const char* const extension = "\"robotology.rtf\"";
+
 // CTRF's five statuses; the state itself is kept in extra.rtf.state.
 const char* ctrfStatus(TestStatus status) {
     switch (status) {
@@ -91,25 +96,33 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
         out += ",\"stdout\":" + lines(test.output);
     }
     out += ",\"retries\":" + std::to_string(test.attempts.size());
+    if (!test.attempts.empty()) {
+        // The earlier failed attempts (--retries), as CTRF has them: one entry per attempt
+        // before the final one, numbered from 1, each with its own state in the extension.
+        out += ",\"retryAttempts\":[";
+        for (std::size_t i = 0; i < test.attempts.size(); ++i) {
+            const TestAttempt& attempt = test.attempts[i];
+            out += std::string(i == 0 ? "" : ",") + "{\"attempt\":" + std::to_string(i + 1) +
+                   ",\"status\":\"" + ctrfStatus(attempt.status) + "\"" +
+                   ",\"duration\":" + std::to_string(milliseconds(attempt.duration)) +
+                   ",\"message\":" + jsonString(attempt.message.toString()) +
+                   ",\"trace\":" + jsonString(messageText(attempt.message));
+            if (!attempt.output.empty()) {
+                out += ",\"stdout\":" + lines(attempt.output);
+            }
+            out += ",\"extra\":{" + std::string(extension) +
+                   ":{\"state\":" + jsonString(toString(attempt.status)) + "}}}";
+        }
+        out += "]";
+    }
     out += std::string(",\"flaky\":") + (test.status == TestStatus::Flaky ? "true" : "false");
-    out += ",\"extra\":{\"rtf\":{\"state\":" + jsonString(toString(test.status));
+    out += ",\"extra\":{" + std::string(extension) +
+           ":{\"state\":" + jsonString(toString(test.status));
     if (!test.description.empty()) {
         out += ",\"description\":" + jsonString(test.description);
     }
     if (test.status == TestStatus::Error || test.status == TestStatus::Crashed) {
         out += ",\"error\":true";
-    }
-    if (!test.attempts.empty()) {
-        // The earlier failed attempts (--retries), oldest first.
-        out += ",\"attempts\":[";
-        for (std::size_t i = 0; i < test.attempts.size(); ++i) {
-            const TestAttempt& attempt = test.attempts[i];
-            out += std::string(i == 0 ? "" : ",") +
-                   "{\"state\":" + jsonString(toString(attempt.status)) +
-                   ",\"message\":" + jsonString(attempt.message.toString()) +
-                   ",\"duration\":" + std::to_string(milliseconds(attempt.duration)) + "}";
-        }
-        out += "]";
     }
     if (!test.repetitions.empty()) {
         // repetition="N": each repetition by its id, with its state and its first problem.
@@ -178,7 +191,7 @@ std::string JsonReporter::document() {
     out += ",\"suites\":" + std::to_string(collector_.suiteCount());
     out += ",\"start\":" + std::to_string(origin) + ",\"stop\":" + std::to_string(stop);
     out += ",\"duration\":" + std::to_string(stop - origin);
-    out += ",\"extra\":{\"rtf\":{";
+    out += ",\"extra\":{" + std::string(extension) + ":{";
     for (TestStatus status : {TestStatus::Failed, TestStatus::Error, TestStatus::Crashed,
                               TestStatus::TimedOut, TestStatus::Interrupted}) {
         out += (status == TestStatus::Failed ? "" : ",") + jsonString(toString(status)) + ":" +
@@ -217,7 +230,7 @@ std::string JsonReporter::document() {
     }
     out += "]";
     // A fixture that failed is the suite's, not a test's: kept where CTRF leaves room for it.
-    out += ",\"extra\":{\"rtf\":{\"fixtureFailures\":[" + fixtures + "]";
+    out += ",\"extra\":{" + std::string(extension) + ":{\"fixtureFailures\":[" + fixtures + "]";
     // Each suite's time, fixtures included: what --durations balances shards by.
     out += ",\"suites\":[" + suites + "]";
     if (settings_.sharded) {

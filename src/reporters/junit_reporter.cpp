@@ -48,22 +48,65 @@ std::string hostname() {
     return buffer;
 }
 
-bool isErrorState(TestStatus status) {
-    return status == TestStatus::Error || status == TestStatus::Crashed ||
-           status == TestStatus::TimedOut || status == TestStatus::Interrupted;
+// How each state is written, where JUnit has a word for it: the element that marks the test and
+// its type= (report_reader.cpp reads the state back from the same pair). A test that timed out
+// failed (it did not finish what it checks); a crash, an error or an interruption is an error.
+// Flaky has no element: its earlier attempts (<flakyFailure>) and a suite property say it.
+struct JUnitProblem {
+    const char* element;  // "skipped", "failure", "error"; nullptr when the test passed
+    const char* type;
+};
+
+JUnitProblem problemOf(TestStatus status) {
+    switch (status) {
+        case TestStatus::Skipped:
+            return {"skipped", nullptr};
+        case TestStatus::Failed:
+            return {"failure", "failure"};
+        case TestStatus::TimedOut:
+            return {"failure", "timeout"};
+        case TestStatus::Error:
+            return {"error", "error"};
+        case TestStatus::Crashed:
+            return {"error", "crash"};
+        case TestStatus::Interrupted:
+            return {"error", "interrupted"};
+        case TestStatus::Passed:
+        case TestStatus::Flaky:
+            break;
+    }
+    return {nullptr, nullptr};
 }
 
-const char* errorType(TestStatus status) {
-    switch (status) {
-        case TestStatus::Crashed:
-            return "crash";
-        case TestStatus::TimedOut:
-            return "timeout";
-        case TestStatus::Interrupted:
-            return "interrupted";
-        default:
-            return "error";
+bool isErrorState(TestStatus status) {
+    const char* element = problemOf(status).element;
+    return element != nullptr && std::string(element) == "error";
+}
+
+bool isFailureState(TestStatus status) {
+    const char* element = problemOf(status).element;
+    return element != nullptr && std::string(element) == "failure";
+}
+
+// The states JUnit has no word for: a suite property names each test in one of them.
+bool needsStateProperty(TestStatus status) {
+    return status == TestStatus::TimedOut || status == TestStatus::Crashed ||
+           status == TestStatus::Interrupted || status == TestStatus::Flaky;
+}
+
+// A crash's message= is the signal's name ("SIGSEGV"), what CI tools show in one line; the
+// details keep the whole reason ("crashed: SIGSEGV (Segmentation fault)").
+std::string crashSignal(const std::string& reason) {
+    const std::size_t at = reason.find("SIG");
+    if (at == std::string::npos) {
+        return reason;
     }
+    std::size_t end = at + 3;
+    while (end < reason.size() && ((reason[end] >= 'A' && reason[end] <= 'Z') ||
+                                   (reason[end] >= '0' && reason[end] <= '9'))) {
+        ++end;
+    }
+    return end > at + 3 ? reason.substr(at, end - at) : reason;
 }
 
 bool isProblem(Kind kind) {
@@ -99,8 +142,8 @@ struct Counts {
     std::size_t skipped = 0;
 };
 
-// The numbers of a suite's <testsuite> element; a failed fixture counts as one error more,
-// but not as a test (tests= counts the suite's tests, which carry the fixture's reason).
+// The numbers of a suite's <testsuite> element, as readers recount them from the elements: a
+// failed fixture is a <testcase> of its own ("fixtures"), counted in tests= and errors=.
 Counts countsOf(const SuiteRecord& suite) {
     Counts counts;
     counts.tests = suite.tests.size();
@@ -109,14 +152,27 @@ Counts countsOf(const SuiteRecord& suite) {
             ++counts.skipped;
         } else if (isErrorState(test.status)) {
             ++counts.errors;
-        } else if (test.status == TestStatus::Failed) {
+        } else if (isFailureState(test.status)) {
             ++counts.failures;
         }
     }
     if (suite.fixtureFailed) {
+        ++counts.tests;
         ++counts.errors;
     }
     return counts;
+}
+
+// An earlier failed attempt (--retries), as Maven Surefire writes it: message= and type= on the
+// element, the details in <stackTrace>, then what it printed in <system-out>.
+void appendAttempt(std::string& inner, const char* element, const TestAttempt& attempt) {
+    inner += std::string("      <") + element + attr("message", attempt.message.toString()) +
+             attr("type", toString(attempt.status)) + ">\n        <stackTrace>" +
+             escape(messageText(attempt.message), false) + "</stackTrace>\n";
+    if (!attempt.output.empty()) {
+        inner += "        <system-out>" + escape(attempt.output, false) + "</system-out>\n";
+    }
+    inner += std::string("      </") + element + ">\n";
 }
 
 void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
@@ -125,33 +181,29 @@ void appendTestCase(std::string& out, const TestRecord& test, const std::string&
     out += attr("name", test.name);
     out += attr("classname", suiteName);
     out += attr("time", number(test.duration));
-    out += attr("status", toString(test.status));
     std::string inner;
     const ResultEvent* reason = test.reason();
     const std::string message = reason ? reason->message.toString() : "";
+    const JUnitProblem problem = problemOf(test.status);
     if (test.status == TestStatus::Skipped) {
-        inner += "      <skipped>" + escape(message, false) + "</skipped>\n";
-    } else if (isErrorState(test.status)) {
-        inner += "      <error" + attr("message", message) + attr("type", errorType(test.status)) +
-                 ">" + escape(problems(test.events), false) + "</error>\n";
-    } else if (test.status == TestStatus::Failed) {
-        inner += "      <failure" + attr("message", message) + attr("type", "failure") + ">" +
-                 escape(problems(test.events), false) + "</failure>\n";
+        inner += "      <skipped" + attr("message", message) + ">" + escape(message, false) +
+                 "</skipped>\n";
+    } else if (problem.element != nullptr) {
+        const std::string summary =
+            test.status == TestStatus::Crashed ? crashSignal(message) : message;
+        inner += std::string("      <") + problem.element + attr("message", summary) +
+                 attr("type", problem.type) + ">" + escape(problems(test.events), false) + "</" +
+                 problem.element + ">\n";
     }
-    // Earlier failed attempts (--retries), as Maven Surefire writes them: inside the one
-    // <testcase>, flakyFailure when the last attempt passed, rerunFailure when it did not.
-    const char* attemptElement = test.status == TestStatus::Flaky ? "flakyFailure" : "rerunFailure";
-    if (test.status == TestStatus::Flaky || isErrorState(test.status) ||
-        test.status == TestStatus::Failed) {
+    // Earlier failed attempts follow the final one, as Surefire orders them: <flakyFailure> when
+    // the last attempt passed, else <rerunFailure> after a <failure> and <rerunError> after an
+    // <error>. Each one's type= is its own state.
+    if (test.status == TestStatus::Flaky || problem.type != nullptr) {
+        const char* element = test.status == TestStatus::Flaky ? "flakyFailure"
+                              : isErrorState(test.status)      ? "rerunError"
+                                                               : "rerunFailure";
         for (const TestAttempt& attempt : test.attempts) {
-            inner += std::string("      <") + attemptElement +
-                     attr("message", attempt.message.toString()) +
-                     attr("type", toString(attempt.status)) + ">" +
-                     escape(messageText(attempt.message), false);
-            if (!attempt.output.empty()) {
-                inner += "<system-out>" + escape(attempt.output, false) + "</system-out>";
-            }
-            inner += std::string("</") + attemptElement + ">\n";
+            appendAttempt(inner, element, attempt);
         }
     }
     const std::string output = systemOut(test.events, test.output, verbose);
@@ -165,6 +217,36 @@ void appendTestCase(std::string& out, const TestRecord& test, const std::string&
         out += inner;
         out += "    </testcase>\n";
     }
+}
+
+// A suite's <properties>. The shard that wrote the report and a --rerun-failed run, on the
+// first suite only (<testsuites> may hold no properties in the readers' schemas, and
+// xunitparser refuses a property name twice in a document); then each test in a state JUnit
+// has no word for: "rtf.state.S.T" (the test's place, as CTRF's testId) = its state.
+std::string suiteProperties(const ReporterSettings& settings, bool first, const SuiteRecord* suite,
+                            std::size_t place) {
+    std::string text;
+    auto property = [&text](const std::string& name, const std::string& value) {
+        text += "      <property" + attr("name", name) + attr("value", value) + "/>\n";
+    };
+    if (first && settings.sharded) {
+        property("rtf.shard.index", std::to_string(settings.shardIndex));
+        property("rtf.shard.count", std::to_string(settings.shardCount));
+    }
+    if (first && settings.rerun) {
+        property("rtf.rerun", "true");
+    }
+    if (suite != nullptr) {
+        std::size_t index = 0;
+        for (const TestRecord& test : suite->tests) {
+            ++index;
+            if (needsStateProperty(test.status)) {
+                property("rtf.state." + std::to_string(place) + "." + std::to_string(index),
+                         toString(test.status));
+            }
+        }
+    }
+    return text.empty() ? text : "    <properties>\n" + text + "    </properties>\n";
 }
 
 }  // namespace
@@ -194,19 +276,12 @@ std::string JUnitReporter::document() {
     out += attr("errors", std::to_string(total.errors));
     out += attr("time", number(collector_.duration() > 0 ? collector_.duration() : totalTime));
     out += ">\n";
-    if (settings_.sharded || settings_.rerun) {
-        // On the root, so an empty shard says which it is too (--merge --expect-shards).
-        out += "  <properties>\n";
-        if (settings_.sharded) {
-            out += "    <property" + attr("name", "rtf.shard.index") +
-                   attr("value", std::to_string(settings_.shardIndex)) + "/>\n    <property" +
-                   attr("name", "rtf.shard.count") +
-                   attr("value", std::to_string(settings_.shardCount)) + "/>\n";
-        }
-        if (settings_.rerun) {
-            out += "    <property" + attr("name", "rtf.rerun") + attr("value", "true") + "/>\n";
-        }
-        out += "  </properties>\n";
+    if (collector_.suites().empty() && (settings_.sharded || settings_.rerun)) {
+        // A shard with no suite still says which it is (--merge --expect-shards): in a suite
+        // with no tests and no id, which is no suite of the run (report_reader.cpp).
+        out += "  <testsuite" + attr("name", "RobotTestingFramework") +
+               " tests=\"0\" failures=\"0\" errors=\"0\" skipped=\"0\" time=\"0.000\">\n" +
+               suiteProperties(settings_, true, nullptr, 0) + "  </testsuite>\n";
     }
     std::size_t index = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
@@ -221,8 +296,10 @@ std::string JUnitReporter::document() {
         out += attr("time", number(suite.duration));
         out += attr("timestamp", timestamp(collector_.startedAt(), suite.start));
         out += attr("hostname", host);
-        out += attr("id", std::to_string(settings_.suitePlace(index++)));
+        const std::size_t place = settings_.suitePlace(index);
+        out += attr("id", std::to_string(place));
         out += ">\n";
+        out += suiteProperties(settings_, index++ == 0, &suite, place + 1);
         for (const TestRecord& test : suite.tests) {
             appendTestCase(out, test, suiteName, verbose);
         }
@@ -238,9 +315,9 @@ std::string JUnitReporter::document() {
                 }
             }
             out += "    <testcase" + attr("name", "fixtures") + attr("classname", suiteName) +
-                   attr("time", "0.000") + attr("status", "error") + ">\n      <error" +
-                   attr("message", first) + attr("type", "fixture") + ">" +
-                   escape(suiteProblems, false) + "</error>\n    </testcase>\n";
+                   attr("time", "0.000") + ">\n      <error" + attr("message", first) +
+                   attr("type", "fixture") + ">" + escape(suiteProblems, false) +
+                   "</error>\n    </testcase>\n";
         }
         const std::string output = systemOut(suite.events, suite.output, verbose);
         if (!output.empty()) {

@@ -2,6 +2,7 @@
 import json
 import os
 import signal
+import stat
 import subprocess
 import time
 import uuid
@@ -131,11 +132,79 @@ def empty_environment(**more):
     return env
 
 
-def validate_junit(path):
-    """Fails the test unless `path` validates against the project's JUnit schema."""
-    result = subprocess.run(["xmllint", "--noout", "--schema", str(SCHEMA), str(path)],
+def validate_junit(*paths):
+    """Fails the test unless every one of `paths` validates against the project's JUnit schema
+    and the third-party readers read it with the report's own counts (read_junit)."""
+    result = subprocess.run(["xmllint", "--noout", "--schema", str(SCHEMA), *map(str, paths)],
                             capture_output=True, text=True, timeout=60)
     assert result.returncode == 0, result.stderr
+    return read_junit(*paths)
+
+
+# The JUnit readers scripts/python-tools.sh installs into the build tree (a venv of its own).
+PYTHON_TOOLS = BUILD_DIR / "python-tools" / "bin" / "python"
+
+
+def read_junit(*paths):
+    """Reads each of `paths` with junitparser and xunitparser; fails the test unless both read
+    it and their counts (per suite, in total, after a junitparser merge) equal the report's.
+    Returns what they read of each file: suites, totals, junitparser, xunitparser."""
+    result = subprocess.run([str(PYTHON_TOOLS), str(TOOLS_DIR / "read_junit.py"),
+                             *map(str, paths)], capture_output=True, text=True, timeout=120)
+    assert result.returncode == 0, f"read_junit.py:\n{result.stderr}\n{result.stdout}"
+    return json.loads(result.stdout)
+
+
+def runner_junit_reports(folder):
+    """Every JUnit report of this runner under `folder` (whatever the file's name): regular
+    files that start as the runner's do. Symbolic links and FIFOs are not opened."""
+    found = []
+    for path in sorted(Path(folder).rglob("*")):
+        try:
+            if path.is_symlink() or not stat.S_ISREG(path.stat().st_mode):
+                continue
+            with open(path, "rb") as f:
+                head = f.read(300)
+        except OSError:
+            continue
+        if b'<testsuites name="RobotTestingFramework"' in head:
+            found.append(path)
+    return found
+
+
+def junit_state(case):
+    """A <testcase>'s state as the runner's words say it ("timed out"), read from its elements
+    as report_reader.cpp reads them: the reports carry no status= attribute."""
+    if case.find("skipped") is not None:
+        return "skipped"
+    failure = case.find("failure")
+    if failure is not None:
+        return "timed out" if failure.get("type") == "timeout" else "failed"
+    error = case.find("error")
+    if error is not None:
+        return {"crash": "crashed", "interrupted": "interrupted"}.get(error.get("type"), "error")
+    if case.find("flakyFailure") is not None:
+        return "flaky"
+    return "passed"
+
+
+def pytest_configure(config):
+    config.addinivalue_line("markers", "edited_reports: the test edits or forges reports on "
+                            "purpose; its reports are not all read by the JUnit readers")
+
+
+@pytest.fixture(autouse=True)
+def every_junit_report_is_read(request):
+    """After each test, every JUnit report it left in its folder validates against the schema
+    and the third-party readers read it with the runner's counts (see validate_junit)."""
+    checked = ("tmp_path" in request.fixturenames and
+               not request.node.get_closest_marker("edited_reports"))
+    # Asked for before the test, so that the folder outlives this fixture's end.
+    folder = request.getfixturevalue("tmp_path") if checked else None
+    yield
+    reports = runner_junit_reports(folder) if checked else []
+    if reports:
+        validate_junit(*reports)
 
 
 # The third-party checkers scripts/node-tools.sh installs into the build tree.
@@ -154,6 +223,12 @@ def validate_tap(path):
     """Parses `path` with tap-parser in strict mode; fails on any parse error. Returns what it
     parsed: ok, count, pass, fail, skip, bailout, plan, and every test point with its depth."""
     return json.loads(_node_check("validate_tap.js", path))
+
+
+def tap_verdict(path):
+    """What the reference TAP 14 parser (tap-parser, not strict) makes of `path`: ok, bailout,
+    count, pass, fail, skip, todo."""
+    return json.loads(_node_check("tap_verdict.js", path))
 
 
 def validate_ctrf(path):

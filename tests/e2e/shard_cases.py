@@ -65,7 +65,7 @@ def normal_ctrf(path):
     for test in report["results"]["tests"]:
         for key in ("start", "stop", "duration", "executionId"):
             test.pop(key)
-    for suite in report["results"]["extra"]["rtf"]["suites"]:
+    for suite in report["results"]["extra"]["robotology.rtf"]["suites"]:
         suite.pop("duration")
     return report
 

@@ -15,8 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import (BUILD_DIR, RUNNER, _marked_processes, leftover_processes, marked, plugin,
-                      run_runner, start_runner)
+from conftest import (BUILD_DIR, RUNNER, _marked_processes, junit_state, leftover_processes,
+                      marked, plugin, run_runner, start_runner)
 
 PASSING = plugin("passing_test")
 ACTOR = Path(__file__).parent / "world" / "actor.py"
@@ -314,7 +314,7 @@ def test_a_second_ctrl_c_writes_the_result_files_with_what_is_known(tmp_path, ma
     assert time.monotonic() - begin < 5
     assert proc.returncode == 130, (out, err)
     assert "writing what is known and quitting" in out + err
-    cases = {case.get("name"): case.get("status")
+    cases = {case.get("name"): junit_state(case)
              for case in ET.parse(junit).getroot().iter("testcase")}
     assert cases["first"] == "passed" and cases["stubborn"] == "interrupted", cases
     assert "stubborn" in text.read_text()
@@ -344,7 +344,7 @@ def test_tests_not_run_because_ctrl_c_hit_a_fixture_set_up_are_interrupted(tmp_p
     proc.send_signal(signal.SIGINT)
     out, err = finish(proc)
     assert proc.returncode == 130, (out, err)
-    cases = {case.get("name"): case.get("status")
+    cases = {case.get("name"): junit_state(case)
              for case in ET.parse(junit).getroot().iter("testcase")}
     assert cases.get("a") == "interrupted" and cases.get("b") == "interrupted", (cases, out)
     assert leftover_processes(marker) == []

@@ -9,8 +9,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import (_marked_processes, leftover_processes, marked, plugin, start_runner,
-                      validate_junit)
+from conftest import (_marked_processes, junit_state, leftover_processes, marked, plugin,
+                      start_runner, validate_junit)
 
 
 def wait_for(condition, timeout=20.0, what="the condition"):
@@ -33,7 +33,7 @@ def finish(proc, timeout=30):
 
 
 def statuses(junit):
-    return {case.get("name"): case.get("status")
+    return {case.get("name"): junit_state(case)
             for case in ET.parse(junit).getroot().iter("testcase")}
 
 

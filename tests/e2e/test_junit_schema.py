@@ -1,5 +1,8 @@
 """The project's own JUnit schema (schemas/junit.xsd): the runner's reports validate against
-it, and it is strict — each way a CI tool would misread a report is rejected."""
+it, and it is strict — each way a CI tool would misread a report is rejected, and so is each
+thing the strictest readers refuse (Jenkins' xUnit plug-in validates against its junit-10.xsd;
+Maven Surefire's XSD orders a test's elements). The reports are read by junitparser and
+xunitparser too (conftest.read_junit), with the runner's counts."""
 import os
 import subprocess
 import xml.etree.ElementTree as ET
@@ -7,7 +10,10 @@ from pathlib import Path
 
 import pytest
 
-from conftest import SCHEMA, SOURCE_DIR, plugin, run_runner, validate_junit
+from conftest import SCHEMA, SOURCE_DIR, junit_state, plugin, run_runner, validate_junit
+
+# The tests below edit reports on purpose (conftest.every_junit_report_is_read).
+pytestmark = pytest.mark.edited_reports
 
 
 def xmllint(path):
@@ -39,7 +45,8 @@ def test_schema_lies_in_the_repository():
 
 
 def test_runner_report_with_every_state_validates(report, tmp_path):
-    validate_junit(report)
+    read = validate_junit(report)
+    assert read[0]["totals"] == {"tests": 4, "failures": 1, "errors": 1, "skipped": 1}, read
     # The optional parts the runner does not write today are accepted too.
     tree = ET.parse(report)
     _add_properties(tree.getroot(), {"name": "robot", "value": "icubSim"})
@@ -77,46 +84,88 @@ MUTATIONS = {
     "property without value": lambda r: _add_properties(r, {"name": "x"}),
     "flakyFailure beside a failure": lambda r: _after_failure(r, "flakyFailure"),
     "rerunFailure without a failure": lambda r: _first_passing(r).insert(
-        0, ET.Element("rerunFailure")),
+        0, _attempt("rerunFailure")),
+    "rerunError after a failure": lambda r: _after_failure(r, "rerunError"),
     "unknown element in flakyFailure": lambda r: ET.SubElement(
         _flaky(_first_passing(r)), "screenshot"),
     "unknown attribute on flakyFailure": lambda r: _flaky(_first_passing(r)).set("when", "1"),
+    # What junit-10.xsd (Jenkins' xUnit plug-in) refuses.
+    "status on a testcase": lambda r: _first(r, "testcase").set("status", "passed"),
+    "properties under testsuites": lambda r: r.insert(0, _properties({"name": "a", "value": "1"})),
+    "properties in a testcase": lambda r: _first(r, "testcase").insert(
+        0, _properties({"name": "a", "value": "1"})),
+    "testsuite without failures": lambda r: _first(r, "testsuite").attrib.pop("failures"),
+    "testsuite without errors": lambda r: _first(r, "testsuite").attrib.pop("errors"),
+    "assertions on a testcase": lambda r: _first(r, "testcase").set("assertions", "1"),
+    "skipped on testsuites": lambda r: r.set("skipped", "0"),
+    # What Surefire's XSD refuses.
+    "testsuite without skipped": lambda r: _first(r, "testsuite").attrib.pop("skipped"),
+    "failure without type": lambda r: next(r.iter("failure")).attrib.pop("type"),
+    "error without type": lambda r: next(r.iter("error")).attrib.pop("type"),
+    "attempt without type": lambda r: _flaky(_first_passing(r)).attrib.pop("type"),
+    "attempt without stackTrace": lambda r: _bare_attempt(r),
+    "attempt text outside stackTrace": lambda r: _set_text(_flaky(_first_passing(r)), "trace"),
+    "testcase without time": lambda r: _first(r, "testcase").attrib.pop("time"),
+    "time with four decimals": lambda r: _first(r, "testcase").set("time", "0.1234"),
+    "two errors": lambda r: _after_failure(r, "error"),
 }
 
 
+def _attempt(tag):
+    attempt = ET.Element(tag, {"message": "m", "type": "failed"})
+    ET.SubElement(attempt, "stackTrace").text = "trace"
+    return attempt
+
+
+def _bare_attempt(root):
+    case = _first_passing(root)
+    case.insert(0, ET.Element("flakyFailure", {"message": "m", "type": "failed"}))
+
+
+def _set_text(element, text):
+    element.text = text
+
+
 def _first_passing(root):
-    return next(c for c in root.iter("testcase") if c.get("status") == "passed")
+    return next(c for c in root.iter("testcase") if junit_state(c) == "passed")
 
 
 def _flaky(case):
-    attempt = ET.Element("flakyFailure", {"message": "m", "type": "failed"})
-    case.insert(0, attempt)
+    attempt = case.find("flakyFailure")
+    if attempt is None:
+        attempt = _attempt("flakyFailure")
+        case.insert(0, attempt)
     return attempt
 
 
 def _after_failure(root, tag):
     case = next(c for c in root.iter("testcase") if c.find("failure") is not None)
-    case.insert(list(case).index(case.find("failure")) + 1, ET.Element(tag))
+    element = _attempt(tag) if tag != "error" else ET.Element(tag, {"type": "error"})
+    case.insert(list(case).index(case.find("failure")) + 1, element)
 
 
 def test_surefire_attempt_children_validate(report, tmp_path):
     tree = ET.parse(report)
     attempt = _flaky(_first_passing(tree.getroot()))
-    attempt.text = "details"
-    for child in ("stackTrace", "system-out", "system-err"):
+    for child in ("system-out", "system-err"):
         ET.SubElement(attempt, child).text = child
     case = next(c for c in tree.getroot().iter("testcase") if c.find("failure") is not None)
-    rerun = ET.Element("rerunFailure", {"message": "m", "type": "failed"})
-    case.insert(list(case).index(case.find("failure")) + 1, rerun)
+    case.insert(list(case).index(case.find("failure")) + 1, _attempt("rerunFailure"))
+    case = next(c for c in tree.getroot().iter("testcase") if c.find("error") is not None)
+    case.insert(list(case).index(case.find("error")) + 1, _attempt("rerunError"))
     good = tmp_path / "surefire.xml"
     tree.write(good, encoding="UTF-8", xml_declaration=True)
     validate_junit(good)
 
 
-def _add_properties(root, attributes):
+def _properties(attributes):
     properties = ET.Element("properties")
     ET.SubElement(properties, "property", attributes)
-    _first(root, "testsuite").insert(0, properties)
+    return properties
+
+
+def _add_properties(root, attributes):
+    _first(root, "testsuite").insert(0, _properties(attributes))
 
 
 def _move_output_first(root):

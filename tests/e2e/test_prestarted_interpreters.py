@@ -10,7 +10,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import RUNNER, leftover_processes, marked, run_runner, start_runner
+from conftest import RUNNER, junit_state, leftover_processes, marked, run_runner, start_runner
 from test_isolation_interrupts import finish, wait_for
 
 PRESTARTED = re.compile(r"(\w+) tests run in forks of a pre-started interpreter \(pid (\d+)\)")
@@ -92,9 +92,9 @@ def test_python_tests_run_in_forks_of_one_prestarted_interpreter_and_share_nothi
     (tmp_path / "state.py").write_text(PYTHON_LEAKS["state.py"])
     r, junit = run_suite(tmp_path, tests, env={"RTF_PIDS": str(pids)})
     assert r.returncode == 1, r
-    assert junit["a_test.py"].get("status") == "passed", r
+    assert junit_state(junit["a_test.py"]) == "passed", r
     # Failed by the real check: not an error for a leak.
-    assert junit["b_test.py"].get("status") == "failed", r
+    assert junit_state(junit["b_test.py"]) == "failed", r
     assert "the real testCheck still fails" in message(junit["b_test.py"]), r
     found = PRESTARTED.findall(r.stderr)
     assert [language for language, _ in found] == ["python"], r
@@ -110,8 +110,8 @@ def test_rtf_prestart_0_runs_each_python_test_in_its_own_interpreter(tmp_path):
     tests = {name: text for name, text in PYTHON_LEAKS.items() if name != "state.py"}
     (tmp_path / "state.py").write_text(PYTHON_LEAKS["state.py"])
     r, junit = run_suite(tmp_path, tests, env={"RTF_PIDS": str(pids), "RTF_PRESTART": "0"})
-    assert junit["a_test.py"].get("status") == "passed", r
-    assert junit["b_test.py"].get("status") == "failed", r
+    assert junit_state(junit["a_test.py"]) == "passed", r
+    assert junit_state(junit["b_test.py"]) == "failed", r
     assert not PRESTARTED.search(r.stderr), r
     assert len(set(line.split()[1] for line in pids.read_text().splitlines())) == 1
 
@@ -148,8 +148,8 @@ def test_lua_tests_run_in_forks_of_a_prestarted_lua_and_share_nothing(tmp_path):
                          env={"LUA_PATH": f"{tmp_path}/?.lua;;"})
     if "is not supported by this build" in r.output or "not available" in r.output:
         pytest.skip("this build leaves Lua out")
-    assert junit["a_test.lua"].get("status") == "passed", r
-    assert junit["b_test.lua"].get("status") == "failed", r
+    assert junit_state(junit["a_test.lua"]) == "passed", r
+    assert junit_state(junit["b_test.lua"]) == "failed", r
     assert "the real testCheck still fails" in message(junit["b_test.lua"]), r
     assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["lua"], r
 
@@ -187,8 +187,8 @@ def test_ruby_tests_run_in_forks_of_a_prestarted_vm_and_share_nothing(tmp_path):
     r, junit = run_suite(tmp_path, RUBY_LEAKS)
     if "is not supported by this build" in r.output or "not available" in r.output:
         pytest.skip("this build leaves Ruby out")
-    assert junit["a_test.rb"].get("status") == "passed", r
-    assert junit["b_test.rb"].get("status") == "failed", r
+    assert junit_state(junit["a_test.rb"]) == "passed", r
+    assert junit_state(junit["b_test.rb"]) == "failed", r
     assert "the real testCheck still fails" in message(junit["b_test.rb"]), r
     assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["ruby"], r
 
@@ -246,7 +246,7 @@ def test_ruby_threads_exit_crash_hang_and_bad_files_in_forks(tmp_path, marker):
     assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["ruby"], r
     for name, (_, status, words) in RUBY_HOSTILE.items():
         case = junit[name]
-        assert case.get("status") == status, (name, r)
+        assert junit_state(case) == status, (name, r)
         assert words in message(case) + "".join(case.itertext()), (name, message(case), r)
     assert leftover_processes(marker) == []
 
@@ -310,9 +310,9 @@ def test_python_crashes_exits_threads_recursion_hangs_and_bad_files_in_forks(tmp
     for name, (_, status, words) in HOSTILE.items():
         case = junit[name]
         if status:
-            assert case.get("status") == status, (name, r)
+            assert junit_state(case) == status, (name, r)
         else:
-            assert case.get("status") in ("failed", "error"), (name, r)
+            assert junit_state(case) in ("failed", "error"), (name, r)
         assert words in message(case) + "".join(case.itertext()), (name, message(case), r)
     assert leftover_processes(marker) == []
 
@@ -351,8 +351,8 @@ class TestCase:
 """,
     }
     r, junit = run_suite(tmp_path, tests, env=marked(marker))
-    assert junit["a_test.py"].get("status") in ("crashed", "error"), r
-    assert junit["b_test.py"].get("status") == "passed", r
+    assert junit_state(junit["a_test.py"]) in ("crashed", "error"), r
+    assert junit_state(junit["b_test.py"]) == "passed", r
     assert PRESTARTED.search(r.stderr), r
     assert leftover_processes(marker) == []
 
@@ -407,8 +407,8 @@ class TestCase:
 """}
     r, junit = run_suite(tmp_path, tests)
     assert PRESTARTED.search(r.stderr), r
-    assert junit["a_test.py"].get("status") == "passed", r
-    assert junit["b_test.py"].get("status") == "passed", r
+    assert junit_state(junit["a_test.py"]) == "passed", r
+    assert junit_state(junit["b_test.py"]) == "passed", r
 
 
 BIND_NOW = """import os
@@ -472,7 +472,7 @@ class TestCase:
         r, junit = run_suite(tmp_path, tests, env={"RTF_PRESTART": prestart})
         assert f"traceback imported: {imported}" in r.output, (prestart, r)
         raised = junit["raising_test.py"]
-        assert raised.get("status") == "error", (prestart, r)
+        assert junit_state(raised) == "error", (prestart, r)
         text = message(raised) + "".join(raised.itertext())
         assert "ValueError: deliberate" in text and "in helper" in text, (prestart, text)
 
@@ -488,7 +488,7 @@ class TestCase:
 """}
     for prestart in ("1", "0"):
         r, junit = run_suite(tmp_path, tests, env={"RTF_PRESTART": prestart})
-        assert junit["frozen_test.py"].get("status") != "failure", (prestart, r)
+        assert junit_state(junit["frozen_test.py"]) != "failure", (prestart, r)
         found = re.search(r"frozen objects: (\d+)", r.output)
         assert found, (prestart, r)
         frozen = int(found.group(1))

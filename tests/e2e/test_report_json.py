@@ -24,7 +24,7 @@ def test_ctrf_report_validates_with_states_messages_places_and_output(tmp_path, 
     summary = report["results"]["summary"]
     assert (summary["tests"], summary["passed"], summary["failed"], summary["skipped"]) == \
         (7, 2, 5, 0), summary
-    assert summary["extra"]["rtf"]["crashed"] == 1 and summary["extra"]["rtf"]["error"] == 1
+    assert summary["extra"]["robotology.rtf"]["crashed"] == 1 and summary["extra"]["robotology.rtf"]["error"] == 1
     assert summary["stop"] >= summary["start"] > 1_600_000_000_000, summary
     tests = by_name(report)
     assert tests["PassingTest"]["status"] == "passed"
@@ -32,13 +32,13 @@ def test_ctrf_report_validates_with_states_messages_places_and_output(tmp_path, 
     failing = tests["FailingTest"]
     assert failing["status"] == "failed" and "two and two make five" in failing["message"]
     assert failing["filePath"].endswith("failing_test.cpp") and failing["line"] > 0, failing
-    assert failing["extra"]["rtf"]["state"] == "failed" and "error" not in failing["extra"]["rtf"]
+    assert failing["extra"]["robotology.rtf"]["state"] == "failed" and "error" not in failing["extra"]["robotology.rtf"]
     assert "printf line from the test" in tests["PrintingTest"]["stdout"], tests["PrintingTest"]
     assert tests["PrintingTest"]["suite"] == ["tests"], tests["PrintingTest"]
     crash = next(t for t in report["results"]["tests"] if t["rawStatus"] == "crashed")
-    assert crash["extra"]["rtf"]["error"] is True and "SIGSEGV" in crash["extra"]["rtf"]["crash"]
+    assert crash["extra"]["robotology.rtf"]["error"] is True and "SIGSEGV" in crash["extra"]["robotology.rtf"]["crash"]
     thrown = next(t for t in report["results"]["tests"] if t["rawStatus"] == "error")
-    assert thrown["status"] == "failed" and thrown["extra"]["rtf"]["error"] is True, thrown
+    assert thrown["status"] == "failed" and thrown["extra"]["robotology.rtf"]["error"] is True, thrown
     nasty = tests["NastyTextTest"]
     assert "<script>alert(1)</script>" in nasty["message"], nasty
     bad = tests["BadBytesTest"]
@@ -60,10 +60,10 @@ def test_a_failed_fixture_and_its_skipped_tests(tmp_path, suite_file):
     report = validate_ctrf(out)
     (test,) = report["results"]["tests"]
     assert test["status"] == "skipped" and "setup returned false" in test["message"], test
-    (fixture,) = report["results"]["extra"]["rtf"]["fixtureFailures"]
+    (fixture,) = report["results"]["extra"]["robotology.rtf"]["fixtureFailures"]
     assert fixture["suite"] == "broken world", fixture
     assert "setup returned false" in fixture["problems"], fixture
-    assert report["results"]["summary"]["extra"]["rtf"]["suitesFailed"] == 1
+    assert report["results"]["summary"]["extra"]["robotology.rtf"]["suitesFailed"] == 1
 
 
 def test_every_format_at_once_and_one_that_cannot_be_written(tmp_path):

@@ -1,10 +1,11 @@
 """--retries, flaky tests, --fail-on-flaky, --rerun-failed and --repeat-until-fail, through the
 real runner."""
+import json
 import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import run_runner, validate_ctrf, validate_junit, validate_tap
+from conftest import junit_state, run_runner, validate_ctrf, validate_junit, validate_tap
 from lang_cases import ISOLATIONS
 
 
@@ -49,14 +50,30 @@ def test_a_test_passing_on_its_second_attempt_is_flaky(tmp_path, isolation):
     validate_junit(junit)
     cases = ET.parse(junit).getroot().findall(".//testcase")
     assert [c.get("name") for c in cases] == ["flaky", "steady"]
-    assert cases[0].get("status") == "flaky"
+    assert junit_state(cases[0]) == "flaky"
     earlier = cases[0].findall("flakyFailure")
     assert len(earlier) == 1 and "status 3" in earlier[0].get("message"), ET.tostring(cases[0])
     assert cases[0].find("failure") is None and cases[0].find("rerunFailure") is None
+    # As Surefire writes an attempt (Jenkins shows its <stackTrace>): no text of its own.
+    assert [child.tag for child in earlier[0]] == ["stackTrace", "system-out"], ET.tostring(cases[0])
+    assert "status 3" in earlier[0].find("stackTrace").text, ET.tostring(cases[0])
+    assert "run 1" in earlier[0].find("system-out").text, ET.tostring(cases[0])
+    assert not (earlier[0].text or "").strip(), ET.tostring(cases[0])
+    properties = ET.parse(junit).getroot().find("testsuite/properties")
+    assert [(p.get("name"), p.get("value")) for p in properties] == [("rtf.state.1.1", "flaky")]
     assert ET.parse(junit).getroot().get("failures") == "0"
     report = validate_ctrf(ctrf)
     tests = {t["name"]: t for t in report["results"]["tests"]}
     assert tests["flaky"]["flaky"] is True and tests["flaky"]["retries"] == 1
+    # CTRF's retryAttempts: one entry per earlier attempt, numbered from 1; retries counts them.
+    (attempt,) = tests["flaky"]["retryAttempts"]
+    assert attempt["attempt"] == 1 and attempt["status"] == "failed", attempt
+    assert "status 3" in attempt["message"] and "status 3" in attempt["trace"], attempt
+    assert attempt["stdout"] == ["run 1"] and attempt["duration"] >= 0, attempt
+    assert "retryAttempts" not in tests["steady"]
+    # The extension key is namespaced (CTRF 4.6.1), and the same in every extra.
+    assert list(tests["flaky"]["extra"]) == ["robotology.rtf"], tests["flaky"]
+    assert list(attempt["extra"]) == ["robotology.rtf"], attempt
     assert tests["flaky"]["status"] == "passed"
     assert tests["steady"]["flaky"] is False and tests["steady"]["retries"] == 0
     parsed = validate_tap(tap)
@@ -88,6 +105,10 @@ def test_a_test_that_always_fails_carries_its_reruns(tmp_path, isolation):
     assert cases[0].find("flakyFailure") is None
     test = validate_ctrf(ctrf)["results"]["tests"][0]
     assert test["status"] == "failed" and test["retries"] == 2 and test["flaky"] is False
+    assert [a["attempt"] for a in test["retryAttempts"]] == [1, 2], test
+    assert all(a["status"] == "failed" and a["stdout"] for a in test["retryAttempts"]), test
+    for rerun in cases[0].findall("rerunFailure"):
+        assert "status 3" in rerun.find("stackTrace").text, ET.tostring(cases[0])
     parsed = validate_tap(tap)
     assert parsed["fail"] == 1 and parsed["count"] == 1, parsed
 
@@ -114,6 +135,38 @@ def test_rerun_failed_runs_only_what_failed_in_a_report(tmp_path, kind, isolatio
     assert broken_count.read_text().strip() == "2", again
     assert steady_count.read_text().strip() == "1", again
     assert "1 passed, 0 failed" in again.stdout, again
+
+
+def _with_old_extension_key(value):
+    """A CTRF report as earlier versions wrote it: the extensions under "extra" -> "rtf"."""
+    if isinstance(value, dict):
+        return {("rtf" if key == "robotology.rtf" else key): _with_old_extension_key(item)
+                for key, item in value.items()}
+    if isinstance(value, list):
+        return [_with_old_extension_key(item) for item in value]
+    return value
+
+
+def test_a_json_report_of_an_earlier_version_is_still_read(tmp_path):
+    broken, broken_count = counting_script(tmp_path, "broken", 1)
+    steady, steady_count = counting_script(tmp_path, "steady", 0)
+    suite = suite_of(tmp_path, [("broken", broken), ("steady", steady)])
+    report = tmp_path / "first.json"
+    assert run_runner("--suite", suite, "-o", f"json:{report}").returncode == 1
+    old = _with_old_extension_key(json.loads(report.read_text()))
+    assert "rtf" in old["results"]["tests"][0]["extra"], old
+    report.write_text(json.dumps(old))
+    again = run_runner("--suite", suite, "--rerun-failed", report, "--no-output")
+    assert again.returncode == 0 and "1 passed, 0 failed" in again.stdout, again
+    assert broken_count.read_text().strip() == "2" and steady_count.read_text().strip() == "1"
+    r = run_runner("--suite", suite, "--durations", report, "--shard-index", "0",
+                   "--shard-count", "1", "--no-output")
+    assert r.returncode == 0, r
+    merged = tmp_path / "merged.json"
+    r = run_runner("--merge", f"json:{merged}", report)
+    assert r.returncode == 0, r
+    tests = validate_ctrf(merged)["results"]["tests"]
+    assert [t["extra"]["robotology.rtf"]["state"] for t in tests] == ["failed", "passed"], tests
 
 
 @pytest.mark.parametrize("kind", ["junit", "json"])

@@ -141,14 +141,14 @@ def test_each_repetition_has_its_own_id_in_the_json_and_the_shapes_stay(
     tests = json.loads(json_file.read_text())["results"]["tests"]
     repeated, once = tests
     rid = repeated["executionId"]
-    repetitions = repeated["extra"]["rtf"]["repetitions"]
+    repetitions = repeated["extra"]["robotology.rtf"]["repetitions"]
     assert [(p["id"], p["index"], p["count"], p["state"]) for p in repetitions] == [
         (f"{rid}#1", 1, 3, "passed"), (f"{rid}#2", 2, 3, "failed"), (f"{rid}#3", 3, 3, "passed")]
     assert "run 2 holds" in repetitions[1]["message"], repetitions
     assert "message" not in repetitions[0] and "message" not in repetitions[2], repetitions
     assert all(p["duration"] >= 0 for p in repetitions)
     # A test that runs once is written as it always was.
-    assert once["status"] == "passed" and "repetitions" not in once["extra"]["rtf"], once
+    assert once["status"] == "passed" and "repetitions" not in once["extra"]["robotology.rtf"], once
 
     # JUnit and TAP keep one entry per test, the repetitions in its messages as before.
     validate_junit(xml)

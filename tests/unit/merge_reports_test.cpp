@@ -111,3 +111,43 @@ TEST_F(MergeReports, AReportOfTheOtherFormatIsAnError) {
     EXPECT_NE(errorOf({"json", "out.json", {a}, 0}).find(a + ": a JUnit report; expected JSON"),
               std::string::npos);
 }
+
+TEST_F(MergeReports, ReportsOfNowKeepTheirStatesAndLoseTheShardProperties) {
+    // As the runner writes them now: the shard on the suite, the states in the elements.
+    const auto suite = [](int index, const char* tests, bool rerun) {
+        return std::string(
+                   "<testsuites name=\"RobotTestingFramework\">\n<testsuite name=\"s\" "
+                   "tests=\"2\" failures=\"0\" errors=\"0\" skipped=\"0\" time=\"1.000\" "
+                   "id=\"0\">\n<properties><property name=\"rtf.shard.index\" value=\"") +
+               std::to_string(index) + "\"/><property name=\"rtf.shard.count\" value=\"1\"/>" +
+               (rerun ? "<property name=\"rtf.rerun\" value=\"true\"/>" : "") + tests +
+               "</testsuite>\n</testsuites>\n";
+    };
+    const auto first =
+        write("first.xml",
+              suite(0,
+                    "<property name=\"rtf.state.1.1\" value=\"timed out\"/></properties>\n"
+                    "<testcase name=\"t\" classname=\"s\" time=\"0.1\"><failure type=\"timeout\"/>"
+                    "</testcase>\n<testcase name=\"u\" classname=\"s\" time=\"0.1\"/>\n",
+                    false));
+    const auto again =
+        write("again.xml", suite(0,
+                                 "<property name=\"rtf.state.1.1\" value=\"flaky\"/></properties>\n"
+                                 "<testcase name=\"t\" classname=\"s\" time=\"0.1\"><flakyFailure "
+                                 "type=\"timed out\"><stackTrace>x</stackTrace></flakyFailure>"
+                                 "</testcase>\n",
+                                 true));
+    pugi::xml_document merged;
+    ASSERT_TRUE(merged.load_string(mergeReports({"junit", "out.xml", {first, again}, 1}).c_str()));
+    const pugi::xml_node root = merged.document_element();
+    EXPECT_STREQ(root.attribute("tests").value(), "2");
+    EXPECT_STREQ(root.attribute("failures").value(), "0");
+    // The timeout was run again and passed: only "flaky" names it now, no shard is named.
+    const pugi::xml_node properties = root.child("testsuite").child("properties");
+    std::string names;
+    for (const pugi::xml_node property : properties.children("property")) {
+        names += std::string(property.attribute("name").value()) + "=" +
+                 property.attribute("value").value() + " ";
+    }
+    EXPECT_EQ(names, "rtf.state.1.1=flaky ");
+}

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "runner/reports/report_reader.h"
 
@@ -68,6 +70,77 @@ TEST_F(ReportReader, ReadsAJUnitReportWithItsShard) {
     ASSERT_EQ(report.tests.size(), 2u);
     EXPECT_EQ(report.tests[1].name, "grip");
     EXPECT_EQ(report.tests[1].state, "failed");
+}
+
+// As the runner writes it now: no status=, the states in the elements, the shard on each suite.
+const char* const junitOfNow = R"(<?xml version="1.0" encoding="UTF-8"?>
+<testsuites name="RobotTestingFramework" tests="8" failures="2" errors="4" time="1.5">
+  <testsuite name="arm" tests="8" failures="2" errors="4" skipped="1" time="1.250" id="4">
+    <properties>
+      <property name="rtf.shard.index" value="1"/>
+      <property name="rtf.shard.count" value="3"/>
+      <property name="rtf.rerun" value="true"/>
+    </properties>
+    <testcase name="reach" classname="arm" time="0.5"/>
+    <testcase name="grip" classname="arm" time="0.5"><failure type="failure"/></testcase>
+    <testcase name="wait" classname="arm" time="0.5"><failure type="timeout"/></testcase>
+    <testcase name="throw" classname="arm" time="0.5"><error type="error"/></testcase>
+    <testcase name="segv" classname="arm" time="0.5"><error type="crash" message="SIGSEGV"/></testcase>
+    <testcase name="stop" classname="arm" time="0.5"><error type="interrupted"/></testcase>
+    <testcase name="skip" classname="arm" time="0.5"><skipped/></testcase>
+    <testcase name="flake" classname="arm" time="0.5">
+      <flakyFailure type="failed"><stackTrace>x</stackTrace></flakyFailure>
+    </testcase>
+    <testcase name="fixtures" classname="arm" time="0.000"><error type="fixture"/></testcase>
+  </testsuite>
+</testsuites>
+)";
+
+TEST_F(ReportReader, ReadsTheStatesFromTheElementsAndTheShardFromTheSuites) {
+    const Report report = readReport("--durations", write(junitOfNow));
+    EXPECT_TRUE(report.shard.known && report.shard.rerun);
+    EXPECT_EQ(report.shard.index, 1u);
+    EXPECT_EQ(report.shard.count, 3u);
+    std::vector<std::string> states;
+    for (const auto& test : report.tests) {
+        states.push_back(test.name + ":" + test.state);
+    }
+    EXPECT_EQ(states, (std::vector<std::string>{"reach:passed", "grip:failed", "wait:timed out",
+                                                "throw:error", "segv:crashed", "stop:interrupted",
+                                                "skip:skipped", "flake:flaky"}));
+}
+
+TEST_F(ReportReader, AnEmptyShardSaysWhichItIsInASuiteOfNoPlace) {
+    const Report report = readReport(
+        "--merge", write("<testsuites name=\"RobotTestingFramework\" tests=\"0\">\n"
+                         "<testsuite name=\"RobotTestingFramework\" tests=\"0\" failures=\"0\" "
+                         "errors=\"0\" skipped=\"0\" time=\"0.000\"><properties>"
+                         "<property name=\"rtf.shard.index\" value=\"3\"/>"
+                         "<property name=\"rtf.shard.count\" value=\"4\"/></properties>"
+                         "</testsuite></testsuites>\n"));
+    EXPECT_TRUE(report.shard.known);
+    EXPECT_EQ(report.shard.index, 3u);
+    EXPECT_TRUE(report.suites.empty());
+    EXPECT_TRUE(report.tests.empty());
+}
+
+TEST_F(ReportReader, ReadsTheNamespacedAndTheOldCtrfExtensionKey) {
+    for (const char* key : {"robotology.rtf", "rtf"}) {
+        const Report report = readReport(
+            "--durations",
+            write(std::string(
+                      R"({"reportFormat":"CTRF","generatedBy":"robottestingframework-testrunner",
+"results":{"tests":[
+{"testId":"1.1","name":"reach","duration":300,"suite":["arm"],"extra":{")") +
+                  key + R"(":{"state":"timed out"}},"status":"failed"}],
+"extra":{")" + key +
+                  R"(":{"suites":[{"place":1,"name":"arm","duration":2500}]}}}})"));
+        ASSERT_EQ(report.tests.size(), 1u) << key;
+        EXPECT_EQ(report.tests[0].state, "timed out") << key;
+        ASSERT_EQ(report.suites.size(), 1u) << key;
+        EXPECT_DOUBLE_EQ(report.suites[0].seconds, 2.5) << key;
+        EXPECT_TRUE(report.json["results"]["tests"][0]["extra"].contains("robotology.rtf")) << key;
+    }
 }
 
 TEST_F(ReportReader, ReadsAJsonReportWithItsSuitesTimes) {

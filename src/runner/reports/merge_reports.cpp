@@ -18,8 +18,9 @@ std::runtime_error problem(const std::string& what) {
     return std::runtime_error("--merge " + what);
 }
 
+// The states junit_reporter.cpp writes as an <error> (a timeout is a <failure>).
 bool isErrorState(const std::string& state) {
-    return state == "error" || state == "crashed" || state == "timed out" || state == "interrupted";
+    return state == "error" || state == "crashed" || state == "interrupted";
 }
 
 std::string shardName(const ReportedShard& shard) {
@@ -113,7 +114,49 @@ bool parsePlace(const std::string& text, std::size_t& place) {
 // --- JUnit ---
 
 bool isFixtureCase(const pugi::xml_node test) {
-    return std::string(test.child("error").attribute("type").value()) == "fixture";
+    return isJUnitFixtureCase(test);
+}
+
+// The states junit_reporter.cpp names in a suite property ("rtf.state.S.T" = the state).
+bool needsStateProperty(const std::string& state) {
+    return state == "timed out" || state == "crashed" || state == "interrupted" || state == "flaky";
+}
+
+// The merged report is the whole run's: no suite keeps the shard or rerun properties of the
+// report it came from, and the state properties are written again from its tests as they are
+// after the reruns (an empty <properties> goes).
+void resetProperties(pugi::xml_node suite) {
+    pugi::xml_node properties = suite.child("properties");
+    if (!properties) {
+        properties = suite.prepend_child("properties");
+    }
+    for (pugi::xml_node property = properties.first_child(); property;) {
+        const pugi::xml_node next = property.next_sibling();
+        const std::string name = property.attribute("name").value();
+        if (name == shardIndexProperty || name == shardCountProperty || name == rerunProperty ||
+            name.rfind("rtf.state.", 0) == 0) {
+            properties.remove_child(property);
+        }
+        property = next;
+    }
+    const std::string place = std::to_string(suite.attribute("id").as_ullong() + 1);
+    std::size_t index = 0;
+    for (const pugi::xml_node test : suite.children("testcase")) {
+        if (isFixtureCase(test)) {
+            continue;
+        }
+        ++index;
+        const std::string state = junitTestState(test);
+        if (needsStateProperty(state)) {
+            pugi::xml_node property = properties.append_child("property");
+            property.append_attribute("name") =
+                ("rtf.state." + place + "." + std::to_string(index)).c_str();
+            property.append_attribute("value") = state.c_str();
+        }
+    }
+    if (!properties.first_child()) {
+        suite.remove_child(properties);
+    }
 }
 
 void setCount(pugi::xml_node node, const char* name, std::size_t value) {
@@ -180,6 +223,9 @@ std::string mergeJUnit(const std::vector<Report>& reports) {
         }
         for (const pugi::xml_node suite :
              reports[r].junit->document_element().children("testsuite")) {
+            if (!isJUnitRunSuite(suite)) {
+                continue;
+            }
             std::size_t place = 0;
             parsePlace(suite.attribute("id").value(), place);  // checked by readReport
             places.add(place, suite.attribute("name").value(), reports[r].path);
@@ -201,6 +247,9 @@ std::string mergeJUnit(const std::vector<Report>& reports) {
     for (std::size_t r = firstRerun; r < reports.size(); ++r) {
         for (const pugi::xml_node again :
              reports[r].junit->document_element().children("testsuite")) {
+            if (!isJUnitRunSuite(again)) {
+                continue;
+            }
             pugi::xml_node suite =
                 root.find_child_by_attribute("testsuite", "name", again.attribute("name").value());
             if (suite) {
@@ -211,29 +260,30 @@ std::string mergeJUnit(const std::vector<Report>& reports) {
         }
     }
 
-    // The counts again, as the runner counts them (junit_reporter.cpp): a failed fixture is one
-    // error more but not a test.
+    // The counts again, as the runner counts them (junit_reporter.cpp): a failed fixture is a
+    // test case in error.
     std::size_t tests = 0;
     std::size_t failures = 0;
     std::size_t errors = 0;
     double time = 0;
     for (pugi::xml_node suite : root.children("testsuite")) {
+        resetProperties(suite);
         std::size_t suiteTests = 0;
         std::size_t suiteFailures = 0;
         std::size_t suiteErrors = 0;
         std::size_t suiteSkipped = 0;
         for (const pugi::xml_node test : suite.children("testcase")) {
+            ++suiteTests;
             if (isFixtureCase(test)) {
                 ++suiteErrors;
                 continue;
             }
-            ++suiteTests;
-            const std::string state = test.attribute("status").value();
+            const std::string state = junitTestState(test);
             if (state == "skipped") {
                 ++suiteSkipped;
             } else if (isErrorState(state)) {
                 ++suiteErrors;
-            } else if (state == "failed") {
+            } else if (state == "failed" || state == "timed out") {
                 ++suiteFailures;
             }
         }
@@ -272,7 +322,7 @@ std::string suiteOf(const Json& test) {
 }
 
 std::string stateOf(const Json& test) {
-    return test["extra"]["rtf"]["state"].get<std::string>();
+    return test["extra"][ctrfExtensionKey]["state"].get<std::string>();
 }
 
 std::string mergeJson(const std::vector<Report>& reports) {
@@ -315,8 +365,8 @@ std::string mergeJson(const std::vector<Report>& reports) {
         }
         stop = std::max(stop, summary.value("stop", -1LL));
         suiteCount += summary.value("suites", 0U);
-        suitesFailed += summary.value("/extra/rtf/suitesFailed"_json_pointer, 0U);
-        const Json extra = results.value("/extra/rtf"_json_pointer, Json::object());
+        suitesFailed += summary.value("/extra/robotology.rtf/suitesFailed"_json_pointer, 0U);
+        const Json extra = results.value("/extra/robotology.rtf"_json_pointer, Json::object());
         for (const auto& fixture : extra.value("fixtureFailures", Json::array())) {
             fixtures.push_back(fixture);
         }
@@ -400,7 +450,7 @@ std::string mergeJson(const std::vector<Report>& reports) {
     }
     rtf["flaky"] = counts["state:flaky"];
     rtf["suitesFailed"] = suitesFailed;
-    summary["extra"] = {{"rtf", rtf}};
+    summary["extra"] = {{ctrfExtensionKey, rtf}};
 
     Json merged = Json::object();
     merged["reportFormat"] = "CTRF";
@@ -409,10 +459,11 @@ std::string mergeJson(const std::vector<Report>& reports) {
     merged["timestamp"] =
         timestamp.empty() && !reports.empty() ? reports[0].json.value("timestamp", "") : timestamp;
     merged["generatedBy"] = "robottestingframework-testrunner";
-    merged["results"] = {{"tool", {{"name", "robottestingframework-testrunner"}}},
-                         {"summary", summary},
-                         {"tests", tests},
-                         {"extra", {{"rtf", {{"fixtureFailures", fixtures}, {"suites", suites}}}}}};
+    merged["results"] = {
+        {"tool", {{"name", "robottestingframework-testrunner"}}},
+        {"summary", summary},
+        {"tests", tests},
+        {"extra", {{ctrfExtensionKey, {{"fixtureFailures", fixtures}, {"suites", suites}}}}}};
     return merged.dump(-1, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 

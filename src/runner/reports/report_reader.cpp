@@ -12,6 +12,11 @@ namespace runner {
 const char* const shardIndexProperty = "rtf.shard.index";
 const char* const shardCountProperty = "rtf.shard.count";
 const char* const rerunProperty = "rtf.rerun";
+const char* const ctrfExtensionKey = "robotology.rtf";
+
+bool isJUnitFixtureCase(const pugi::xml_node test) {
+    return std::string(test.child("error").attribute("type").value()) == "fixture";
+}
 
 namespace {
 
@@ -85,6 +90,81 @@ void checkShard(const ReportedShard& shard, const Place& place, long offset) {
     }
 }
 
+// A report's shard properties: on each <testsuite> (an empty shard's in a suite with no id), or
+// on <testsuites> in the reports of earlier versions.
+void readJUnitShard(Report& report, const pugi::xml_node root, const Place& place) {
+    std::vector<pugi::xml_node> holders{root};
+    for (const pugi::xml_node suite : root.children("testsuite")) {
+        holders.push_back(suite);
+    }
+    bool haveIndex = false;
+    bool haveCount = false;
+    long where = -1;
+    for (const pugi::xml_node holder : holders) {
+        const pugi::xml_node properties = holder.child("properties");
+        bool holderIndex = false;
+        bool holderCount = false;
+        for (const pugi::xml_node property : properties.children("property")) {
+            const std::string name = property.attribute("name").value();
+            const std::string value = property.attribute("value").value();
+            unsigned int* target = name == shardIndexProperty   ? &report.shard.index
+                                   : name == shardCountProperty ? &report.shard.count
+                                                                : nullptr;
+            if (target != nullptr && !parseWhole(value, *target)) {
+                throw place.error(property.offset_debug(),
+                                  "property " + name + " '" + value + "': expected a whole number");
+            }
+            holderIndex = holderIndex || name == shardIndexProperty;
+            holderCount = holderCount || name == shardCountProperty;
+            if (name == rerunProperty) {
+                report.shard.rerun = report.shard.rerun || value == "true";
+            }
+        }
+        if (holderIndex != holderCount) {
+            throw place.error(properties.offset_debug(), std::string("expected both properties ") +
+                                                             shardIndexProperty + " and " +
+                                                             shardCountProperty);
+        }
+        if (holderIndex && where < 0) {
+            where = properties.offset_debug();
+        }
+        haveIndex = haveIndex || holderIndex;
+        haveCount = haveCount || holderCount;
+    }
+    report.shard.known = haveIndex && haveCount;
+    checkShard(report.shard, place, where);
+}
+
+}  // namespace
+
+// The reverse of junit_reporter.cpp's table (problemOf): the element that marks a test and its
+// type= give its state; earlier attempts after a pass (<flakyFailure>) make it flaky.
+std::string junitTestState(const pugi::xml_node test) {
+    if (const pugi::xml_attribute status = test.attribute("status")) {
+        return status.value();  // the reports of earlier versions say it
+    }
+    if (test.child("skipped")) {
+        return "skipped";
+    }
+    if (const pugi::xml_node failure = test.child("failure")) {
+        return std::string(failure.attribute("type").value()) == "timeout" ? "timed out" : "failed";
+    }
+    if (const pugi::xml_node error = test.child("error")) {
+        const std::string type = error.attribute("type").value();
+        return type == "crash" ? "crashed" : type == "interrupted" ? "interrupted" : "error";
+    }
+    if (test.child("flakyFailure") || test.child("flakyError")) {
+        return "flaky";
+    }
+    return "passed";
+}
+
+bool isJUnitRunSuite(const pugi::xml_node suite) {
+    return suite.attribute("id") || suite.child("testcase");
+}
+
+namespace {
+
 void readJUnit(Report& report, const std::string& text, const Place& place) {
     report.junit = std::make_shared<pugi::xml_document>();
     const pugi::xml_parse_result parsed = report.junit->load_string(text.c_str());
@@ -99,31 +179,7 @@ void readJUnit(Report& report, const std::string& text, const Place& place) {
                           "not a JUnit output of this runner (expected <testsuites "
                           "name=\"RobotTestingFramework\">)");
     }
-    bool haveIndex = false;
-    bool haveCount = false;
-    for (const pugi::xml_node property : root.child("properties").children("property")) {
-        const std::string name = property.attribute("name").value();
-        const std::string value = property.attribute("value").value();
-        unsigned int* target = name == shardIndexProperty   ? &report.shard.index
-                               : name == shardCountProperty ? &report.shard.count
-                                                            : nullptr;
-        if (target != nullptr && !parseWhole(value, *target)) {
-            throw place.error(property.offset_debug(),
-                              "property " + name + " '" + value + "': expected a whole number");
-        }
-        haveIndex = haveIndex || name == shardIndexProperty;
-        haveCount = haveCount || name == shardCountProperty;
-        if (name == rerunProperty) {
-            report.shard.rerun = value == "true";
-        }
-    }
-    if (haveIndex != haveCount) {
-        throw place.error(root.child("properties").offset_debug(),
-                          std::string("expected both properties ") + shardIndexProperty + " and " +
-                              shardCountProperty);
-    }
-    report.shard.known = haveIndex;
-    checkShard(report.shard, place, root.child("properties").offset_debug());
+    readJUnitShard(report, root, place);
     for (const pugi::xml_node suite : root.children()) {
         if (std::string(suite.name()) == "properties") {
             continue;
@@ -131,6 +187,9 @@ void readJUnit(Report& report, const std::string& text, const Place& place) {
         if (std::string(suite.name()) != "testsuite") {
             throw place.error(suite.offset_debug(), std::string("unexpected <") + suite.name() +
                                                         "> (expected <testsuite>)");
+        }
+        if (!isJUnitRunSuite(suite)) {
+            continue;  // an empty shard's properties
         }
         const std::string suiteName = suite.attribute("name").value();
         ReportedSuite reported{suiteName, 0};
@@ -143,15 +202,15 @@ void readJUnit(Report& report, const std::string& text, const Place& place) {
         }
         report.suites.push_back(reported);
         for (const pugi::xml_node test : suite.children("testcase")) {
-            const std::string state = test.attribute("status").value();
+            const std::string state = junitTestState(test);
             if (test.attribute("name").value()[0] == '\0' || !knownState(state)) {
                 throw place.error(test.offset_debug(),
-                                  "expected <testcase> with a name and a status (passed, "
-                                  "failed, skipped, error, crashed, timed out, flaky or "
-                                  "interrupted)");
+                                  "expected <testcase> with a name and, when it has one, a "
+                                  "status (passed, failed, skipped, error, crashed, timed out, "
+                                  "flaky or interrupted)");
             }
             // A failed fixture has a <testcase> of its own: not a test.
-            if (std::string(test.child("error").attribute("type").value()) == "fixture") {
+            if (isJUnitFixtureCase(test)) {
                 continue;
             }
             report.tests.push_back(
@@ -205,28 +264,64 @@ void readJsonRun(const nlohmann::ordered_json& document, const Place& place) {
         if (summary.contains("suites") && !summary["suites"].is_number_unsigned()) {
             throw place.error(-1, "results.summary.suites: expected a whole number");
         }
-        const auto failed = summary.value("/extra/rtf"_json_pointer, nlohmann::ordered_json());
+        const auto failed =
+            summary.value("/extra/robotology.rtf"_json_pointer, nlohmann::ordered_json());
         if (failed.is_object() && failed.contains("suitesFailed") &&
             !failed["suitesFailed"].is_number_unsigned()) {
-            throw place.error(-1,
-                              "results.summary.extra.rtf.suitesFailed: expected a whole number");
+            throw place.error(
+                -1, "results.summary.extra.robotology.rtf.suitesFailed: expected a whole number");
         }
     }
-    const auto extra = results.value("/extra/rtf"_json_pointer, nlohmann::ordered_json::object());
+    const auto extra =
+        results.value("/extra/robotology.rtf"_json_pointer, nlohmann::ordered_json::object());
     if (!extra.is_object()) {
-        throw place.error(-1, "results.extra.rtf: expected an object");
+        throw place.error(-1, "results.extra.robotology.rtf: expected an object");
     }
     if (extra.contains("fixtureFailures")) {
         const auto& fixtures = extra["fixtureFailures"];
         for (std::size_t i = 0; i < (fixtures.is_array() ? fixtures.size() : 0); ++i) {
             if (!fixtures[i].is_object() ||
                 (fixtures[i].contains("suite") && !fixtures[i]["suite"].is_string())) {
-                throw place.error(-1, "results.extra.rtf.fixtureFailures[" + std::to_string(i) +
+                throw place.error(-1, "results.extra.robotology.rtf.fixtureFailures[" +
+                                          std::to_string(i) +
                                           "]: expected an object naming its suite");
             }
         }
         if (!fixtures.is_array()) {
-            throw place.error(-1, "results.extra.rtf.fixtureFailures: expected an array");
+            throw place.error(-1,
+                              "results.extra.robotology.rtf.fixtureFailures: expected an array");
+        }
+    }
+}
+
+// The key earlier versions gave the runner's CTRF extensions: moved to the namespaced key when
+// read, so that what reads them (and --merge, which writes them) knows one key only.
+const char* const oldCtrfExtensionKey = "rtf";
+
+void renameOldExtension(nlohmann::ordered_json& object) {
+    if (!object.is_object() || !object.contains("extra") || !object["extra"].is_object()) {
+        return;
+    }
+    nlohmann::ordered_json& extra = object["extra"];
+    if (extra.contains(oldCtrfExtensionKey) && !extra.contains(ctrfExtensionKey)) {
+        extra[ctrfExtensionKey] = std::move(extra[oldCtrfExtensionKey]);
+        extra.erase(oldCtrfExtensionKey);
+    }
+}
+
+void renameOldExtensions(nlohmann::ordered_json& document) {
+    nlohmann::ordered_json& results = document["results"];
+    renameOldExtension(results);
+    if (results.contains("summary")) {
+        renameOldExtension(results["summary"]);
+    }
+    for (nlohmann::ordered_json& test : results["tests"]) {
+        renameOldExtension(test);
+        if (test.is_object() && test.contains("retryAttempts") &&
+            test["retryAttempts"].is_array()) {
+            for (nlohmann::ordered_json& attempt : test["retryAttempts"]) {
+                renameOldExtension(attempt);
+            }
         }
     }
 }
@@ -242,23 +337,26 @@ void readJsonShape(Report& report, const Place& place) {
                                           "\"generatedBy\": \"") +
                                   runnerName + "\" and results.tests)");
     }
+    renameOldExtensions(report.json);
     const auto& results = document["results"];
     readJsonRun(document, place);
-    const auto extra = results.value("/extra/rtf"_json_pointer, nlohmann::ordered_json::object());
+    const auto extra =
+        results.value("/extra/robotology.rtf"_json_pointer, nlohmann::ordered_json::object());
     if (extra.contains("shard")) {
         const auto& shard = extra["shard"];
         if (!shard.is_object() || !shard.contains("index") || !shard.contains("count") ||
             !shard["index"].is_number_unsigned() || !shard["count"].is_number_unsigned()) {
-            throw place.error(-1,
-                              "results.extra.rtf.shard: expected {\"index\": I, \"count\": "
-                              "N} with whole numbers");
+            throw place.error(
+                -1,
+                "results.extra.robotology.rtf.shard: expected {\"index\": I, \"count\": "
+                "N} with whole numbers");
         }
         report.shard.known = true;
         report.shard.index = shard["index"].get<unsigned int>();
         report.shard.count = shard["count"].get<unsigned int>();
     }
     if (extra.contains("rerun") && !extra["rerun"].is_boolean()) {
-        throw place.error(-1, "results.extra.rtf.rerun: expected true or false");
+        throw place.error(-1, "results.extra.robotology.rtf.rerun: expected true or false");
     }
     report.shard.rerun = extra.value("rerun", false);
     checkShard(report.shard, place, -1);
@@ -271,13 +369,13 @@ void readJsonShape(Report& report, const Place& place) {
             !test.contains("status") || !test["status"].is_string() ||
             !ctrfStatus(test["status"].get<std::string>()) || !test.contains("testId") ||
             !test["testId"].is_string() || !isTestId(test["testId"].get<std::string>()) ||
-            !test.contains("/extra/rtf/state"_json_pointer) ||
-            !test["extra"]["rtf"]["state"].is_string() ||
-            !knownState(test["extra"]["rtf"]["state"].get<std::string>())) {
+            !test.contains("/extra/robotology.rtf/state"_json_pointer) ||
+            !test["extra"][ctrfExtensionKey]["state"].is_string() ||
+            !knownState(test["extra"][ctrfExtensionKey]["state"].get<std::string>())) {
             throw place.error(-1, where +
                                       ": expected a test with a name, a CTRF status, a testId "
                                       "\"S.T\" (its place in the run), a duration and "
-                                      "extra.rtf.state");
+                                      "extra.robotology.rtf.state");
         }
         std::string suite;
         if (test.contains("suite")) {
@@ -288,7 +386,7 @@ void readJsonShape(Report& report, const Place& place) {
             suite = test["suite"][0].get<std::string>();
         }
         report.tests.push_back({suite, test["name"].get<std::string>(),
-                                test["extra"]["rtf"]["state"].get<std::string>()});
+                                test["extra"][ctrfExtensionKey]["state"].get<std::string>()});
     }
     // Each suite's time: the report's own when it has them (fixtures included), else its tests'.
     if (extra.contains("suites")) {
@@ -300,14 +398,14 @@ void readJsonShape(Report& report, const Place& place) {
                 !suite.contains("duration") || !suite["duration"].is_number() ||
                 suite["duration"].get<double>() < 0) {
                 throw place.error(
-                    -1, "results.extra.rtf.suites[" + std::to_string(i) +
+                    -1, "results.extra.robotology.rtf.suites[" + std::to_string(i) +
                             "]: expected {\"place\": N, \"name\": ..., \"duration\": ms}");
             }
             report.suites.push_back(
                 {suite["name"].get<std::string>(), suite["duration"].get<double>() / 1000.0});
         }
         if (!suites.is_array()) {
-            throw place.error(-1, "results.extra.rtf.suites: expected an array");
+            throw place.error(-1, "results.extra.robotology.rtf.suites: expected an array");
         }
         return;
     }

@@ -54,10 +54,22 @@ Report readReport(const std::string& option, const std::string& path);
 // The same from text already read; `path` names it in messages.
 Report parseReport(const std::string& option, const std::string& text, const std::string& path);
 
+// The state of a JUnit <testcase> of this runner ("timed out"): its status= in the reports of
+// earlier versions, else read from its elements (<failure type="timeout">, <flakyFailure>, ...).
+std::string junitTestState(pugi::xml_node test);
+// True for the <testcase> a failed fixture adds to its suite (<error type="fixture">).
+bool isJUnitFixtureCase(pugi::xml_node test);
+// False for the <testsuite> that only holds an empty shard's properties (no id, no testcase).
+bool isJUnitRunSuite(pugi::xml_node suite);
+
 // The JUnit <property> names and CTRF keys of the shard a report comes from.
 extern const char* const shardIndexProperty;  // "rtf.shard.index"
 extern const char* const shardCountProperty;  // "rtf.shard.count"
 extern const char* const rerunProperty;       // "rtf.rerun"
+// The key of the runner's extensions in each CTRF "extra" object (json_reporter.cpp writes it),
+// namespaced as the CTRF specification recommends (an owner's prefix and a delimiter). Reports
+// of earlier versions used "rtf": readReport moves it to this key.
+extern const char* const ctrfExtensionKey;  // "robotology.rtf"
 
 }  // namespace runner
 }  // namespace robottestingframework
