@@ -69,7 +69,7 @@ def test_a_test_passing_on_its_second_attempt_is_flaky(tmp_path, isolation):
     (attempt,) = tests["flaky"]["retryAttempts"]
     assert attempt["attempt"] == 1 and attempt["status"] == "failed", attempt
     assert "status 3" in attempt["message"] and "status 3" in attempt["trace"], attempt
-    assert attempt["stdout"] == ["run 1"] and attempt["duration"] >= 0, attempt
+    assert "run 1" in attempt["stdout"] and attempt["duration"] >= 0, attempt
     assert "retryAttempts" not in tests["steady"]
     # The extension key is namespaced (CTRF 4.6.1), and the same in every extra.
     assert list(tests["flaky"]["extra"]) == ["robotology.rtf"], tests["flaky"]

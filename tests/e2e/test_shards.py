@@ -213,6 +213,7 @@ def test_bad_shard_settings_exit_2_naming_them(tmp_path, args, variables, why):
     assert why in r.stderr, r
 
 
+@pytest.mark.edited_reports
 def test_a_bad_durations_report_exits_2_naming_file_and_line(tmp_path):
     suites = make_suites(tmp_path / "suites", count=2)
     report = tmp_path / "durations.xml"
