@@ -477,6 +477,9 @@ function(robottestingframework_discover_tests)
     endif()
     _robottestingframework_runner(runner)
     _robottestingframework_plugin_path_args("${arg_PLUGIN_PATH}" plugin_path)
+    # Listing takes the runner's options (--var ...) but writes its own output; each test
+    # writes none unless RUNNER_ARGS says where.
+    set(list_args ${arg_RUNNER_ARGS})
     set(args ${arg_RUNNER_ARGS})
     if(NOT "-o" IN_LIST args AND NOT "--output" IN_LIST args)
         list(APPEND args --no-output)
@@ -494,7 +497,7 @@ function(robottestingframework_discover_tests)
     set(base "${CMAKE_CURRENT_BINARY_DIR}/rtf_discover_${suite_name}_${count}")
 
     set(content "")
-    foreach(variable runner suite args plugin_path)
+    foreach(variable runner suite args list_args plugin_path)
         _robottestingframework_bracket("${${variable}}" value)
         string(APPEND content "set(rtf_${variable} ${value})\n")
     endforeach()

@@ -52,8 +52,8 @@ struct ResourceSpec {
     std::string lock;  // empty for a pool
     std::string pool;  // empty for a lock
     unsigned int count = 1;
-    std::vector<std::string> defaults;  // default="...": the pool's items without --resources
     SourceLocation where;
+    std::vector<std::string> defaults{};  // default="...": the pool's items without --resources
 };
 
 // The id of a pool's item, in a --resources file or a default="...": letters, digits, _, - and
