@@ -11,8 +11,13 @@
 #   robottestingframework_add_script_test(NAME name SCRIPT file ...same options...)
 #   robottestingframework_add_suite(NAME name SUITE file.xml
 #                                   [ENVIRONMENT "..."] [TIMEOUT seconds] [JUNIT file]
-#                                   [RUNNER_ARGS ...] [TEST_ENVIRONMENT ...]
+#                                   [RUNNER_ARGS ...] [PLUGIN_PATH dir...] [TEST_ENVIRONMENT ...]
 #                                   [WORKING_DIRECTORY dir] [LABELS ...] [WILL_FAIL])
+#   robottestingframework_discover_tests(SUITE file.xml [NAME_PREFIX prefix]
+#                                        [RUNNER_ARGS ...] [PLUGIN_PATH dir...]
+#                                        [TEST_ENVIRONMENT ...] [WORKING_DIRECTORY dir]
+#                                        [LABELS ...] [TIMEOUT seconds]
+#                                        [DISCOVERY_TIMEOUT seconds])
 #   robottestingframework_add_suite(NAME name                              (RTF 2.x's form)
 #       [RobotTestingFramework_FIXTURE target_or_file [param words...]]...
 #       RobotTestingFramework_TEST target_or_file TYPE type [ARGS param...]...
@@ -40,8 +45,51 @@
 #
 # The runner is the imported target RobotTestingFramework::RTF_testrunner when it exists, else
 # the file in RobotTestingFramework_TESTRUNNER.
+#
+# Plug-ins of this project: the suite functions pass the runner --plugin-path for the folders
+# given in PLUGIN_PATH (generator expressions allowed, e.g. $<TARGET_FILE_DIR:my_module>),
+# then for the output folder of every robottestingframework_add_plugin target of the project
+# (wherever it is defined, before or after) and CMAKE_LIBRARY_OUTPUT_DIRECTORY when set. So a
+# suite in the source tree naming <test type="dll">MyTest</test> finds the MyTest built here.
+#
+# robottestingframework_discover_tests registers one CTest test per test of the suite, named
+# NAME_PREFIX (default: none) followed by the test's id (as `--list` shows it, e.g.
+# "arm/JointLimits"); each runs that one test (--filter). The list is read when ctest starts
+# (`--list --output json`, as gtest_discover_tests(... DISCOVERY_MODE PRE_TEST) does), so a
+# changed suite file needs no new configure; each test gets the LABELS and its tags as labels.
+# A suite that cannot be listed gives one failing test, NAME_PREFIX followed by the suite
+# file's name and "/list", whose output is the runner's error. Needs CMake 3.19 at test time.
 
 include_guard(GLOBAL)
+
+# The script ctest runs to list a suite's tests (beside this file in both trees).
+set(_ROBOTTESTINGFRAMEWORK_DISCOVER_SCRIPT
+    "${CMAKE_CURRENT_LIST_DIR}/RobotTestingFrameworkDiscoverTests.cmake")
+
+# The plug-in folders of the project, read at generate time (a target property can hold
+# generator expressions; a global property could not be read by one).
+if(NOT TARGET _robottestingframework_plugin_folders)
+    add_library(_robottestingframework_plugin_folders INTERFACE)
+endif()
+
+# The runner's --plugin-path options for `folders` (the caller's PLUGIN_PATH), then the
+# project's plug-in folders, in `out` (a list; expand with COMMAND_EXPAND_LISTS).
+function(_robottestingframework_plugin_path_args folders out)
+    set(target _robottestingframework_plugin_folders)
+    set(all "")
+    foreach(folder IN LISTS folders)
+        string(APPEND all "${folder}$<SEMICOLON>")
+    endforeach()
+    if(CMAKE_LIBRARY_OUTPUT_DIRECTORY)
+        string(APPEND all "${CMAKE_LIBRARY_OUTPUT_DIRECTORY}$<SEMICOLON>")
+    endif()
+    string(APPEND all "$<TARGET_GENEX_EVAL:${target},"
+                      "$<TARGET_PROPERTY:${target},INTERFACE_RTF_PLUGIN_FOLDERS>>")
+    # Each folder once, in order; no empty one.
+    set(all "$<FILTER:$<REMOVE_DUPLICATES:${all}>,EXCLUDE,^$>")
+    set(option "--plugin-path$<SEMICOLON>")
+    set(${out} "$<$<BOOL:${all}>:${option}$<JOIN:${all},$<SEMICOLON>${option}>>" PARENT_SCOPE)
+endfunction()
 
 # Resolves a file given to the helpers: absolute, or relative to the current source folder
 # when it exists there; anything else is passed on unchanged (the runner searches for it).
@@ -75,7 +123,7 @@ endfunction()
 function(_robottestingframework_add_runner_test caller file_keyword option)
     set(flags WILL_FAIL)
     set(one NAME ${file_keyword} PARAM ENVIRONMENT REPETITION TIMEOUT JUNIT WORKING_DIRECTORY)
-    set(multi RUNNER_ARGS TEST_ENVIRONMENT LABELS)
+    set(multi RUNNER_ARGS TEST_ENVIRONMENT LABELS PLUGIN_PATH)
     cmake_parse_arguments(PARSE_ARGV 3 arg "${flags}" "${one}" "${multi}")
     if(arg_UNPARSED_ARGUMENTS)
         message(FATAL_ERROR "${caller}: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
@@ -115,11 +163,18 @@ function(_robottestingframework_add_runner_test caller file_keyword option)
         list(APPEND command --no-output)
     endif()
     list(APPEND command ${arg_RUNNER_ARGS})
+    if(file_keyword STREQUAL "SUITE")
+        _robottestingframework_plugin_path_args("${arg_PLUGIN_PATH}" plugin_path)
+        list(APPEND command ${plugin_path})
+    elseif(arg_PLUGIN_PATH)
+        message(FATAL_ERROR "${caller}(${arg_NAME}): PLUGIN_PATH is for suites")
+    endif()
 
     if(arg_WORKING_DIRECTORY)
-        add_test(NAME "${arg_NAME}" COMMAND ${command} WORKING_DIRECTORY "${arg_WORKING_DIRECTORY}")
+        add_test(NAME "${arg_NAME}" COMMAND ${command} WORKING_DIRECTORY "${arg_WORKING_DIRECTORY}"
+                 COMMAND_EXPAND_LISTS)
     else()
-        add_test(NAME "${arg_NAME}" COMMAND ${command})
+        add_test(NAME "${arg_NAME}" COMMAND ${command} COMMAND_EXPAND_LISTS)
     endif()
     _robottestingframework_test_properties()
 endfunction()
@@ -173,6 +228,9 @@ function(robottestingframework_add_plugin name)
     endif()
     add_library(${name} MODULE ${arg_SOURCES} ${arg_HEADERS})
     set_target_properties(${name} PROPERTIES PREFIX "")
+    # Its folder is searched by the suites of this project (--plugin-path).
+    set_property(TARGET _robottestingframework_plugin_folders APPEND
+                 PROPERTY INTERFACE_RTF_PLUGIN_FOLDERS "$<TARGET_FILE_DIR:${name}>")
     if(arg_OUTPUT_NAME)
         set_target_properties(${name} PROPERTIES OUTPUT_NAME "${arg_OUTPUT_NAME}")
     endif()
@@ -375,6 +433,8 @@ function(_robottestingframework_add_generated_suite)
         list(APPEND command --no-output)
     endif()
     list(APPEND command ${arg_RUNNER_ARGS})
+    _robottestingframework_plugin_path_args("" plugin_path)
+    list(APPEND command ${plugin_path})
 
     set(options "")
     if(arg_WORKING_DIRECTORY)
@@ -383,6 +443,74 @@ function(_robottestingframework_add_generated_suite)
     if(arg_CONFIGURATIONS)
         list(APPEND options CONFIGURATIONS ${arg_CONFIGURATIONS})
     endif()
-    add_test(NAME "${arg_NAME}" COMMAND ${command} ${options})
+    add_test(NAME "${arg_NAME}" COMMAND ${command} ${options} COMMAND_EXPAND_LISTS)
     _robottestingframework_test_properties()
+endfunction()
+
+# A bracket argument holding `text` as is, for a generated CMake file.
+function(_robottestingframework_bracket text out)
+    set(equals "=")
+    while("${text}" MATCHES "]${equals}]")
+        string(APPEND equals "=")
+    endwhile()
+    set(${out} "[${equals}[${text}]${equals}]" PARENT_SCOPE)
+endfunction()
+
+# One CTest test per test of a suite file, listed when ctest starts (see the top of this file).
+function(robottestingframework_discover_tests)
+    set(caller robottestingframework_discover_tests)
+    set(one SUITE NAME_PREFIX WORKING_DIRECTORY TIMEOUT DISCOVERY_TIMEOUT)
+    set(multi RUNNER_ARGS PLUGIN_PATH TEST_ENVIRONMENT LABELS)
+    cmake_parse_arguments(PARSE_ARGV 0 arg "" "${one}" "${multi}")
+    if(arg_UNPARSED_ARGUMENTS)
+        message(FATAL_ERROR "${caller}: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
+    endif()
+    if(NOT arg_SUITE)
+        message(FATAL_ERROR "${caller}: SUITE is required (SUITE file.xml)")
+    endif()
+    _robottestingframework_resolve_file("${arg_SUITE}" suite)
+    if(NOT arg_WORKING_DIRECTORY)
+        set(arg_WORKING_DIRECTORY "${CMAKE_CURRENT_BINARY_DIR}")
+    endif()
+    if(NOT arg_DISCOVERY_TIMEOUT)
+        set(arg_DISCOVERY_TIMEOUT 60)
+    endif()
+    _robottestingframework_runner(runner)
+    _robottestingframework_plugin_path_args("${arg_PLUGIN_PATH}" plugin_path)
+    # Listing takes the runner's options (--var ...) but writes its own output; each test
+    # writes none unless RUNNER_ARGS says where.
+    set(list_args ${arg_RUNNER_ARGS})
+    set(args ${arg_RUNNER_ARGS})
+    if(NOT "-o" IN_LIST args AND NOT "--output" IN_LIST args)
+        list(APPEND args --no-output)
+    endif()
+
+    # Each call its own files, even for one suite file given twice.
+    get_property(count GLOBAL PROPERTY _ROBOTTESTINGFRAMEWORK_DISCOVERIES)
+    if(NOT count)
+        set(count 0)
+    endif()
+    math(EXPR count "${count} + 1")
+    set_property(GLOBAL PROPERTY _ROBOTTESTINGFRAMEWORK_DISCOVERIES ${count})
+    get_filename_component(suite_name "${suite}" NAME_WE)
+    string(REGEX REPLACE "[^A-Za-z0-9_.-]" "_" suite_name "${suite_name}")
+    set(base "${CMAKE_CURRENT_BINARY_DIR}/rtf_discover_${suite_name}_${count}")
+
+    set(content "")
+    foreach(variable runner suite args list_args plugin_path)
+        _robottestingframework_bracket("${${variable}}" value)
+        string(APPEND content "set(rtf_${variable} ${value})\n")
+    endforeach()
+    foreach(variable NAME_PREFIX WORKING_DIRECTORY TIMEOUT DISCOVERY_TIMEOUT TEST_ENVIRONMENT
+                     LABELS)
+        _robottestingframework_bracket("${arg_${variable}}" value)
+        string(TOLOWER "${variable}" name)
+        string(APPEND content "set(rtf_${name} ${value})\n")
+    endforeach()
+    _robottestingframework_bracket("${base}" value)
+    string(APPEND content "set(rtf_base ${value})\n")
+    _robottestingframework_bracket("${_ROBOTTESTINGFRAMEWORK_DISCOVER_SCRIPT}" value)
+    string(APPEND content "include(${value})\n")
+    file(GENERATE OUTPUT "${base}_include.cmake" CONTENT "${content}")
+    set_property(DIRECTORY APPEND PROPERTY TEST_INCLUDE_FILES "${base}_include.cmake")
 endfunction()

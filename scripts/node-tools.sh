@@ -2,7 +2,8 @@
 # Installs the third-party checkers the tests run on our reports into the build tree
 # (BUILD_DIR/node-tools): tap-parser (TAP 14, strict), ajv with ajv-formats, and the ctrf package
 # for CTRF's published JSON schema. Versions are pinned; once installed, nothing is fetched
-# again, so the tests run offline. Called by CMake when the tests are configured.
+# again, so the tests run offline. Run by ctest as the fixture e2e.node_tools (tests/e2e/
+# CMakeLists.txt) before the end-to-end tests; configuring the build never calls it.
 set -euo pipefail
 
 build=${1:?usage: scripts/node-tools.sh BUILD_DIR}

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <filesystem>
 
 #include "dll/shared_library.h"
@@ -92,6 +93,29 @@ std::string list(const std::vector<std::string>& items) {
     return text;
 }
 
+// The folders of RTF_PLUGIN_PATH (':'-separated, empty entries left out).
+std::vector<std::string> pluginSearchPath() {
+    std::vector<std::string> folders;
+    const char* value = std::getenv("RTF_PLUGIN_PATH");
+    std::string text = value != nullptr ? value : "";
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find(':', start);
+        if (end == std::string::npos) {
+            end = text.size();
+        }
+        std::string folder = text.substr(start, end - start);
+        while (folder.size() > 1 && folder.back() == '/') {
+            folder.pop_back();
+        }
+        if (!folder.empty()) {
+            folders.push_back(folder);
+        }
+        start = end + 1;
+    }
+    return folders;
+}
+
 }  // namespace
 
 std::string findPlugin(const std::string& name, const std::string& besideDir,
@@ -129,6 +153,11 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
     std::vector<std::string> folders;
     if (!besideDir.empty()) {
         folders.push_back(besideDir);
+    }
+    for (const auto& folder : pluginSearchPath()) {
+        if (std::find(folders.begin(), folders.end(), folder) == folders.end()) {
+            folders.push_back(folder);
+        }
     }
     for (const auto& folder : SharedLibrary::searchPath()) {
         if (std::find(folders.begin(), folders.end(), folder) == folders.end()) {

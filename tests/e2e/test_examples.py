@@ -6,6 +6,7 @@ behind (the MQTT broker, the simulated robot) is found by its mark."""
 import json
 import os
 import re
+import shutil
 import socket
 import subprocess
 import time
@@ -13,7 +14,8 @@ import uuid
 
 import pytest
 
-from conftest import BUILD_DIR, run_runner, validate_ctrf, validate_junit, validate_tap
+from conftest import (BUILD_DIR, SOURCE_DIR, run_runner, validate_ctrf, validate_junit,
+                      validate_tap)
 
 EXAMPLES = BUILD_DIR / "examples"
 MY_TEST = EXAMPLES / "libMyTest.so"
@@ -191,3 +193,39 @@ def test_library_example_writes_its_report(tmp_path):
     text = report.read_text()
     assert "SumTest" in text and "StringTest" in text, text
     assert f"report written to {report}" in result.stdout
+
+
+def test_the_robot_example_runs_as_written_from_its_folder(tmp_path, mark):
+    """`cd examples/robot && robottestingframework-testrunner --suite robot.xml`, no flag: the
+    ports come from the suite's <resource pool=... default=...>. A copy of the build tree's
+    folder, so the result file and the world's logs land under tmp_path."""
+    folder = tmp_path / "robot"
+    shutil.copytree(EXAMPLES / "robot", folder,
+                    ignore=shutil.ignore_patterns("rtf-logs", "result.txt", "CMakeFiles"))
+    run = run_runner("--suite", "robot.xml", cwd=folder, timeout=90,
+                     env={"RTF_E2E_MARK": mark})
+    assert run.returncode == 0, run
+    assert re.search(r"^2 passed, 0 failed$", run.stdout, re.MULTILINE), run
+    assert (folder / "rtf-logs" / "robot" / "simulated_robot.log").is_file()
+
+
+def test_configuring_the_build_for_the_examples_needs_no_npm(tmp_path):
+    """`./run.sh example` configures and builds: that must not reach the npm registry. An `npm`
+    first on PATH records any call; configuring a fresh build tree must not call it (the report
+    checkers are the end-to-end tests' CTest fixture, e2e.node_tools)."""
+    fake = tmp_path / "fake-bin"
+    fake.mkdir()
+    calls = tmp_path / "npm-calls.txt"
+    (fake / "npm").write_text(f'#!/bin/sh\necho "npm $*" >> "{calls}"\nexit 1\n')
+    (fake / "npm").chmod(0o755)
+    env = {**os.environ, "PATH": f"{fake}:{os.environ['PATH']}"}
+    generator = ["-G", "Ninja"] if shutil.which("ninja") else []
+    configured = subprocess.run(
+        ["cmake", "-S", str(SOURCE_DIR), "-B", str(tmp_path / "build"), *generator,
+         "-DRTF_BUILD_BENCH=OFF"], capture_output=True, text=True, timeout=240, env=env)
+    assert configured.returncode == 0, configured.stdout + configured.stderr
+    assert not calls.exists(), calls.read_text()
+    # The fixture is there for the tests.
+    listed = subprocess.run(["ctest", "--test-dir", str(tmp_path / "build"), "-N", "-R",
+                             "^e2e.node_tools$"], capture_output=True, text=True, timeout=60)
+    assert "e2e.node_tools" in listed.stdout, listed.stdout

@@ -1,5 +1,5 @@
 // The console of -j N (parallel_console.h): a line per test as it ends, its messages under it,
-// the scheduler's notes, the status line on a terminal, the summary at the end.
+// the scheduler's notes, the progress line on a terminal, the summary at the end.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -25,15 +25,20 @@ namespace {
 // A console writing to memory; text() is what it wrote, each test's time shown as "(T)".
 class Console {
 public:
-    explicit Console(ParallelConsoleSettings settings = {}) {
-        stream_ = ::open_memstream(&buffer_, &size_);
+    // `shared`: write to another console's stream (a progress line on the same one).
+    explicit Console(ParallelConsoleSettings settings = {}, std::FILE* shared = nullptr) {
+        stream_ = shared != nullptr ? shared : ::open_memstream(&buffer_, &size_);
+        owned_ = shared == nullptr;
         console_ = std::make_unique<ParallelConsole>(stream_, collector_, settings);
     }
     ~Console() {
         console_.reset();
-        std::fclose(stream_);
-        std::free(buffer_);
+        if (owned_) {
+            std::fclose(stream_);
+            std::free(buffer_);
+        }
     }
+    std::FILE* stream() { return stream_; }
     ParallelConsole& operator*() { return *console_; }
     ParallelConsole* operator->() { return console_.get(); }
     TestResultCollector& collector() { return collector_; }
@@ -58,6 +63,7 @@ private:
     TestResultCollector collector_;
     char* buffer_ = nullptr;
     std::size_t size_ = 0;
+    bool owned_ = true;
     std::FILE* stream_ = nullptr;
     std::unique_ptr<ParallelConsole> console_;
 };
@@ -239,43 +245,53 @@ TEST(ParallelConsole, ANoteIsALineNamingTheRunner) {
     EXPECT_EQ(console.text(), "robottestingframework-testrunner: suite leg waits for lock robot\n");
 }
 
-TEST(ParallelConsole, WithoutATerminalWhatRunsIsNotShown) {
+TEST(ParallelConsole, WithoutATerminalATestThatStartsShowsNothing) {
     Console console;
-    console->running("arm :: reach");
+    TestSuite suite("arm");
+    rtf_test::LambdaTest reach("reach");
+    console.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     console->note("x");
     EXPECT_EQ(console.text(), "robottestingframework-testrunner: x\n");
 }
 
-TEST(ParallelConsole, OnATerminalTheStatusLineIsClearedForEachLineAndShownAgain) {
+TEST(ParallelConsole, OnATerminalTheProgressLineIsErasedForEachLineAndDrawnAgain) {
+    Console console;
+    ProgressSettings progressSettings;
+    progressSettings.tests = 3;
+    progressSettings.redrawMilliseconds = 0;
+    ProgressLine progress(console.stream(), progressSettings);
     ParallelConsoleSettings settings;
-    settings.statusLine = true;
-    Console console(settings);
-    console->running("arm :: reach");
-    console->note("x");
-    EXPECT_EQ(console.text(),
-              "\r\033[Krunning: arm :: reach"
-              "\r\033[Krobottestingframework-testrunner: x\nrunning: arm :: reach");
+    settings.progress = &progress;
+    Console withProgress(settings, console.stream());
+    TestSuite suite("arm");
+    rtf_test::LambdaTest reach("reach");
+    withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
+    withProgress->note("x");
+    EXPECT_EQ(std::regex_replace(console.text(), std::regex("\\(\\d+\\.\\d s\\)"), "(T)"),
+              "robottestingframework-testrunner: x\n[1/3] arm :: reach (T)");
 }
 
-TEST(ParallelConsole, ALongStatusLineIsCutTo120Characters) {
+TEST(ParallelConsole, TheEndOfTheRunErasesTheProgressLineAndEndsWithTheClosingLine) {
+    Console console;
+    ProgressSettings progressSettings;
+    progressSettings.tests = 1;
+    progressSettings.redrawMilliseconds = 0;
+    ProgressLine progress(console.stream(), progressSettings);
     ParallelConsoleSettings settings;
-    settings.statusLine = true;
-    Console console(settings);
-    console->running(std::string(200, 'x'));
-    EXPECT_EQ(console.text(), "\r\033[K" + ("running: " + std::string(108, 'x')) + "...");
-}
-
-TEST(ParallelConsole, TheEndOfTheRunClearsTheStatusLineAndEndsWithTheClosingLine) {
-    ParallelConsoleSettings settings;
-    settings.statusLine = true;
+    settings.progress = &progress;
     settings.summary = false;
-    Console console(settings);
-    console->running("arm :: reach");
-    console->endTestRunner();
+    Console withProgress(settings, console.stream());
+    TestSuite suite("arm");
+    rtf_test::LambdaTest reach("reach");
+    withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
+    withProgress->note("x");
+    withProgress->endTestRunner();
     const std::string text = console.text();
-    EXPECT_EQ(text.rfind("\r\033[Krunning: arm :: reach\r\033[K\n", 0), 0u) << text;
     EXPECT_EQ(text.find("Summary"), std::string::npos) << text;
-    EXPECT_EQ(text.find("running:", 10), std::string::npos) << text;
+    // Erased once more at the end, and never drawn again.
+    const std::size_t last = text.rfind("[1/1]");
+    ASSERT_NE(last, std::string::npos) << text;
+    EXPECT_EQ(text.find("\r\033[K\n", last), text.find("\r\033[K", last)) << text;
 }
 
 TEST(ParallelConsole, TheSummaryComesFromTheCollector) {

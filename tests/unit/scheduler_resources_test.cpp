@@ -84,6 +84,16 @@ TEST(SchedulerResources, SuiteFileReadsLocksPoolsAndExclusive) {
               "--domain 7");
 }
 
+TEST(SchedulerResources, SuiteFileReadsAPoolsDefaultItems) {
+    SuiteSpec suite = parse(R"(<suite name="s">
+  <resource pool="port" default=" 18831  18841 "/>
+  <resource pool="gpu"/>
+</suite>)");
+    ASSERT_EQ(suite.resources.size(), 2u);
+    EXPECT_EQ(suite.resources[0].defaults, (std::vector<std::string>{"18831", "18841"}));
+    EXPECT_TRUE(suite.resources[1].defaults.empty());
+}
+
 TEST(SchedulerResources, SuiteFileRefusesBadResourcesWithFileAndLine) {
     EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource lock=\"left arm\"/></suite>"),
               "/nowhere/suite.xml:2: <resource lock=\"left arm\">: a lock name has no spaces "
@@ -163,6 +173,44 @@ TEST(SchedulerResources, ResourceFileIsReadLikeCTestsAndCheckedAgainstSuites) {
                      std::runtime_error)
             << bad;
     }
+}
+
+TEST(SchedulerResources, APoolNoFileGivesTakesTheSuitesDefault) {
+    ResourceSpec port = pool("port");
+    port.defaults = {"18831", "18841"};
+    ResourcePools none;
+    EXPECT_EQ(addSuiteDefaults({suiteWith("robot", {port})}, none), "");
+    ASSERT_EQ(none.pools["port"].size(), 2u);
+    EXPECT_EQ(none.pools["port"][1].id, "18841");
+    EXPECT_EQ(checkPools({suiteWith("robot", {port})}, none), "");
+    // Too few items: the message says where they came from.
+    ResourceSpec three = pool("port", 3);
+    three.defaults = port.defaults;
+    EXPECT_NE(checkPools({suiteWith("robot", {three})}, none).find("(default= at s.xml:3) has 2"),
+              std::string::npos);
+
+    // A --resources file that gives the pool wins.
+    ResourcePools file;
+    file.file = "ports.json";
+    file.pools["port"] = {PoolItem{"1", 1}};
+    EXPECT_EQ(addSuiteDefaults({suiteWith("robot", {port})}, file), "");
+    ASSERT_EQ(file.pools["port"].size(), 1u);
+    EXPECT_EQ(file.pools["port"][0].id, "1");
+}
+
+TEST(SchedulerResources, TwoDifferentDefaultsForOnePoolAreAnError) {
+    ResourceSpec first = pool("port");
+    first.defaults = {"1"};
+    ResourceSpec same = first;
+    ResourceSpec other = pool("port");
+    other.defaults = {"2"};
+    other.where = SourceLocation{"t.xml", 5};
+    ResourcePools pools;
+    EXPECT_EQ(addSuiteDefaults({suiteWith("a", {first}), suiteWith("b", {same})}, pools), "");
+    ResourcePools clash;
+    EXPECT_EQ(addSuiteDefaults({suiteWith("a", {first}), suiteWith("b", {other})}, clash),
+              "t.xml:5: pool \"port\" has another default at s.xml:3; give one default, or the "
+              "pool in a --resources file");
 }
 
 TEST(SchedulerResources, VariableNameOfAPool) {

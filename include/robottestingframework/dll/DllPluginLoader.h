@@ -33,11 +33,12 @@ private:
 };
 
 // Finds a plug-in by path or bare name: `name` as given if it has a folder part; otherwise
-// next to `besideDir` first, then the library search path (LD_LIBRARY_PATH, the loader's
-// default folders), trying the name as is and with the `lib` prefix and platform suffix added.
-// Returns the path found, made absolute (the dynamic loader would look a bare name up on the
-// library path), or an empty string with `searched` saying why: the places tried, or what the
-// path is when it exists but is no file (a folder, a FIFO, a device).
+// next to `besideDir` first, then the folders of RTF_PLUGIN_PATH (in order; the runner puts
+// its --plugin-path folders first), then the library search path (LD_LIBRARY_PATH, the
+// loader's default folders), trying the name as is and with the `lib` prefix and platform
+// suffix added. Returns the path found, made absolute (the dynamic loader would look a bare
+// name up on the library path), or an empty string with `searched` saying why: the places
+// tried, or what the path is when it exists but is no file (a folder, a FIFO, a device).
 std::string findPlugin(const std::string& name, const std::string& besideDir,
                        std::string* searched = nullptr);
 

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "platform/process_tree.h"
 #include "runner/cli/executor_choice.h"
@@ -17,6 +18,7 @@
 #include "runner/cli/options.h"
 #include "runner/cli/planned_run.h"
 #include "runner/cli/program_name.h"
+#include "runner/cli/progress_plan.h"
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
@@ -78,7 +80,12 @@ int main(int argc, char** argv) {
     if (options.webReporter && !(web = startWebPage(options))) {
         return configurationError;
     }
-    RunListeners listeners(options, planned.reportSettings, web.get());
+    std::vector<std::string> warnings;
+    ProgressSettings progress = progressOf(plan, options.durations, warnings);
+    for (const std::string& warning : warnings) {
+        std::fprintf(stderr, "%s: %s\n", programName, warning.c_str());
+    }
+    RunListeners listeners(options, planned.reportSettings, web.get(), std::move(progress));
     const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);
     listeners.stopCapture();
     if (options.isolation == Isolation::None) {

@@ -319,6 +319,16 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "The pools <resource pool=\"...\"/> takes items from: a JSON file shaped "
                    "like CTest's resource spec file")
         ->type_name("FILE");
+    takeAll(app.add_option("--plugin-path", options.pluginPath,
+                           "Look plug-ins named without a folder up in DIR too: after the "
+                           "suite's folder, before RTF_PLUGIN_PATH and the system's library "
+                           "path (repeatable, in order)")
+                ->type_name("DIR"));
+    std::string colour = "auto";
+    app.add_option("--color", colour,
+                   "Colour on the console: auto (on a terminal, unless NO_COLOR is set), "
+                   "always, never (default auto)")
+        ->type_name("WHEN");
     app.add_flag("--version", version, "Print the version and exit");
 
     ParseResult result;
@@ -435,6 +445,15 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
 
     if (expectShardsOption->count() > 0 && merge.empty()) {
         return usageError("--expect-shards needs --merge");
+    }
+    if (colour == "auto") {
+        options.colour = Colour::Auto;
+    } else if (colour == "always") {
+        options.colour = Colour::Always;
+    } else if (colour == "never") {
+        options.colour = Colour::Never;
+    } else {
+        return usageError("--color " + colour + ": expected auto, always or never");
     }
     if (!options.mergeReports.empty() && merge.empty()) {
         return usageError("unexpected argument " + options.mergeReports.front() +

@@ -22,6 +22,13 @@ enum class Isolation {
     None,     // "none": in the runner's own process, one suite at a time
 };
 
+// --color: status words and the closing line in colour.
+enum class Colour {
+    Auto,    // "auto": on a terminal, unless NO_COLOR is set or TERM is dumb (the default)
+    Always,  // "always": also in a pipe or file (CI logs that show colour)
+    Never,   // "never"
+};
+
 struct Options {
     std::vector<std::string> tests;      // --test/-t FILE
     std::vector<std::string> testDirs;   // --tests DIR
@@ -63,6 +70,8 @@ struct Options {
     unsigned int expectShards = 0;
     unsigned int jobs = 1;  // -j/--jobs N: suites at once; "auto": the machine's cores
     std::string resources;  // --resources FILE: the pools of <resource pool="..."/>
+    std::vector<std::string> pluginPath;  // --plugin-path DIR: searched for plug-ins by name
+    Colour colour = Colour::Auto;         // --color auto|always|never
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();

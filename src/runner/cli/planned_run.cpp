@@ -99,8 +99,9 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     }
     if (!plan.shard.sharded) {
         if (!options.durations.empty()) {
-            warn(plan,
-                 "warning: --durations " + options.durations + ": not sharded, nothing to balance");
+            warn(plan, "warning: --durations " + options.durations +
+                           ": not sharded, nothing to balance (only a terminal's progress "
+                           "line reads it, for its ETA)");
         }
         return plan;
     }

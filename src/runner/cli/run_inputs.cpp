@@ -1,7 +1,9 @@
 #include "runner/cli/run_inputs.h"
 
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
+#include <filesystem>
 #include <string>
 
 #include "runner/cli/command_line_suites.h"
@@ -15,6 +17,31 @@ namespace runner {
 
 namespace {
 
+// --plugin-path DIR...: absolute, in front of RTF_PLUGIN_PATH, which every plug-in look-up
+// reads (plugin::findPlugin), here and in the workers that inherit it.
+bool usePluginPath(const std::vector<std::string>& folders) {
+    if (folders.empty()) {
+        return true;
+    }
+    std::string path;
+    for (const auto& folder : folders) {
+        std::error_code error;
+        if (!std::filesystem::is_directory(folder, error)) {
+            std::fprintf(stderr, "%s: --plugin-path %s: no such folder\n", programName,
+                         folder.c_str());
+            return false;
+        }
+        path += (path.empty() ? "" : ":") +
+                std::filesystem::absolute(folder, error).lexically_normal().string();
+    }
+    const char* before = std::getenv("RTF_PLUGIN_PATH");
+    if (before != nullptr && *before != '\0') {
+        path += std::string(":") + before;
+    }
+    ::setenv("RTF_PLUGIN_PATH", path.c_str(), 1);
+    return true;
+}
+
 void sayWarnings(const std::vector<std::string>& warnings) {
     for (const auto& warning : warnings) {
         std::fprintf(stderr, "%s\n", warning.c_str());
@@ -24,6 +51,9 @@ void sayWarnings(const std::vector<std::string>& warnings) {
 }  // namespace
 
 bool readRunInputs(Options& options, RunInputs& inputs) {
+    if (!usePluginPath(options.pluginPath)) {
+        return false;
+    }
     std::vector<std::string> warnings;
     try {
         inputs.suites = readSources(options, warnings);
@@ -61,7 +91,10 @@ bool readRunInputs(Options& options, RunInputs& inputs) {
             return false;
         }
     }
-    const std::string poolProblem = checkPools(inputs.suites, inputs.pools);
+    std::string poolProblem = addSuiteDefaults(inputs.suites, inputs.pools);
+    if (poolProblem.empty()) {
+        poolProblem = checkPools(inputs.suites, inputs.pools);
+    }
     if (!poolProblem.empty()) {
         std::fprintf(stderr, "%s: %s\n", programName, poolProblem.c_str());
         return false;

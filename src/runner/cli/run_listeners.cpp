@@ -13,9 +13,15 @@ namespace runner {
 
 namespace {
 
-bool wantColours() {
+// --color auto: on a terminal, unless NO_COLOR (no-color.org) or a dumb terminal says no;
+// always and never win over both.
+bool wantColours(Colour colour) {
+    if (colour != Colour::Auto) {
+        return colour == Colour::Always;
+    }
     const char* term = std::getenv("TERM");
-    return ::isatty(1) && std::getenv("NO_COLOR") == nullptr &&
+    const char* noColour = std::getenv("NO_COLOR");
+    return ::isatty(1) && (noColour == nullptr || *noColour == '\0') &&
            !(term != nullptr && std::string(term) == "dumb");
 }
 
@@ -30,20 +36,28 @@ struct RunListeners::Output {
 // The lines the scheduler has to say when one suite runs at a time (a wait for a lock).
 class RunListeners::Notes : public SchedulerView {
 public:
-    explicit Notes(std::FILE* stream) : stream_(stream) {}
+    Notes(std::FILE* stream, ProgressLine* progress) : stream_(stream), progress_(progress) {}
     void note(const std::string& line) override {
+        if (progress_ != nullptr) {
+            progress_->pause();
+        }
         std::fprintf(stream_, "%s: %s\n", programName, line.c_str());
         std::fflush(stream_);
+        if (progress_ != nullptr) {
+            progress_->resume();
+        }
     }
 
 private:
     std::FILE* stream_;
+    ProgressLine* progress_;
 };
 
 RunListeners::RunListeners(const Options& options,
-                           const reporters::ReporterSettings& reportSettings, TestListener* web)
+                           const reporters::ReporterSettings& reportSettings, TestListener* web,
+                           ProgressSettings progress)
     : captureListener_(capture_, result_), console_(options.verbose) {
-    const bool colours = wantColours();  // before the capture takes stdout
+    const bool colours = wantColours(options.colour);  // before the capture takes stdout
     std::string captureError;
     if (capture_.start(captureError)) {
         result_.addListener(&captureListener_);  // first: output arrives before endTest
@@ -70,15 +84,29 @@ RunListeners::RunListeners(const Options& options,
     parallelSettings.colours = colours;
     parallelSettings.summary = !options.noSummary;
     parallelSettings.retries = options.retries;
-    parallelSettings.statusLine = ::isatty(::fileno(capture_.console())) == 1;
+    // A terminal that can rewrite a line (not TERM=dumb) gets the progress line.
+    const char* term = std::getenv("TERM");
+    if (::isatty(::fileno(capture_.console())) == 1 &&
+        !(term != nullptr && std::string(term) == "dumb")) {
+        progress.colours = colours;
+        progress.jobs = options.jobs;
+        progress_ = std::make_unique<ProgressLine>(capture_.console(), std::move(progress));
+        parallelSettings.progress = progress_.get();
+    }
     parallelConsole_ =
         std::make_unique<ParallelConsole>(capture_.console(), collector_, parallelSettings);
     // One line per test as it ends, from any suite (-j N); else the console of one suite at a
     // time.
     // 64 KiB per test, but not for every one of 10 000 talkative tests (README: Output limits).
     collector_.setOutputBudget(8 * 1024 * 1024);
+    if (!parallel && progress_) {
+        result_.addListener(&progress_->before());  // erases the line before the console
+    }
     if (!parallel) {
         result_.addListener(&console_);
+    }
+    if (!parallel && progress_) {
+        result_.addListener(&progress_->after());  // and draws it again after
     }
     result_.addListener(&collector_);
     if (parallel) {
@@ -101,7 +129,7 @@ RunListeners::RunListeners(const Options& options,
         result_.addListener(web);
     }
     if (!parallel) {
-        notes_ = std::make_unique<Notes>(capture_.console());
+        notes_ = std::make_unique<Notes>(capture_.console(), progress_.get());
     }
 }
 

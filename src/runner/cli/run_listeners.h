@@ -15,6 +15,7 @@
 #include "reporters/reporter.h"
 #include "runner/cli/options.h"
 #include "runner/console/parallel_console.h"
+#include "runner/console/progress_line.h"
 #include "runner/execution/output_capture.h"
 #include "runner/schedule/scheduler.h"
 
@@ -25,9 +26,10 @@ class RunListeners {
 public:
     // Starts capturing the tests' output (a warning on stderr when it cannot, the output then
     // going to the console). `reportSettings`: the run's place (planned_run.h), for the
-    // outputs. `web`: the live page, or nullptr.
+    // outputs. `web`: the live page, or nullptr. `progress`: what the progress line shows
+    // (only on a terminal; its colours come from --color).
     RunListeners(const Options& options, const reporters::ReporterSettings& reportSettings,
-                 TestListener* web);
+                 TestListener* web, ProgressSettings progress);
     ~RunListeners();
     RunListeners(const RunListeners&) = delete;
     RunListeners& operator=(const RunListeners&) = delete;
@@ -57,6 +59,7 @@ private:
     OutputCaptureListener captureListener_;
     ConsoleListener console_;
     TestResultCollector collector_;
+    std::unique_ptr<ProgressLine> progress_;  // on a terminal only
     std::unique_ptr<ParallelConsole> parallelConsole_;
     std::vector<Output> outputs_;
     std::unique_ptr<Notes> notes_;

@@ -12,8 +12,6 @@ namespace {
 using namespace reporters::colour;
 using Kind = ResultEvent::Kind;
 
-const char* const clearLine = "\r\033[K";
-
 }  // namespace
 
 // Turns one suite's events into lines: a test's line when it ends.
@@ -22,6 +20,9 @@ public:
     Live(ParallelConsole& console, const TestSuite& suite) : console_(console), suite_(suite) {}
 
     void startTest(const Test* test) override {
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->testStarted(test, suite_.getName(), test != nullptr ? test->getName() : "");
+        }
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts;  // a retry starts again
         open = Open();
@@ -29,6 +30,9 @@ public:
         open.attempts = attempts;
     }
     void endTest(const Test* test) override {
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->testEnded(test);
+        }
         auto found = open_().find(test);
         if (found == open_().end()) {
             return;
@@ -100,6 +104,9 @@ public:
         }
     }
     void retryTest(const Test* test, TestMessage msg) override {
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->testRetried(test);
+        }
         console_.line("  retry       " + suite_.getName() +
                       " :: " + (test != nullptr ? test->getName() : "") + ": " +
                       reporters::messageText(msg));
@@ -109,9 +116,22 @@ public:
         open.started = std::chrono::steady_clock::now();
         open.attempts = attempts;
     }
+    void renameTest(const Test* test, const std::string& name) override {
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->testRenamed(test, name);
+        }
+    }
+    void startTestSuite(const TestSuite* suite) override {
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->suiteStarted(suite != nullptr ? suite->getName() : "");
+        }
+    }
     void endTestSuite(const TestSuite* suite) override {
         if (suite == nullptr) {
             return;
+        }
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->suiteEnded(suite->getName());
         }
         const bool ok = suite->succeeded();
         std::string text = "  suite ";
@@ -143,6 +163,9 @@ private:
         if (status > found->second.status) {
             found->second.status = status;
         }
+        if (isFailure(status) && console_.settings_.progress != nullptr) {
+            console_.settings_.progress->testFailed(test);
+        }
         found->second.lines.push_back(text);
     }
 
@@ -155,16 +178,13 @@ ParallelConsole::ParallelConsole(std::FILE* stream, const TestResultCollector& c
     : stream_(stream), collector_(collector), settings_(settings) {}
 
 void ParallelConsole::line(const std::string& text) {
-    if (!status_.empty()) {
-        std::fputs(clearLine, stream_);
+    if (settings_.progress != nullptr) {
+        settings_.progress->pause();
     }
     std::fwrite(text.data(), 1, text.size(), stream_);
     std::fputc('\n', stream_);
-    if (!status_.empty()) {
-        std::fputs(status_.c_str(), stream_);
-    }
-    if (settings_.statusLine) {
-        std::fflush(stream_);
+    if (settings_.progress != nullptr) {
+        settings_.progress->resume();  // draws it again, and flushes
     }
 }
 
@@ -180,24 +200,9 @@ void ParallelConsole::note(const std::string& text) {
     line("robottestingframework-testrunner: " + text);
 }
 
-void ParallelConsole::running(const std::string& text) {
-    if (!settings_.statusLine) {
-        return;
-    }
-    std::string shown = text.empty() ? "" : "running: " + text;
-    if (shown.size() > 120) {
-        shown = shown.substr(0, 117) + "...";
-    }
-    std::fputs(clearLine, stream_);
-    std::fputs(shown.c_str(), stream_);
-    std::fflush(stream_);
-    status_ = shown;
-}
-
 void ParallelConsole::endTestRunner() {
-    if (!status_.empty()) {
-        std::fputs(clearLine, stream_);
-        status_.clear();
+    if (settings_.progress != nullptr) {
+        settings_.progress->finish();
     }
     line("");
     if (settings_.summary) {

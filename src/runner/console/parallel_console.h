@@ -1,7 +1,8 @@
 // The console of a run of several suites at once (-j N): one line per test as it ends, from
 // whichever suite, never two mixed; the messages of a test that did not pass under its line;
-// the lines the scheduler has to say (a suite waiting for a lock); on a terminal, one line at
-// the bottom saying what runs now. The summary comes at the end, from the ordered results.
+// the lines the scheduler has to say (a suite waiting for a lock); on a terminal, the progress
+// line at the bottom (progress_line.h), fed by the live events. The summary comes at the end, from
+// the ordered results.
 #pragma once
 
 #include <chrono>
@@ -14,17 +15,18 @@
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestStatus.h>
 
+#include "runner/console/progress_line.h"
 #include "runner/schedule/scheduler.h"
 
 namespace robottestingframework {
 namespace runner {
 
 struct ParallelConsoleSettings {
-    bool verbose = false;      // reports and output too
-    bool colours = false;      // status words in colour
-    bool summary = true;       // the summary at the end
-    bool statusLine = false;   // the stream is a terminal: show what runs now
-    unsigned int retries = 0;  // --retries: a failed attempt with retries left is a RETRY
+    bool verbose = false;              // reports and output too
+    bool colours = false;              // status words in colour
+    bool summary = true;               // the summary at the end
+    ProgressLine* progress = nullptr;  // the stream is a terminal: the line at the bottom
+    unsigned int retries = 0;          // --retries: a failed attempt with retries left is a RETRY
 };
 
 class ParallelConsole : public SchedulerView, public TestListener {
@@ -35,7 +37,6 @@ public:
 
     void events(const TestSuite& suite, const std::vector<SuiteEvents::Event>& events) override;
     void note(const std::string& line) override;
-    void running(const std::string& line) override;
 
     // On the ordered stream: only the end of the run matters here.
     void endTestRunner() override;
@@ -55,7 +56,6 @@ private:
     std::FILE* stream_;
     const TestResultCollector& collector_;
     ParallelConsoleSettings settings_;
-    std::string status_;  // shown at the bottom (terminal only)
 };
 
 }  // namespace runner

@@ -1,5 +1,8 @@
 #include "runner/model/suite_model.h"
 
+#include <algorithm>
+#include <cctype>
+
 namespace robottestingframework {
 namespace runner {
 
@@ -8,6 +11,12 @@ std::string SourceLocation::toString() const {
         return file;
     }
     return file + ":" + std::to_string(line);
+}
+
+bool isPoolItemId(const std::string& id) {
+    return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
+        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
+    });
 }
 
 }  // namespace runner

@@ -45,14 +45,20 @@ struct FixtureSpec {
 };
 
 // A <resource> of a suite: an exclusive lock (`lock="robot:left-arm"`) or `count` items taken
-// from a pool given by --resources (`pool="ros_domain" count="1"`). The scheduler holds them
-// from fixture setup to teardown; shards keep suites sharing a lock together.
+// from a pool given by --resources (`pool="ros_domain" count="1"`), or by the suite's own
+// `default="ID ..."` when no --resources file gives that pool. The scheduler holds them from
+// fixture setup to teardown; shards keep suites sharing a lock together.
 struct ResourceSpec {
     std::string lock;  // empty for a pool
     std::string pool;  // empty for a lock
     unsigned int count = 1;
     SourceLocation where;
+    std::vector<std::string> defaults{};  // default="...": the pool's items without --resources
 };
+
+// The id of a pool's item, in a --resources file or a default="...": letters, digits, _, - and
+// . (CTest's rule, with upper-case letters, '-' and '.' too).
+bool isPoolItemId(const std::string& id);
 
 struct SuiteSpec {
     std::string name;

@@ -31,12 +31,6 @@ bool isPoolName(const std::string& name) {
     });
 }
 
-bool isItemId(const std::string& id) {
-    return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
-        return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.';
-    });
-}
-
 }  // namespace
 
 ResourcePools readResourceFile(const std::string& path) {
@@ -90,7 +84,7 @@ ResourcePools parseResourceFile(const std::string& text, const std::string& path
             }
             PoolItem parsed;
             parsed.id = item["id"].get<std::string>();
-            if (!isItemId(parsed.id)) {
+            if (!isPoolItemId(parsed.id)) {
                 fail(path, "pool \"" + name + "\": item id \"" + parsed.id +
                                "\" is not letters, digits, _, - and .");
             }
@@ -112,6 +106,34 @@ ResourcePools parseResourceFile(const std::string& text, const std::string& path
     return pools;
 }
 
+std::string addSuiteDefaults(const std::vector<SuiteSpec>& suites, ResourcePools& pools) {
+    std::map<std::string, const ResourceSpec*> firstDefault;  // pool -> the suite that gave it
+    for (const auto& suite : suites) {
+        for (const auto& resource : suite.resources) {
+            if (resource.pool.empty() || resource.defaults.empty() ||
+                (pools.pools.count(resource.pool) != 0 && firstDefault.count(resource.pool) == 0)) {
+                continue;
+            }
+            auto given = firstDefault.find(resource.pool);
+            if (given != firstDefault.end()) {
+                if (given->second->defaults != resource.defaults) {
+                    return resource.where.toString() + ": pool \"" + resource.pool +
+                           "\" has another default at " + given->second->where.toString() +
+                           "; give one default, or the pool in a --resources file";
+                }
+                continue;
+            }
+            firstDefault[resource.pool] = &resource;
+            std::vector<PoolItem>& items = pools.pools[resource.pool];
+            for (const auto& id : resource.defaults) {
+                items.push_back(PoolItem{id, 1});
+            }
+            pools.origin[resource.pool] = "default= at " + resource.where.toString();
+        }
+    }
+    return {};
+}
+
 std::string checkPools(const std::vector<SuiteSpec>& suites, const ResourcePools& pools) {
     for (const auto& suite : suites) {
         for (const auto& resource : suite.resources) {
@@ -126,16 +148,18 @@ std::string checkPools(const std::vector<SuiteSpec>& suites, const ResourcePools
                 }
                 return resource.where.toString() + ": pool \"" + resource.pool +
                        "\" does not exist" +
-                       (pools.file.empty() ? std::string(" (no --resources FILE gives pools)")
+                       (pools.file.empty() ? std::string(" (no --resources FILE gives pools; "
+                                                         "a suite can give default=\"ID ...\")")
                                            : " in " + pools.file +
                                                  (known.empty() ? " (it has no pool)"
                                                                 : " (it has " + known + ")"));
             }
             if (resource.count > found->second.size()) {
-                return resource.where.toString() + ": pool \"" + resource.pool + "\" of " +
-                       pools.file + " has " + std::to_string(found->second.size()) +
-                       " item(s); suite \"" + suite.name + "\" takes " +
-                       std::to_string(resource.count) + " and could never run";
+                auto origin = pools.origin.find(resource.pool);
+                return resource.where.toString() + ": pool \"" + resource.pool + "\" (" +
+                       (origin != pools.origin.end() ? origin->second : pools.file) + ") has " +
+                       std::to_string(found->second.size()) + " item(s); suite \"" + suite.name +
+                       "\" takes " + std::to_string(resource.count) + " and could never run";
             }
         }
     }

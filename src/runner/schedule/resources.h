@@ -2,7 +2,9 @@
 // --resources FILE, a JSON file shaped like CTest's resource spec file:
 //   {"version": {"major": 1, "minor": 0},
 //    "local": [{"ros_domain": [{"id": "1"}, {"id": "2", "slots": 2}]}]}
-// An item with `slots` N may be held by N suites at once (default 1).
+// An item with `slots` N may be held by N suites at once (default 1). A pool no such file gives
+// takes its items from the suites' <resource pool="NAME" default="ID ..."/>, so a suite file
+// runs as written.
 #pragma once
 
 #include <map>
@@ -22,12 +24,18 @@ struct PoolItem {
 struct ResourcePools {
     std::string file;  // where they were read, for messages; empty: no --resources
     std::map<std::string, std::vector<PoolItem>> pools;
+    std::map<std::string, std::string> origin;  // pool -> where its items come from (messages)
 };
 
 // Reads --resources FILE; throws std::runtime_error "FILE: what is wrong" when it cannot.
 ResourcePools readResourceFile(const std::string& path);
 // The same from the file's text; `path` names it in messages.
 ResourcePools parseResourceFile(const std::string& text, const std::string& path);
+
+// Gives each pool that `pools` lacks the items of its suites' default="..." (a --resources
+// file wins over the suite). Empty, or "suite.xml:4: ..." when two suites give one pool
+// different defaults.
+std::string addSuiteDefaults(const std::vector<SuiteSpec>& suites, ResourcePools& pools);
 
 // Empty when every <resource pool="..."> of `suites` names a pool of `pools` that has enough
 // items; else "suite.xml:4: ..." saying which pool and what is wrong.

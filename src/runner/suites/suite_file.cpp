@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <sstream>
 #include <unordered_map>
 
 #include <pugixml.hpp>
@@ -457,9 +458,10 @@ private:
         }
     }
 
-    // <resource lock="robot:left-arm"/> or <resource pool="ros_domain" count="1"/>.
+    // <resource lock="robot:left-arm"/> or <resource pool="ros_domain" count="1"
+    // default="ID ..."/>.
     ResourceSpec readResource(pugi::xml_node node) {
-        checkAttributes(node, {"lock", "pool", "count"});
+        checkAttributes(node, {"lock", "pool", "count", "default"});
         if (!textOf(node).empty()) {
             fail(node,
                  "<resource> holds no text; write <resource lock=\"NAME\"/> or "
@@ -473,8 +475,10 @@ private:
             fail(node, "<resource> takes one of lock=\"NAME\" or pool=\"NAME\"");
         }
         if (lock) {
-            if (node.attribute("count")) {
-                fail(node, "<resource lock=...> takes no count: a lock has one holder");
+            if (node.attribute("count") || node.attribute("default")) {
+                fail(node,
+                     "<resource lock=...> takes no count nor default: a lock has one "
+                     "holder");
             }
             resource.lock = expand(node, node.attribute("lock").value());
             if (resource.lock.empty()) {
@@ -510,6 +514,19 @@ private:
                 fail(node, "count=\"" + text + "\": expected a whole number from 1 to 1000");
             }
             resource.count = static_cast<unsigned int>(count);
+        }
+        if (node.attribute("default")) {
+            std::istringstream words(expand(node, node.attribute("default").value()));
+            for (std::string id; words >> id;) {
+                if (!isPoolItemId(id)) {
+                    fail(node, "default=\"...\": item \"" + id +
+                                   "\" is not an id (letters, digits, _, - and .)");
+                }
+                resource.defaults.push_back(id);
+            }
+            if (resource.defaults.empty()) {
+                fail(node, "default=\"\": give the pool's items, e.g. default=\"18831 18841\"");
+            }
         }
         return resource;
     }
