@@ -2,7 +2,7 @@
 # Installs the third-party JUnit readers the tests run on our reports into the build tree
 # (BUILD_DIR/python-tools, a virtual environment of its own): junitparser and xunitparser, from
 # PyPI. Versions are pinned; once installed, nothing is fetched again, so the tests run
-# offline. Called by CMake when the tests are configured, as scripts/node-tools.sh is; nothing
+# offline. Run by ctest as the fixture e2e.python_tools, as scripts/node-tools.sh is; nothing
 # is installed outside the build tree.
 set -euo pipefail
 

@@ -209,10 +209,11 @@ def test_the_robot_example_runs_as_written_from_its_folder(tmp_path, mark):
     assert (folder / "rtf-logs" / "robot" / "simulated_robot.log").is_file()
 
 
-def test_configuring_the_build_for_the_examples_needs_no_npm(tmp_path):
-    """`./run.sh example` configures and builds: that must not reach the npm registry. An `npm`
-    first on PATH records any call; configuring a fresh build tree must not call it (the report
-    checkers are the end-to-end tests' CTest fixture, e2e.node_tools)."""
+def test_configuring_the_build_for_the_examples_needs_no_npm_and_no_pypi(tmp_path):
+    """`./run.sh example` configures and builds: that must not reach the npm registry or PyPI.
+    An `npm` first on PATH records any call; configuring a fresh build tree must not call it,
+    nor make the readers' virtual environment (the report checkers are the end-to-end tests'
+    CTest fixtures, e2e.node_tools and e2e.python_tools)."""
     fake = tmp_path / "fake-bin"
     fake.mkdir()
     calls = tmp_path / "npm-calls.txt"
@@ -225,7 +226,10 @@ def test_configuring_the_build_for_the_examples_needs_no_npm(tmp_path):
          "-DRTF_BUILD_BENCH=OFF"], capture_output=True, text=True, timeout=240, env=env)
     assert configured.returncode == 0, configured.stdout + configured.stderr
     assert not calls.exists(), calls.read_text()
-    # The fixture is there for the tests.
+    assert not (tmp_path / "build" / "python-tools").exists()
+    # The fixtures are there for the tests.
     listed = subprocess.run(["ctest", "--test-dir", str(tmp_path / "build"), "-N", "-R",
-                             "^e2e.node_tools$"], capture_output=True, text=True, timeout=60)
+                             "^e2e.(node|python)_tools$"], capture_output=True, text=True,
+                            timeout=60)
     assert "e2e.node_tools" in listed.stdout, listed.stdout
+    assert "e2e.python_tools" in listed.stdout, listed.stdout
