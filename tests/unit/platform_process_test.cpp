@@ -131,17 +131,32 @@ TEST(ProcessTree, DescendantsIncludeGrandchildren) {
 
 TEST(ProcessTree, DescendantsIncludeChildrenStartedByAnotherThread) {
     // The kernel lists a process's children per thread (/proc/<pid>/task/<tid>/children): a
-    // child forked by a thread other than the main one is a descendant all the same.
-    pid_t child = -1;
-    std::thread starter([&child] {
+    // child forked by a thread other than the main one is a descendant all the same. The
+    // thread lives on while we look (when it ends, its children pass to the main thread).
+    std::mutex mutex;
+    std::condition_variable changed;
+    pid_t child = 0;
+    bool looked = false;
+    std::thread starter([&] {
         SpawnOptions options;
         options.argv = {"/bin/sh", "-c", "exec sleep 300"};
         std::string error;
-        child = spawnProcess(options, error);
+        const pid_t started = spawnProcess(options, error);
+        std::unique_lock<std::mutex> lock(mutex);
+        child = started;
+        changed.notify_all();
+        changed.wait(lock, [&] { return looked; });
     });
+    std::vector<pid_t> found;
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        changed.wait(lock, [&] { return child != 0; });
+        found = descendantsOf(::getpid());
+        looked = true;
+        changed.notify_all();
+    }
     starter.join();
     ASSERT_GT(child, 0);
-    std::vector<pid_t> found = descendantsOf(::getpid());
     EXPECT_NE(std::find(found.begin(), found.end(), child), found.end());
     stopChildGroup(child, 1.0);
 }
