@@ -10,6 +10,9 @@
 #                       end-to-end tests and the fuzz regression inputs under it
 #   ./run.sh coverage   builds build-coverage/ with -DRTF_COVERAGE=ON, runs every test and
 #                       writes build-coverage/coverage/index.html and coverage.txt
+#   ./run.sh bench [OPTIONS...]  every performance figure in one run (bench/perf_bench.py: ours
+#                       beside CTest's, pytest's and RTF 2.0.1's, with ratio and target; about
+#                       15 minutes with its soak run, --soak-count 0 leaves that out)
 #   ./run.sh fuzz [SECONDS [TARGET...]]  builds build-fuzz/ with clang and -DRTF_FUZZ=ON and
 #                       runs every fuzz target (or those named) SECONDS (default 60), two at a
 #                       time; findings in build-fuzz/findings/<target>/
@@ -20,7 +23,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|sanitize|coverage|fuzz [SECONDS [TARGET...]]" >&2
+    echo "usage: $0 example|test|sanitize|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -223,7 +226,7 @@ fuzz_target() {
     return $status
 }
 
-[[ $# -eq 1 || "$1" == fuzz ]] || usage
+[[ $# -eq 1 || "$1" == fuzz || "$1" == bench ]] || usage
 case "$1" in
 example)
     scripts/install-deps.sh
@@ -265,6 +268,13 @@ sanitize)
 coverage)
     scripts/install-deps.sh
     coverage_job
+    ;;
+bench)
+    shift
+    scripts/install-deps.sh
+    configure "$dir"
+    build "$dir"
+    exec python3 bench/perf_bench.py --build "$dir" "$@"
     ;;
 fuzz)
     seconds=${2:-60}

@@ -65,3 +65,13 @@ TEST_F(OutputPaths, TwoOutputsToOneFileAreRefused) {
                                                       " is also the file of --output junit:" + a +
                                                       "; each output needs a file of its own");
 }
+
+TEST_F(OutputPaths, APlugInNamedByManyTestsIsRefusedAsAnOutput) {
+    // Each path is looked at once however many tests name it; it is protected all the same.
+    std::ofstream(dir_ / "plugin.so") << "not really";
+    TestSpec test;
+    test.path = (dir_ / "plugin.so").string();
+    suite_.tests.assign(3, test);
+    const std::string problem = check({{"junit", test.path}});
+    EXPECT_NE(problem.find("is the test " + test.path), std::string::npos) << problem;
+}

@@ -129,6 +129,79 @@ TEST(ProcessTree, DescendantsIncludeGrandchildren) {
     EXPECT_TRUE(waitUntilGone(grandchild, 5));
 }
 
+TEST(ProcessTree, DescendantsIncludeChildrenStartedByAnotherThread) {
+    // The kernel lists a process's children per thread (/proc/<pid>/task/<tid>/children): a
+    // child forked by a thread other than the main one is a descendant all the same. The
+    // thread lives on while we look (when it ends, its children pass to the main thread).
+    std::mutex mutex;
+    std::condition_variable changed;
+    pid_t child = 0;
+    bool looked = false;
+    std::thread starter([&] {
+        SpawnOptions options;
+        options.argv = {"/bin/sh", "-c", "exec sleep 300"};
+        std::string error;
+        const pid_t started = spawnProcess(options, error);
+        std::unique_lock<std::mutex> lock(mutex);
+        child = started;
+        changed.notify_all();
+        changed.wait(lock, [&] { return looked; });
+    });
+    std::vector<pid_t> found;
+    {
+        std::unique_lock<std::mutex> lock(mutex);
+        changed.wait(lock, [&] { return child != 0; });
+        found = descendantsOf(::getpid());
+        looked = true;
+        changed.notify_all();
+    }
+    starter.join();
+    ASSERT_GT(child, 0);
+    EXPECT_NE(std::find(found.begin(), found.end(), child), found.end());
+    stopChildGroup(child, 1.0);
+}
+
+TEST(ProcessTree, DescendantsLeaveZombiesOut) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::_exit(0);
+    }
+    // Until reaped, the child is a zombie: nothing to stop, so not a descendant.
+    siginfo_t info{};
+    ASSERT_EQ(::waitid(P_PID, static_cast<id_t>(child), &info, WEXITED | WNOWAIT), 0);
+    std::vector<pid_t> found = descendantsOf(::getpid());
+    EXPECT_EQ(std::find(found.begin(), found.end(), child), found.end());
+    int status;
+    EXPECT_TRUE(waitChild(child, 5, status));
+    EXPECT_TRUE(WIFEXITED(status));
+}
+
+TEST(WaitChild, ReturnsTheStatusOfAChildThatEndsWithinTheTimeout) {
+    SpawnOptions options;
+    options.argv = {"/bin/sh", "-c", "sleep 0.05; exit 3"};
+    std::string error;
+    const pid_t child = spawnProcess(options, error);
+    ASSERT_GT(child, 0) << error;
+    int status = 0;
+    ASSERT_TRUE(waitChild(child, 10, status));
+    EXPECT_TRUE(WIFEXITED(status));
+    EXPECT_EQ(WEXITSTATUS(status), 3);
+}
+
+TEST(WaitChild, GivesUpAtTheTimeoutAndLeavesTheChildToBeWaitedFor) {
+    SpawnOptions options;
+    options.argv = {"/bin/sh", "-c", "exec sleep 300"};
+    std::string error;
+    const pid_t child = spawnProcess(options, error);
+    ASSERT_GT(child, 0) << error;
+    int status = 0;
+    EXPECT_FALSE(waitChild(child, 0.05, status));
+    ::kill(child, SIGKILL);
+    ASSERT_TRUE(waitChild(child, 10, status));
+    EXPECT_TRUE(WIFSIGNALED(status));
+}
+
 TEST(ProcessTree, StopChildGroupKillsAGroupThatIgnoresSigterm) {
     pid_t grandchild;
     pid_t child = spawnTree(true, grandchild);

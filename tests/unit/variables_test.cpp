@@ -54,6 +54,18 @@ TEST(Variables, BothEscapesWriteALiteralDollarBrace) {
     EXPECT_EQ(variables.expand(escape("keep ${this} and $${that}")), "keep ${this} and $${that}");
 }
 
+TEST(Variables, CopiesTheTextAroundUsesAndLoneDollarsAsItIs) {
+    VariableTable variables = table({{"a", "A", Source::Suite, ""}});
+    EXPECT_EQ(variables.expand(""), "");
+    EXPECT_EQ(variables.expand("no use at all"), "no use at all");
+    EXPECT_EQ(variables.expand("${a}"), "A");
+    EXPECT_EQ(variables.expand("$"), "$");
+    EXPECT_EQ(variables.expand("x$"), "x$");
+    EXPECT_EQ(variables.expand("$$$${a}$"), "$$${a}$");
+    EXPECT_EQ(variables.expand("before ${a} $ between ${a}${a} after$"),
+              "before A $ between AA after$");
+}
+
 TEST(Variables, ReadsTheEnvironment) {
     ::setenv("RTF_VARIABLES_TEST", "here", 1);
     ::unsetenv("RTF_VARIABLES_TEST_UNSET");
