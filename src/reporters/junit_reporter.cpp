@@ -122,11 +122,17 @@ Counts countsOf(const SuiteRecord& suite) {
 void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
                     bool verbose) {
     out += "    <testcase";
-    out += attr("name", test.name);
+    // classname/name is the test's id (README: "Test ids"), so CI history follows a test
+    // across workspaces; the name it gave itself is a property beside.
+    out += attr("name", test.reportName());
     out += attr("classname", suiteName);
     out += attr("time", number(test.duration));
     out += attr("status", toString(test.status));
     std::string inner;
+    if (!test.key.empty()) {
+        inner += "      <properties>\n        <property" + attr("name", "rtf.name") +
+                 attr("value", test.name) + "/>\n      </properties>\n";
+    }
     const ResultEvent* reason = test.reason();
     const std::string message = reason ? reason->message.toString() : "";
     if (test.status == TestStatus::Skipped) {

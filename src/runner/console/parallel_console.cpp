@@ -54,8 +54,8 @@ public:
         } else {
             text += word;
         }
-        text += " " + suite_.getName() + " :: " + (test != nullptr ? test->getName() : "") + "  (" +
-                reporters::seconds(took) + ")";
+        text += " " + suite_.getName() + " :: " + shownAs(test) + "  (" + reporters::seconds(took) +
+                ")";
         console_.line(text);
         for (const auto& said : open.lines) {
             console_.line(said);
@@ -99,9 +99,14 @@ public:
             found->second.lines.push_back(std::move(shown));
         }
     }
+    void renameTest(const Test* test, const std::string& name) override {
+        auto found = open_().find(test);
+        if (found != open_().end()) {
+            found->second.name = name;
+        }
+    }
     void retryTest(const Test* test, TestMessage msg) override {
-        console_.line("  retry       " + suite_.getName() +
-                      " :: " + (test != nullptr ? test->getName() : "") + ": " +
+        console_.line("  retry       " + suite_.getName() + " :: " + shownAs(test) + ": " +
                       reporters::messageText(msg));
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts + 1;
@@ -126,6 +131,15 @@ public:
 
 private:
     std::map<const Test*, Open>& open_() { return console_.open_; }
+    // "tests/arith.lua (ArmTest)": its id, and the name it gave itself beside.
+    std::string shownAs(const Test* test) {
+        if (test == nullptr) {
+            return "";
+        }
+        auto found = open_().find(test);
+        const bool renamed = found != open_().end() && !found->second.name.empty();
+        return reporters::shownAs(test->getKey(), renamed ? found->second.name : test->getName());
+    }
 
     // A message of `kind`: its word and the state it gives come from the tables.
     void raise(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
