@@ -53,7 +53,7 @@ struct TestRecord {
     // absolute path (the name a loader gives a script it loaded); else empty.
     std::string shownName() const {
         return key.empty() || name == key || (!name.empty() && name[0] == '/') ? std::string()
-                                                                                : name;
+                                                                               : name;
     }
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
