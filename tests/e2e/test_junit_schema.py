@@ -90,7 +90,8 @@ def _first_passing(root):
 
 def _flaky(case):
     attempt = ET.Element("flakyFailure", {"message": "m", "type": "failed"})
-    case.insert(0, attempt)
+    # After the test's <properties> (its display name), which come first.
+    case.insert(1 if len(case) and case[0].tag == "properties" else 0, attempt)
     return attempt
 
 

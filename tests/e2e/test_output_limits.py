@@ -220,7 +220,10 @@ def test_a_test_renaming_itself_to_megabytes_keeps_4_kib_of_its_name(tmp_path, i
     validate_junit(files["xml"])
     validate_ctrf(files["json"])
     validate_tap(files["tap"])
-    name = next(ET.parse(files["xml"]).getroot().iter("testcase")).get("name")
+    # The display name, kept beside the id (README "Test ids") as <property name="rtf.name">.
+    case = next(ET.parse(files["xml"]).getroot().iter("testcase"))
+    assert case.get("name") == "renaming.py", case.get("name")
+    name = case.find("properties/property[@name='rtf.name']").get("value")
     assert name.startswith("n99 n99 ") and name.endswith(
         " [... 3995904 more bytes of this name dropped]"), name[-200:]
     assert len(name.encode()) < 4200, len(name)

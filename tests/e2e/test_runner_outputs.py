@@ -41,7 +41,9 @@ def test_junit_output_validates_and_carries_failures_and_output(tmp_path):
     assert run.returncode == 1, run
     validate_junit(out)
     root = ET.parse(out).getroot()
-    cases = {case.get("name"): case for case in root.iter("testcase")}
+    # By the name each gives itself, kept beside the id as <property name="rtf.name">.
+    cases = {case.find("properties/property[@name='rtf.name']").get("value"): case
+             for case in root.iter("testcase")}
     assert set(cases) >= {"PassingTest", "FailingTest", "PrintingTest"}, cases.keys()
     assert cases["FailingTest"].find("failure") is not None
     assert cases["PassingTest"].find("failure") is None
