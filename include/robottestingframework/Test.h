@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include <robottestingframework/TestMessage.h>
 
@@ -24,6 +25,12 @@ public:
     const std::string getName() const { return name_; }
     void setDescription(std::string description) { description_ = std::move(description); }
     const std::string getDescription() const { return description_; }
+
+    // Beyond RTF 2.x: the test's id in its suite (README: "Test ids"), which the runner's plan
+    // gives and every report names the test by; the name above is then only shown beside it.
+    // Empty (a test used without a plan): reports name the test by its name.
+    void setKey(std::string key) { key_ = std::move(key); }
+    const std::string& getKey() const { return key_; }
 
     // Beyond RTF 2.x: a number unique in the process, which every event about the test carries
     // and listeners key by. The runner's plan gives it; a test used without a plan gets it the
@@ -50,6 +57,7 @@ public:
 private:
     std::string name_;
     std::string description_;
+    std::string key_;
     bool critical_ = false;
     TestMessage criticalError_;
     mutable std::atomic<std::uint64_t> id_{0};

@@ -34,7 +34,8 @@ struct TestRepetition {
 // One test as the outputs show it.
 struct TestRecord {
     std::uint64_t id = 0;  // the test's Test::getId()
-    std::string name;
+    std::string key;       // its id in its suite (Test::getKey()); empty without a plan
+    std::string name;      // the name it gives itself, shown beside the key
     std::string description;
     TestStatus status = TestStatus::Passed;
     double start = 0;                 // seconds since the collector started
@@ -46,6 +47,14 @@ struct TestRecord {
     std::vector<TestAttempt> attempts;
     // Its repetitions in order (of the last attempt), when it runs several times; else empty.
     std::vector<TestRepetition> repetitions;
+    // What every report names the test by: its key, else (a test run without a plan) its name.
+    const std::string& reportName() const { return key.empty() ? name : key; }
+    // The name to show beside reportName(): its own name when that differs and is not an
+    // absolute path (the name a loader gives a script it loaded); else empty.
+    std::string shownName() const {
+        return key.empty() || name == key || (!name.empty() && name[0] == '/') ? std::string()
+                                                                               : name;
+    }
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
 };
@@ -81,6 +90,9 @@ public:
     std::size_t suiteCount() const;
     std::size_t passedSuiteCount() const;
     std::size_t failedSuiteCount() const;
+    // Beyond RTF 2.x: the suites whose fixture failed (set up, tear down or collapse), each
+    // once; the closing line counts them as failed, so it agrees with the exit status.
+    std::size_t failedFixtureCount() const;
     // Forgets everything collected (events, records, counts) and restarts the clock, so one
     // collector can serve several runs.
     void reset();
@@ -177,6 +189,7 @@ private:
     std::size_t counts_[8] = {};
     std::size_t suitesRun_ = 0;
     std::size_t suitesFailed_ = 0;
+    std::size_t fixturesFailed_ = 0;
 };
 
 }  // namespace robottestingframework

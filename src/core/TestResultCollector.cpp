@@ -67,6 +67,7 @@ void TestResultCollector::reset() {
     outputKept_ = 0;
     suitesRun_ = 0;
     suitesFailed_ = 0;
+    fixturesFailed_ = 0;
 }
 
 double TestResultCollector::now() const {
@@ -111,6 +112,10 @@ std::size_t TestResultCollector::passedSuiteCount() const {
 
 std::size_t TestResultCollector::failedSuiteCount() const {
     return suitesFailed_;
+}
+
+std::size_t TestResultCollector::failedFixtureCount() const {
+    return fixturesFailed_;
 }
 
 SuiteRecord& TestResultCollector::currentSuite() {
@@ -303,6 +308,7 @@ void TestResultCollector::startTest(const Test* test) {
     if (test != nullptr) {
         record.id = test->getId();
         record.name = test->getName();
+        record.key = test->getKey();
         record.description = test->getDescription();
     }
     record.start = time;
@@ -403,6 +409,9 @@ void TestResultCollector::endTestSuite(const TestSuite* suite) {
     ++suitesRun_;
     if (openSuites_.back().failed > 0 || !record.succeeded()) {
         ++suitesFailed_;
+    }
+    if (record.fixtureFailed) {
+        ++fixturesFailed_;
     }
     openSuites_.pop_back();
 }

@@ -148,7 +148,7 @@ void ConsoleListener::startTest(const Test* test) {
     record_.startTest(test);
     test_ = test != nullptr ? test->getId() : 0;
     if (verbose_ && test != nullptr) {
-        line("  run         " + test->getName());
+        line("  run         " + reporters::shownAs(test->getKey(), test->getName()));
     }
 }
 
@@ -185,7 +185,8 @@ void ConsoleListener::endTest(const Test* test) {
     } else {
         text += word;
     }
-    text += " " + record.name + "  (" + reporters::seconds(record.duration) + ")";
+    text += " " + reporters::shownAs(record.key, record.name) + "  (" +
+            reporters::seconds(record.duration) + ")";
     line(text);
     if (verbose_) {
         return;  // its messages were printed as they came

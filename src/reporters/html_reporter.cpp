@@ -154,7 +154,7 @@ const char* const tail = R"html(</script>
     const box = el("details", "test");
     const head = el("summary");
     head.appendChild(el("span", "state " + colour(t.state), t.state));
-    head.appendChild(el("span", "name", t.name));
+    head.appendChild(el("span", "name", t.shown ? t.name + " (" + t.shown + ")" : t.name));
     head.appendChild(el("span", "time", secs(t.duration)));
     box.appendChild(head);
     box.addEventListener("toggle", () => {
@@ -327,7 +327,12 @@ std::string HtmlReporter::document() {
             out += firstTest ? "\n" : ",\n";
             firstTest = false;
             out += "{\"id\":" + std::to_string(test.id);
-            out += ",\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
+            // The name is its id in its suite; "shown" the name it gave itself, beside it.
+            const std::string& name = test.reportName();
+            out += ",\"name\":" + jsonString(name.empty() ? "unnamed test" : name);
+            if (!test.shownName().empty()) {
+                out += ",\"shown\":" + jsonString(test.shownName());
+            }
             out += ",\"state\":" + jsonString(toString(test.status));
             out += ",\"duration\":" + number(test.duration);
             if (!test.description.empty()) {

@@ -20,7 +20,7 @@ using Kind = ResultEvent::Kind;
 // the document). report_reader.cpp reads it, and the "rtf" of earlier versions.
 const char* const extension = "\"robotology.rtf\"";
 
-// CTRF's five statuses; the state itself is kept in extra.rtf.state.
+// CTRF's five statuses; the state itself is kept in extra["robotology.rtf"].state.
 const char* ctrfStatus(TestStatus status) {
     switch (status) {
         case TestStatus::Passed:
@@ -72,7 +72,10 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
     const long long start = origin + milliseconds(test.start);
     out += "{\"testId\":\"" + testId + "\"";
     out += ",\"executionId\":\"" + std::to_string(test.id) + "\"";
-    out += ",\"name\":" + jsonString(test.name.empty() ? "unnamed test" : test.name);
+    // The name is the test's id in its suite, the same in every workspace (README: "Test ids");
+    // extra["robotology.rtf"]: id is its whole id, name the name the test gave itself.
+    const std::string& name = test.reportName();
+    out += ",\"name\":" + jsonString(name.empty() ? "unnamed test" : name);
     out += ",\"status\":\"" + std::string(ctrfStatus(test.status)) + "\"";
     out += ",\"duration\":" + std::to_string(milliseconds(test.duration));
     out += ",\"start\":" + std::to_string(start);
@@ -118,6 +121,11 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
     out += std::string(",\"flaky\":") + (test.status == TestStatus::Flaky ? "true" : "false");
     out += ",\"extra\":{" + std::string(extension) +
            ":{\"state\":" + jsonString(toString(test.status));
+    const std::string fullId = test.key.empty() ? std::string() : suite.name + "/" + test.key;
+    if (!fullId.empty()) {
+        out += ",\"id\":" + jsonString(fullId);
+    }
+    out += ",\"name\":" + jsonString(test.name);
     if (!test.description.empty()) {
         out += ",\"description\":" + jsonString(test.description);
     }
@@ -129,12 +137,16 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
         out += ",\"repetitions\":[";
         for (std::size_t i = 0; i < test.repetitions.size(); ++i) {
             const TestRepetition& repetition = test.repetitions[i];
-            out += std::string(i == 0 ? "" : ",") + "{\"id\":\"" +
-                   repetitionId(test.id, repetition.index) +
-                   "\",\"index\":" + std::to_string(repetition.index) +
-                   ",\"count\":" + std::to_string(repetition.count) +
-                   ",\"state\":" + jsonString(toString(repetition.status)) +
-                   ",\"duration\":" + std::to_string(milliseconds(repetition.duration));
+            out +=
+                std::string(i == 0 ? "" : ",") + "{\"id\":\"" +
+                repetitionId(test.id, repetition.index) + "\"" +
+                (fullId.empty()
+                     ? std::string()
+                     : ",\"name\":" + jsonString(fullId + "#" + std::to_string(repetition.index))) +
+                ",\"index\":" + std::to_string(repetition.index) +
+                ",\"count\":" + std::to_string(repetition.count) +
+                ",\"state\":" + jsonString(toString(repetition.status)) +
+                ",\"duration\":" + std::to_string(milliseconds(repetition.duration));
             for (const ResultEvent& event : test.events) {
                 if (event.repetition == repetition.index &&
                     stateOf(event.kind) != TestStatus::Passed &&

@@ -178,7 +178,10 @@ void appendAttempt(std::string& inner, const char* element, const TestAttempt& a
 void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
                     bool verbose) {
     out += "    <testcase";
-    out += attr("name", test.name);
+    // classname/name is the test's id (README: "Test ids"), so CI history follows a test
+    // across workspaces; the name it gave itself is a property of the suite ("rtf.name.S.T":
+    // junit-10.xsd allows no <properties> in a <testcase>).
+    out += attr("name", test.reportName());
     out += attr("classname", suiteName);
     out += attr("time", number(test.duration));
     std::string inner;
@@ -221,8 +224,9 @@ void appendTestCase(std::string& out, const TestRecord& test, const std::string&
 
 // A suite's <properties>. The shard that wrote the report and a --rerun-failed run, on the
 // first suite only (<testsuites> may hold no properties in the readers' schemas, and
-// xunitparser refuses a property name twice in a document); then each test in a state JUnit
-// has no word for: "rtf.state.S.T" (the test's place, as CTRF's testId) = its state.
+// xunitparser refuses a property name twice in a document); then, per test (S.T its place, as
+// CTRF's testId): "rtf.name.S.T" = the name it gave itself (beside its id, the testcase's
+// name=), and "rtf.state.S.T" = its state when JUnit has no word for it.
 std::string suiteProperties(const ReporterSettings& settings, bool first, const SuiteRecord* suite,
                             std::size_t place) {
     std::string text;
@@ -240,9 +244,12 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
         std::size_t index = 0;
         for (const TestRecord& test : suite->tests) {
             ++index;
+            const std::string at = std::to_string(place) + "." + std::to_string(index);
+            if (!test.key.empty()) {
+                property("rtf.name." + at, test.name);
+            }
             if (needsStateProperty(test.status)) {
-                property("rtf.state." + std::to_string(place) + "." + std::to_string(index),
-                         toString(test.status));
+                property("rtf.state." + at, toString(test.status));
             }
         }
     }

@@ -56,6 +56,15 @@ std::vector<std::string> outputLines(const std::string& text) {
     return lines;
 }
 
+std::string shownAs(const std::string& key, const std::string& name) {
+    // An absolute path is the name a loader gives a script it loaded (RTF 2.x), not one the test
+    // chose: beside the id it would only show the workspace's path.
+    if (key.empty() || name.empty() || key == name || name[0] == '/') {
+        return key.empty() ? name : key;
+    }
+    return key + " (" + name + ")";
+}
+
 std::string seconds(double value) {
     // Printed for every test: integer formatting of the milliseconds is much cheaper than %f.
     const double millis = value * 1000.0 + 0.5;
@@ -100,8 +109,11 @@ std::vector<std::string> summaryLines(const TestResultCollector& collector) {
 }
 
 std::string closingLine(const TestResultCollector& collector) {
+    // A suite whose fixture failed counts once as failed (its tests were not run, and are
+    // skipped), so the line says a failure whenever the exit status does.
     std::string line = std::to_string(collector.passedCount()) + " passed, " +
-                       std::to_string(collector.failedCount()) + " failed";
+                       std::to_string(collector.failedCount() + collector.failedFixtureCount()) +
+                       " failed";
     if (collector.skippedCount() > 0) {
         line += ", " + std::to_string(collector.skippedCount()) + " skipped";
     }

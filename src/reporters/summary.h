@@ -34,12 +34,17 @@ std::string messageText(const TestMessage& msg);
 std::string traceText(const std::vector<ResultEvent>& events);
 // A test's output as the consoles show it under the test: one "      | line" per line.
 std::vector<std::string> outputLines(const std::string& text);
+// How the consoles and the text report name a test: its id in its suite, then the name it gives
+// itself in parentheses when that differs ("tests/arith.lua (ArmTest)"); either alone when the
+// other is empty, and the id alone when the name is an absolute path (a loader's default).
+std::string shownAs(const std::string& key, const std::string& name);
 // "0.002 s".
 std::string seconds(double value);
 
 // The summary lines (tests per state, suites, wall time), without the closing line.
 std::vector<std::string> summaryLines(const TestResultCollector& collector);
-// "N passed, N failed" and ", N skipped" when there are any.
+// "N passed, N failed" and ", N skipped" when there are any; a suite whose fixture failed counts
+// once as failed.
 std::string closingLine(const TestResultCollector& collector);
 
 }  // namespace reporters

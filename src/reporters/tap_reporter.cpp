@@ -175,6 +175,10 @@ void TapReporter::endTestSuite(const TestSuite* /*suite*/) {
 }
 
 void TapReporter::renameTest(const Test* test, const std::string& name) {
+    // A test with an id is described by it (README: "Test ids"), whatever it calls itself.
+    if (test != nullptr && !test->getKey().empty()) {
+        return;
+    }
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->id == idOf(test)) {
             it->name = name;
@@ -184,8 +188,10 @@ void TapReporter::renameTest(const Test* test, const std::string& name) {
 }
 
 void TapReporter::startTest(const Test* test) {
-    OpenTest open{idOf(test), test != nullptr ? test->getName() : "", TestStatus::Passed, {}, {},
-                  0};
+    const std::string name = test == nullptr          ? ""
+                             : test->getKey().empty() ? test->getName()
+                                                      : test->getKey();
+    OpenTest open{idOf(test), name, TestStatus::Passed, {}, {}, 0};
     if (test != nullptr && retrying_ != 0 && idOf(test) == retrying_) {
         open.retries = retryCount_;
     }

@@ -64,8 +64,8 @@ std::string TextReporter::document() {
         for (const TestRecord& test : suite.tests) {
             char word[16];
             std::snprintf(word, sizeof(word), "%-11s", statusWord(test.status));
-            out +=
-                "  " + std::string(word) + " " + test.name + "  (" + seconds(test.duration) + ")\n";
+            out += "  " + std::string(word) + " " + shownAs(test.key, test.name) + "  (" +
+                   seconds(test.duration) + ")\n";
             appendEvents(out, test.events, verbose, "      ");
             if (verbose) {
                 appendOutput(out, test.output, "      ");

@@ -1,5 +1,6 @@
 // RTF_web's live page: a RunView filled by the run's events and served by a WebServer.
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <robottestingframework/TestSuite.h>
@@ -58,6 +59,16 @@ private:
         view.addMessage(idOf(test), toString(kind), msg, stateOf(kind));
     }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
+    // "tests/arith.lua (ArmTest)": the test's id in its suite and the name it gives itself
+    // (README: "Test ids"), as the console shows it.
+    static std::string shownAs(const Test* test, const std::string& name) {
+        const std::string& key = test->getKey();
+        // An absolute path is a loader's default name, not one the test chose.
+        if (key.empty() || key == name || name.empty() || name[0] == '/') {
+            return key.empty() ? name : key;
+        }
+        return key + " (" + name + ")";
+    }
 
     RunView view;
     WebServer server;
@@ -119,7 +130,7 @@ void ServedLivePage::startRepetition(const Test* test, unsigned int index, unsig
 }
 
 void ServedLivePage::startTest(const Test* test) {
-    view.startTest(idOf(test), test != nullptr ? test->getName() : std::string());
+    view.startTest(idOf(test), test != nullptr ? shownAs(test, test->getName()) : std::string());
 }
 
 void ServedLivePage::endTest(const Test* test) {
@@ -127,14 +138,14 @@ void ServedLivePage::endTest(const Test* test) {
 }
 
 void ServedLivePage::renameTest(const Test* test, const std::string& name) {
-    view.renameTest(idOf(test), name);
+    view.renameTest(idOf(test), test != nullptr ? shownAs(test, name) : name);
 }
 
 void ServedLivePage::startTestSuite(const TestSuite* suite) {
     std::vector<RunView::Planned> tests;
     if (suite != nullptr) {
         for (const Test* test : suite->tests()) {
-            tests.push_back({test->getId(), test->getName()});
+            tests.push_back({test->getId(), shownAs(test, test->getName())});
         }
     }
     view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);

@@ -188,6 +188,23 @@ def junit_state(case):
     return "passed"
 
 
+def junit_display_names(root):
+    """{<testcase>: the name the test gave itself}, from its suite's "rtf.name.S.T" property
+    (S the suite's id + 1, T the test's place in it, the fixtures testcase not counted): the
+    name beside the id (README "Test ids"), where junit-10.xsd lets a report keep it."""
+    names = {}
+    for suite in root.iter("testsuite"):
+        given = {p.get("name"): p.get("value") for p in suite.findall("properties/property")}
+        place = int(suite.get("id", "0")) + 1
+        cases = [c for c in suite.findall("testcase")
+                 if (c.find("error") is None or c.find("error").get("type") != "fixture")]
+        for index, case in enumerate(cases, start=1):
+            name = given.get(f"rtf.name.{place}.{index}")
+            if name is not None:
+                names[case] = name
+    return names
+
+
 def pytest_configure(config):
     config.addinivalue_line("markers", "edited_reports: the test edits or forges reports on "
                             "purpose; its reports are not all read by the JUnit readers")

@@ -20,7 +20,7 @@ from conftest import (BUILD_DIR, SOURCE_DIR, run_runner, validate_ctrf, validate
 EXAMPLES = BUILD_DIR / "examples"
 MY_TEST = EXAMPLES / "libMyTest.so"
 
-# Suite file -> the tests it must pass, by the name the runner reports.
+# Suite file -> the tests it must pass, by the name each gives itself (shown beside its id).
 SUITES = {
     "example.xml": ["MyTest", "MyTest"],
     "scripts.xml": ["python example", "lua example", "ruby example", "tap example"],
@@ -87,14 +87,17 @@ def check_passed(run, junit, names):
     """Each name passed (console and JUnit), as many times as listed; nothing else ran."""
     assert run.returncode == 0, run
     for name in set(names):
-        lines = re.findall(rf"^\s*passed\s+{re.escape(name)}\s+\(", run.stdout, re.MULTILINE)
+        # "passed  ID (NAME)  (0.1 s)", or "passed  NAME  (0.1 s)" when the id is the name.
+        lines = re.findall(rf"^\s*passed\s+(?:.*? \()?{re.escape(name)}\)?\s+\(", run.stdout,
+                           re.MULTILINE)
         assert len(lines) == names.count(name), f"{name}: {lines}\n{run}"
     assert re.search(rf"^{len(names)} passed, 0 failed$", run.stdout, re.MULTILINE), run
     validate_junit(junit)
     xml = junit.read_text()
     assert xml.count("<testcase") == len(names), xml
     for name in set(names):
-        assert xml.count(f'name="{name}"') >= names.count(name), xml
+        # The id's name="...", or the display name's <property name="rtf.name.S.T" value="...">.
+        assert xml.count(f'name="{name}"') + xml.count(f'value="{name}"') >= names.count(name), xml
     assert "<failure" not in xml and "<error" not in xml and "<skipped" not in xml, xml
 
 

@@ -349,10 +349,13 @@ def test_a_script_that_names_itself_is_named_so_in_every_output(tmp_path, isolat
     junit = tmp_path / "out.xml"
     text = tmp_path / "out.txt"
     r = run_runner("--isolation", isolation, "--test", script, "--output", f"junit:{junit}",
-                   "--output", f"text:{text}", timeout=60)
+                   "--output", f"text:{text}", timeout=60, cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves the language out")
     assert r.returncode == 1, r
-    assert console_line(r.stdout, "renamed by the script").split()[0] == "FAILED", r
-    assert list(junit_cases(junit)) == ["renamed by the script"]
+    # Shown beside its id (the file given, README "Test ids"), which the reports name it by.
+    shown = f"renaming.{ext} (renamed by the script)"
+    assert console_line(r.stdout, shown).split()[0] == "FAILED", r
+    assert list(junit_cases(junit)) == [f"renaming.{ext}"]
+    assert 'value="renamed by the script"' in junit.read_text()
     assert "renamed by the script" in text.read_text()

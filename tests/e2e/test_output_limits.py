@@ -11,7 +11,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import (RUNNER, validate_ctrf, validate_junit, validate_tap)
+from conftest import (RUNNER, junit_display_names, validate_ctrf, validate_junit, validate_tap)
 
 MB = 1000 * 1000
 # The runner's peak resident memory while the test prints 200 MB. It keeps 64 KiB of a test's
@@ -220,7 +220,11 @@ def test_a_test_renaming_itself_to_megabytes_keeps_4_kib_of_its_name(tmp_path, i
     validate_junit(files["xml"])
     validate_ctrf(files["json"])
     validate_tap(files["tap"])
-    name = next(ET.parse(files["xml"]).getroot().iter("testcase")).get("name")
+    # The display name, kept beside the id (README "Test ids") as the suite's rtf.name.S.T.
+    root = ET.parse(files["xml"]).getroot()
+    case = next(root.iter("testcase"))
+    assert case.get("name") == "renaming.py", case.get("name")
+    name = junit_display_names(root)[case]
     assert name.startswith("n99 n99 ") and name.endswith(
         " [... 3995904 more bytes of this name dropped]"), name[-200:]
     assert len(name.encode()) < 4200, len(name)

@@ -91,7 +91,7 @@ def test_page_from_file_url_filters_searches_and_shows_test_text_as_text(tmp_pat
     Select(browser.find_element(By.ID, "filter")).select_by_value("failing")
     rows = shown_rows(browser)
     assert sorted(r.find_element(By.CLASS_NAME, "name").text for r in rows) == \
-        ["FailingTest", "NastyTextTest <&>"]
+        ["failing_test.so (FailingTest)", "nasty_text_test.so (NastyTextTest <&>)"]
     assert "2 of 6 tests shown" in browser.find_element(By.ID, "shown").text
 
     # A failing test opened: its message with file:line, what it printed.
@@ -106,7 +106,8 @@ def test_page_from_file_url_filters_searches_and_shows_test_text_as_text(tmp_pat
     search.clear()
     search.send_keys("printing")
     rows = shown_rows(browser)
-    assert [r.find_element(By.CLASS_NAME, "name").text for r in rows] == ["PrintingTest"]
+    assert [r.find_element(By.CLASS_NAME, "name").text for r in rows] == [
+        "printing_test.so (PrintingTest)"]
     assert "printf line from the test" in open_row(browser, rows[0])
 
     slowest = browser.find_elements(By.CSS_SELECTOR, "#slowest li")

@@ -4,7 +4,8 @@ from conftest import plugin, run_runner, validate_ctrf, validate_junit, validate
 
 
 def by_name(report):
-    return {test["name"].split(" ")[0]: test for test in report["results"]["tests"]}
+    # By the name each test gives itself (extra["robotology.rtf"].name); "name" is its id (README "Test ids").
+    return {test["extra"]["robotology.rtf"]["name"].split(" ")[0]: test for test in report["results"]["tests"]}
 
 
 def test_ctrf_report_validates_with_states_messages_places_and_output(tmp_path, suite_file):
@@ -42,7 +43,7 @@ def test_ctrf_report_validates_with_states_messages_places_and_output(tmp_path, 
     nasty = tests["NastyTextTest"]
     assert "<script>alert(1)</script>" in nasty["message"], nasty
     bad = tests["BadBytesTest"]
-    assert "\ufffd" in bad["name"] and "\ufffd" in bad["message"], bad
+    assert "\ufffd" in bad["extra"]["robotology.rtf"]["name"] and "\ufffd" in bad["message"], bad
     assert "</script>" in bad["message"], bad
     # '<' is escaped in the file, so the same text can sit inside an HTML page.
     assert "</script>" not in out.read_text(), "unescaped '<'"

@@ -13,14 +13,14 @@ def closing_line(run):
 def test_passing_plugin_exits_zero(tmp_path):
     run = run_runner("--test", plugin("passing_test"), cwd=tmp_path)
     assert run.returncode == 0, run
-    assert re.search(r"^\s*passed\s+PassingTest\b", run.stdout, re.M), run
+    assert re.search(r"^\s*passed\s+passing_test.so \(PassingTest\)", run.stdout, re.M), run
     assert closing_line(run) == "1 passed, 0 failed", run
 
 
 def test_failing_plugin_exits_one_and_shows_the_failure(tmp_path):
     run = run_runner("-t", plugin("passing_test"), "-t", plugin("failing_test"), cwd=tmp_path)
     assert run.returncode == 1, run
-    assert re.search(r"^\s*FAILED\s+FailingTest\b", run.stdout, re.M), run
+    assert re.search(r"^\s*FAILED\s+failing_test.so \(FailingTest\)", run.stdout, re.M), run
     assert "two and two make five" in run.stdout, run
     assert closing_line(run) == "1 passed, 1 failed", run
 
@@ -33,7 +33,8 @@ def test_suite_runs_tests_in_document_order(tmp_path, suite_file):
 </suite>""")
     run = run_runner("-s", suite, cwd=tmp_path)
     assert run.returncode == 1, run
-    names = re.findall(r"^\s*(?:passed|FAILED)\s+(\w+)", run.stdout, re.M)
+    # "passed  ID (NAME)": the name each test gives itself, beside its id.
+    names = re.findall(r"^\s*(?:passed|FAILED)\s+\S+ \((\w+)\)", run.stdout, re.M)
     assert names == ["FailingTest", "PassingTest", "FailingTest"], run
     assert "suite ordered" in run.stdout, run
     assert closing_line(run) == "1 passed, 2 failed", run

@@ -1,7 +1,7 @@
 """Result files: text and JUnit (valid against schemas/junit.xsd), what tests print."""
 import xml.etree.ElementTree as ET
 
-from conftest import plugin, run_runner, validate_junit
+from conftest import junit_display_names, plugin, run_runner, validate_junit
 
 
 def test_default_output_is_result_txt_unless_no_output(tmp_path):
@@ -41,7 +41,8 @@ def test_junit_output_validates_and_carries_failures_and_output(tmp_path):
     assert run.returncode == 1, run
     validate_junit(out)
     root = ET.parse(out).getroot()
-    cases = {case.get("name"): case for case in root.iter("testcase")}
+    # By the name each gives itself, kept beside the id as the suite's rtf.name.S.T property.
+    cases = {name: case for case, name in junit_display_names(root).items()}
     assert set(cases) >= {"PassingTest", "FailingTest", "PrintingTest"}, cases.keys()
     assert cases["FailingTest"].find("failure") is not None
     assert cases["PassingTest"].find("failure") is None

@@ -108,10 +108,15 @@ def test_the_suite_of_a_selected_test_sets_its_fixtures_up(tmp_path, marker):
 
 
 def test_nothing_selected_is_said(tmp_path):
+    # An empty selection is an error of its own (exit 5, issue 20), unless --allow-empty.
     run = run_runner(*suites(tmp_path), "--tag", "nothing", "--no-output", cwd=tmp_path)
+    assert run.returncode == 5, run
+    assert "no test is selected" in run.stderr, run
+    assert ran(run) == [], run
+    run = run_runner(*suites(tmp_path), "--tag", "nothing", "--no-output", "--allow-empty",
+                     cwd=tmp_path)
     assert run.returncode == 0, run
     assert "warning: no test is selected" in run.stderr, run
-    assert ran(run) == [], run
 
 
 @pytest.mark.parametrize("args, expected", [

@@ -9,7 +9,7 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import run_runner, validate_ctrf, validate_junit, validate_tap
+from conftest import junit_display_names, run_runner, validate_ctrf, validate_junit, validate_tap
 from web_run import WebRun, request
 
 TWIN = """import robottestingframework
@@ -38,6 +38,9 @@ class TestCase:
 # (name, failed, the problem it must carry) in run order.
 EXPECTED = [("twin", True, "the failing twin fails"), ("twin", False, None),
             ("renamed mid-run", True, "fails before the rename")]
+# Each one's id in the suite (README: "Test ids"): what every output names it by; the name it
+# gives itself is shown beside it on the console and kept in the reports.
+IDS = ["twin.py[--fail]", "twin.py", "renaming.py"]
 
 
 def result_lines(text):
@@ -66,18 +69,22 @@ def test_same_named_tests_and_a_mid_run_rename_are_attributed_right_everywhere(
                    "--output", f"tap:{out['tap']}", "--output", f"json:{out['json']}",
                    "--output", f"html:{out['html']}", cwd=tmp_path, timeout=90)
     assert r.returncode == 1, r
-    expected_lines = [("FAILED" if failed else "passed", name) for name, failed, _ in EXPECTED]
+    expected_lines = [("FAILED" if failed else "passed", f"{key} ({name})")
+                      for key, (name, failed, _) in zip(IDS, EXPECTED)]
 
     # The console and the text report.
     assert result_lines(r.stdout) == expected_lines, r.stdout
     text = out["txt"].read_text()
     assert result_lines(text) == expected_lines, text
-    assert text.index("the failing twin fails") < text.index("passed      twin"), text
+    assert text.index("the failing twin fails") < text.index("passed      twin.py (twin)"), text
 
     # JUnit.
     validate_junit(out["xml"])
-    cases = list(ET.parse(out["xml"]).getroot().iter("testcase"))
-    assert [c.get("name") for c in cases] == [name for name, _, _ in EXPECTED]
+    root = ET.parse(out["xml"]).getroot()
+    cases = list(root.iter("testcase"))
+    assert [c.get("name") for c in cases] == IDS
+    shown = junit_display_names(root)
+    assert [shown.get(c) for c in cases] == [name for name, _, _ in EXPECTED]
     for case, (name, failed, problem) in zip(cases, EXPECTED):
         element = case.find("failure")
         assert (element is not None) == failed, ET.tostring(case)
@@ -88,13 +95,16 @@ def test_same_named_tests_and_a_mid_run_rename_are_attributed_right_everywhere(
     validate_tap(out["tap"])
     points = [line.strip() for line in out["tap"].read_text().splitlines()
               if re.match(r"^\s+(not )?ok \d", line)]
-    assert points == ["not ok 1 - twin", "ok 2 - twin", "not ok 3 - renamed mid-run"], points
+    assert points == ["not ok 1 - twin.py[--fail]", "ok 2 - twin.py", "not ok 3 - renaming.py"], \
+        points
 
     # CTRF JSON: a stable testId and this run's executionId, each one per test.
     validate_ctrf(out["json"])
     tests = json.loads(out["json"].read_text())["results"]["tests"]
-    assert [(t["name"], t["status"]) for t in tests] == [
-        (name, "failed" if failed else "passed") for name, failed, _ in EXPECTED]
+    assert [(t["name"], t["extra"]["robotology.rtf"]["name"], t["status"]) for t in tests] == [
+        (key, name, "failed" if failed else "passed") for key, (name, failed, _) in zip(IDS,
+                                                                                      EXPECTED)]
+    assert [t["extra"]["robotology.rtf"]["id"] for t in tests] == ["ids/" + key for key in IDS]
     assert [t["testId"] for t in tests] == ["1.1", "1.2", "1.3"]
     assert len({t["executionId"] for t in tests}) == 3
     assert tests[0]["message"] == "the failing twin fails" and "message" not in tests[1]
@@ -104,8 +114,9 @@ def test_same_named_tests_and_a_mid_run_rename_are_attributed_right_everywhere(
     html = out["html"].read_text()
     data = json.loads(html.split('id="report-data">', 1)[1].split("</script>", 1)[0])
     shown = data["suites"][0]["tests"]
-    assert [(t["name"], t["state"]) for t in shown] == [
-        (name, "failed" if failed else "passed") for name, failed, _ in EXPECTED]
+    assert [(t["name"], t["shown"], t["state"]) for t in shown] == [
+        (key, name, "failed" if failed else "passed") for key, (name, failed, _) in zip(IDS,
+                                                                                      EXPECTED)]
     assert len({t["id"] for t in shown}) == 3
     texts = [[m["text"] for m in t["messages"]] for t in shown]
     assert any("the failing twin fails" in m for m in texts[0]), texts

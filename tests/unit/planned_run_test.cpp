@@ -200,23 +200,27 @@ TEST_F(PlannedRunTest, ARerunThenASelectionRunsOnlyTheFailedTestsSelected) {
     EXPECT_EQ(namesOf(plan.suites), (std::vector<std::string>{"arm/grip"}));
 }
 
-TEST_F(PlannedRunTest, ARerunMatchingNoTestOfThisRunWarnsAndRunsNothing) {
+TEST_F(PlannedRunTest, ARerunMatchingNoTestOfThisRunIsAnErrorNamingTheReport) {
     Options options;
     options.rerunFailed = report({{"other", "x", "failed"}});
     const PlannedRun plan = planRun(options, fourSuites(), ShardChoice());
-    EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
-    EXPECT_TRUE(plan.suites.empty());
-    EXPECT_EQ(notesOf(plan),
-              (std::vector<std::string>{"err: warning: no test of this run is one that failed in " +
-                                        options.rerunFailed}));
+    EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Error);
+    EXPECT_EQ(plan.error, "--rerun-failed " + options.rerunFailed +
+                              ": none of its 1 failed test(s) is a test of this run (other/x, "
+                              "...); give the suites that report was written for");
 }
 
-TEST_F(PlannedRunTest, ASelectionMatchingNothingWarns) {
+TEST_F(PlannedRunTest, ASelectionMatchingNothingIsNothingSelectedUnlessAllowed) {
     Options options;
     options.selection.include.push_back(tag("nothing"));
     const PlannedRun plan = planRun(options, fourSuites(), ShardChoice());
-    EXPECT_TRUE(plan.suites.empty());
-    EXPECT_EQ(notesOf(plan), (std::vector<std::string>{"err: warning: no test is selected"}));
+    EXPECT_EQ(plan.outcome, PlannedRun::Outcome::NothingSelected);
+    EXPECT_NE(plan.error.find("no test is selected"), std::string::npos) << plan.error;
+    options.allowEmpty = true;
+    const PlannedRun allowed = planRun(options, fourSuites(), ShardChoice());
+    EXPECT_EQ(allowed.outcome, PlannedRun::Outcome::Run);
+    EXPECT_TRUE(allowed.suites.empty());
+    EXPECT_EQ(notesOf(allowed), (std::vector<std::string>{"err: warning: no test is selected"}));
 }
 
 TEST_F(PlannedRunTest, AShardKeepsItsSuitesWithTheirPlacesInTheWholeSelection) {

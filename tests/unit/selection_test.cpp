@@ -92,3 +92,50 @@ TEST(Selection, DropsUnselectedTestsAndEmptySuitesAndSaysWhyADependencyIsMissing
     EXPECT_TRUE(suites[0].tests[0].depends.empty());
     EXPECT_EQ(suites[0].tests[0].skipReason, "depends on left, which is not selected");
 }
+
+TEST(NameFilter, ABackslashMakesAHyphenAColonOrAStarLiteral) {
+    NameFilter filter;
+    std::string error;
+    ASSERT_TRUE(NameFilter::parse("*/arm\\-fast*", filter, error)) << error;
+    EXPECT_TRUE(filter.matches("s/arm-fast.py"));
+    EXPECT_FALSE(filter.matches("s/arm"));
+    EXPECT_FALSE(filter.matches("s/armXfast"));
+    ASSERT_TRUE(NameFilter::parse("s/a\\:b\\*:x-*\\-slow", filter, error)) << error;
+    EXPECT_TRUE(filter.matches("s/a:b*"));
+    EXPECT_FALSE(filter.matches("s/a:bc"));
+    EXPECT_TRUE(filter.matches("x"));
+    ASSERT_TRUE(NameFilter::parse("*-*\\-slow", filter, error)) << error;
+    EXPECT_FALSE(filter.matches("s/a-slow"));
+    EXPECT_TRUE(filter.matches("s/a-fast"));
+    ASSERT_TRUE(NameFilter::parse("*-*a-b", filter, error)) << error;  // GoogleTest's reading
+    EXPECT_FALSE(filter.matches("s/xa-b"));
+    EXPECT_TRUE(filter.matches("s/xa"));
+}
+
+TEST(NameFilter, NamesWhatCannotParse) {
+    NameFilter filter;
+    std::string error;
+    EXPECT_FALSE(NameFilter::parse("s/arm\\", filter, error));
+    EXPECT_NE(error.find("a '\\' at the end of 's/arm\\'"), std::string::npos) << error;
+    EXPECT_NE(error.find("'arm/*\\-fast' for a literal '-'"), std::string::npos) << error;
+    EXPECT_FALSE(NameFilter::parse("s/a::b", filter, error));
+    EXPECT_NE(error.find("an empty pattern at column 5 of 's/a::b'"), std::string::npos) << error;
+}
+
+TEST(Selection, AFilterThatIsATestIdAsWrittenSelectsThatTestAlone) {
+    SuiteSpec suite;
+    suite.name = "arm-suite";
+    suite.tests = {test("arm-fast [x] #2", {}), test("arm", {}), test("arm-fast", {})};
+    for (const std::string id : {"arm-suite/arm-fast [x] #2", "arm-suite/arm"}) {
+        std::vector<SuiteSpec> suites{suite};
+        Selection selection;
+        NameFilter filter;
+        std::string error;
+        ASSERT_TRUE(NameFilter::parse(id, filter, error)) << error;
+        selection.filters.push_back(std::move(filter));
+        applySelection(suites, selection);
+        ASSERT_EQ(suites.size(), 1u) << id;
+        ASSERT_EQ(suites[0].tests.size(), 1u) << id;
+        EXPECT_EQ("arm-suite/" + suites[0].tests[0].name, id);
+    }
+}

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "languages/test_loader.h"
+#include "runner/model/test_id.h"
 #include "runner/suites/suite_file.h"
 
 namespace robottestingframework {
@@ -112,6 +113,8 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
         }
     }
     if (!commandLine.tests.empty()) {
+        // Paths given on the command line start from the current folder.
+        assignTestIds(commandLine, ".");
         suites.push_back(std::move(commandLine));
     }
 

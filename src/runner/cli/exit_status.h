@@ -9,6 +9,8 @@ namespace runner {
 constexpr int allPassed = 0;
 constexpr int somethingFailed = 1;
 constexpr int configurationError = 2;
+// No test selected (unless --allow-empty): pytest's code for "no tests collected".
+constexpr int nothingSelected = 5;
 
 // Interrupted: 128 + the signal, as shells report it (130 for Ctrl-C, 143 for SIGTERM).
 constexpr int interruptedBy(int signal) {

@@ -7,6 +7,7 @@
 #include "languages/test_loader.h"
 #include "reporters/atomic_file.h"
 #include "runner/model/stand_in_test.h"
+#include "runner/model/test_id.h"
 #include "variables/variables.h"
 
 namespace robottestingframework {
@@ -36,9 +37,9 @@ std::string joined(const std::vector<std::string>& items) {
     return text;
 }
 
-// "suite/test": the id --filter matches.
+// "suite/test": the test's id (model/test_id.h), which --filter selects it by.
 std::string idOf(const SuiteSpec& suite, const TestSpec& test) {
-    return suite.name + "/" + PluginTest::displayName(test);
+    return testId(suite, test);
 }
 
 // "lock robot:arm, 2 of pool ros_domain, the machine alone (exclusive)".

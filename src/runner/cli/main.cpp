@@ -50,6 +50,10 @@ int main(int argc, char** argv) {
     if (planned.outcome == PlannedRun::Outcome::NothingToRerun) {
         return allPassed;
     }
+    if (planned.outcome == PlannedRun::Outcome::NothingSelected) {
+        std::fprintf(stderr, "%s: %s\n", programName, planned.error.c_str());
+        return nothingSelected;
+    }
     if (planned.outcome == PlannedRun::Outcome::Error) {
         std::fprintf(stderr, "%s: %s\n", programName, planned.error.c_str());
         return configurationError;

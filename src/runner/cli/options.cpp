@@ -167,7 +167,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         "Exit status: 0 when every test passed (skipped ones allowed), 1 when a test failed, "
         "errored, crashed, timed out or could not be loaded, or a fixture failed, 2 on a usage "
         "or configuration error (bad option, unreadable or malformed suite file, unknown "
-        "dependency, an output that could not be written), 130 when interrupted by Ctrl-C "
+        "dependency, an output that could not be written), 5 when no test is selected "
+        "(unless --allow-empty), 130 when interrupted by Ctrl-C "
         "(SIGINT), 143 when stopped by SIGTERM.");
     app.option_defaults()->always_capture_default(false);
 
@@ -241,6 +242,9 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         ->type_name("SECONDS")
         ->check(numberRule(checkSeconds, "from 0 (no limit) to " +
                                              std::to_string(static_cast<long>(maxTimeoutSeconds))));
+    app.add_flag("--allow-empty", options.allowEmpty,
+                 "A run with no test selected (by --filter, --tag, --rerun-failed, or suites "
+                 "without tests) exits 0 instead of 5");
     app.add_flag("--fail-fast", options.failFast,
                  "Stop the run at the first failure; the remaining tests are skipped");
     app.add_option("--retries", options.retries,
@@ -284,9 +288,11 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                            "Leave out the tests whose tags match EXPR (repeatable)")
                 ->type_name("EXPR"));
     takeAll(app.add_option("--filter", filters,
-                           "Run only the tests whose suite/test name matches: patterns with * "
-                           "and ?, separated by ':', negative ones after '-' (e.g. "
-                           "'arm/*-*slow*')")
+                           "Run only the tests whose id (suite/test, as --list shows it) "
+                           "matches: patterns with * and ?, separated by ':', negative ones "
+                           "after '-' (e.g. 'arm/*-*slow*'); '\\' makes the next character "
+                           "literal ('arm/*\\-fast'); a test's id written as it is selects "
+                           "that test alone")
                 ->type_name("PATTERN"));
     app.add_option("--shard-index", options.shard.index,
                    "Run only shard I (from 0) of the selected suites split --shard-count ways; "

@@ -50,7 +50,13 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
     }
     keepFailedTests(plan.suites, failed);
     if (plan.suites.empty()) {
-        warn(plan, "warning: no test of this run is one that failed in " + options.rerunFailed);
+        // Not a success: the rerun was asked for the wrong suites, or the tests were renamed.
+        plan.outcome = PlannedRun::Outcome::Error;
+        plan.error = "--rerun-failed " + options.rerunFailed + ": none of its " +
+                     std::to_string(failed.size()) + " failed test(s) is a test of this run (" +
+                     failed.front().suite + "/" + failed.front().test +
+                     ", ...); give the suites that report was written for";
+        return false;
     }
     return true;
 }
@@ -93,9 +99,22 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     }
     if (!options.selection.empty()) {
         applySelection(plan.suites, options.selection);
-        if (plan.suites.empty()) {
-            warn(plan, "warning: no test is selected");
-        }
+    }
+    bool anyTest = false;
+    for (const auto& suite : plan.suites) {
+        anyTest = anyTest || !suite.tests.empty();
+    }
+    if (!anyTest && !options.allowEmpty && !options.list && !options.listVariables) {
+        plan.outcome = PlannedRun::Outcome::NothingSelected;
+        plan.error = options.selection.empty()
+                         ? "no test to run (the suites given have none); --allow-empty makes "
+                           "that a success"
+                         : "no test is selected (by --filter, --tag or --exclude-tag); "
+                           "--allow-empty makes that a success";
+        return plan;
+    }
+    if (!anyTest) {
+        warn(plan, "warning: no test is selected");
     }
     if (!plan.shard.sharded) {
         if (!options.durations.empty()) {

@@ -27,6 +27,9 @@ struct PlannedRun {
         Run,             // run (or list) `suites`
         NothingToRerun,  // the --rerun-failed report has no failed test: a success
         Error,           // a configuration error, `error` says which
+        // No test is selected (--filter, --tag, --rerun-failed, an empty suite): an error of
+        // its own (exit 5, as pytest's), unless --allow-empty. Never said for a shard.
+        NothingSelected,
     };
     Outcome outcome = Outcome::Run;
     std::string error;

@@ -21,7 +21,7 @@ public:
 
     void startTest(const Test* test) override {
         if (ProgressLine* progress = console_.settings_.progress) {
-            progress->testStarted(test, suite_.getName(), test != nullptr ? test->getName() : "");
+            progress->testStarted(test, suite_.getName(), shownAs(test));
         }
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts;  // a retry starts again
@@ -58,8 +58,8 @@ public:
         } else {
             text += word;
         }
-        text += " " + suite_.getName() + " :: " + (test != nullptr ? test->getName() : "") + "  (" +
-                reporters::seconds(took) + ")";
+        text += " " + suite_.getName() + " :: " + shownAs(test) + "  (" + reporters::seconds(took) +
+                ")";
         console_.line(text);
         for (const auto& said : open.lines) {
             console_.line(said);
@@ -103,23 +103,26 @@ public:
             found->second.lines.push_back(std::move(shown));
         }
     }
+    void renameTest(const Test* test, const std::string& name) override {
+        auto found = open_().find(test);
+        if (found != open_().end()) {
+            found->second.name = name;
+        }
+        if (ProgressLine* progress = console_.settings_.progress) {
+            progress->testRenamed(test, shownAs(test));
+        }
+    }
     void retryTest(const Test* test, TestMessage msg) override {
         if (ProgressLine* progress = console_.settings_.progress) {
             progress->testRetried(test);
         }
-        console_.line("  retry       " + suite_.getName() +
-                      " :: " + (test != nullptr ? test->getName() : "") + ": " +
+        console_.line("  retry       " + suite_.getName() + " :: " + shownAs(test) + ": " +
                       reporters::messageText(msg));
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts + 1;
         open = Open();
         open.started = std::chrono::steady_clock::now();
         open.attempts = attempts;
-    }
-    void renameTest(const Test* test, const std::string& name) override {
-        if (ProgressLine* progress = console_.settings_.progress) {
-            progress->testRenamed(test, name);
-        }
     }
     void startTestSuite(const TestSuite* suite) override {
         if (ProgressLine* progress = console_.settings_.progress) {
@@ -146,6 +149,15 @@ public:
 
 private:
     std::map<const Test*, Open>& open_() { return console_.open_; }
+    // "tests/arith.lua (ArmTest)": its id, and the name it gave itself beside.
+    std::string shownAs(const Test* test) {
+        if (test == nullptr) {
+            return "";
+        }
+        auto found = open_().find(test);
+        const bool renamed = found != open_().end() && !found->second.name.empty();
+        return reporters::shownAs(test->getKey(), renamed ? found->second.name : test->getName());
+    }
 
     // A message of `kind`: its word and the state it gives come from the tables.
     void raise(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,

@@ -49,6 +49,7 @@ private:
         std::vector<std::string> lines;  // its messages, shown under its line
         std::chrono::steady_clock::time_point started;
         unsigned int attempts = 0;  // earlier attempts (--retries)
+        std::string name;           // the name it gave itself, once it renamed itself
     };
     void line(const std::string& text);
 

@@ -297,13 +297,14 @@ void ProgressLine::Before::endTestSuite(const TestSuite* suite) {
     }
 }
 void ProgressLine::Before::startTest(const Test* test) {
-    line_.testStarted(test, suite_, test != nullptr ? test->getName() : "");
+    line_.testStarted(test, suite_,
+                      test != nullptr ? reporters::shownAs(test->getKey(), test->getName()) : "");
 }
 void ProgressLine::Before::endTest(const Test* test) {
     line_.testEnded(test);
 }
 void ProgressLine::Before::renameTest(const Test* test, const std::string& name) {
-    line_.testRenamed(test, name);
+    line_.testRenamed(test, test != nullptr ? reporters::shownAs(test->getKey(), name) : name);
 }
 void ProgressLine::Before::retryTest(const Test* test, TestMessage /*msg*/) {
     line_.testRetried(test);

@@ -6,7 +6,9 @@ namespace robottestingframework {
 namespace runner {
 
 PluginTest::PluginTest(const TestSpec& spec, TestExecutor& executor)
-    : Test(displayName(spec)), spec_(spec), executor_(executor) {}
+    : Test(displayName(spec)), spec_(spec), executor_(executor) {
+    setKey(spec.id.empty() ? displayName(spec) : spec.id);
+}
 
 std::string PluginTest::displayName(const TestSpec& spec) {
     return spec.name.empty() ? spec.plugin : spec.name;

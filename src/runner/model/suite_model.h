@@ -26,6 +26,9 @@ struct TestSpec {
     std::string path;    // resolved file; empty when it could not be found
     std::string type;    // "dll", "python", "lua", "ruby", "exec"; empty: from the file
     std::string name;    // optional name="..." from the suite; else the plug-in's name
+    // Its id in its suite (model/test_id.h), given once the suite is read; "SUITE/id" is the
+    // name every output and option uses for it.
+    std::string id;
     std::string param;
     std::string environment;
     unsigned int repetition = 1;  // 0 in a suite file without one: --repetition, else 1

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <set>
 
-#include "runner/model/stand_in_test.h"
+#include "runner/model/test_id.h"
 #include "runner/plan/run_gate.h"
 
 namespace robottestingframework {
@@ -224,33 +225,92 @@ bool globMatches(const std::string& pattern, const std::string& text) {
     return p == pattern.size();
 }
 
+namespace {
+
+// globMatches, with "\\x" in `pattern` standing for a literal x.
+bool escapedGlobMatches(const std::string& pattern, const std::string& text) {
+    std::size_t p = 0;
+    std::size_t t = 0;
+    std::size_t star = std::string::npos;
+    std::size_t mark = 0;
+    while (t < text.size()) {
+        if (p < pattern.size() && pattern[p] == '*') {
+            star = p++;
+            mark = t;
+            continue;
+        }
+        const bool escaped = p + 1 < pattern.size() && pattern[p] == '\\';
+        const bool one = p < pattern.size() && !escaped && pattern[p] == '?';
+        if (p < pattern.size() && (one || pattern[p + (escaped ? 1 : 0)] == text[t])) {
+            p += escaped ? 2 : 1;
+            ++t;
+        } else if (star != std::string::npos) {
+            p = star + 1;
+            t = ++mark;
+        } else {
+            return false;
+        }
+    }
+    while (p < pattern.size() && pattern[p] == '*') {
+        ++p;
+    }
+    return p == pattern.size();
+}
+
+}  // namespace
+
 bool NameFilter::parse(const std::string& text, NameFilter& filter, std::string& error) {
-    const std::string example = " (expected e.g. 'arm/*', 'arm/*:leg/*-*slow*')";
+    const std::string example =
+        " (expected e.g. 'arm/*', 'arm/*:leg/*-*slow*', 'arm/*\\-fast' for a literal '-')";
     if (text.empty()) {
         error = "an empty filter" + example;
         return false;
     }
-    const std::size_t dash = text.find('-');
-    auto split = [&](std::size_t begin, std::size_t end, std::vector<std::string>& into) {
-        std::size_t start = begin;
-        for (std::size_t i = begin; i <= end; ++i) {
-            if (i == end || text[i] == ':') {
-                if (i == start) {
-                    error = "an empty pattern at column " + std::to_string(start + 1) + " of '" +
-                            text + "'" + example;
-                    return false;
-                }
-                into.push_back(text.substr(start, i - start));
-                start = i + 1;
+    NameFilter parsed;
+    parsed.text_ = text;
+    std::vector<std::string>* into = &parsed.positive_;
+    std::string pattern;
+    std::size_t start = 0;  // where `pattern` began, for messages
+    auto end = [&](std::size_t at) {
+        if (pattern.empty()) {
+            // A leading '-' means "every test but": no positive pattern before it.
+            if (!(into == &parsed.positive_ && at == 0 && text[0] == '-')) {
+                error = "an empty pattern at column " + std::to_string(start + 1) + " of '" + text +
+                        "'" + example;
+                return false;
             }
+        } else {
+            into->push_back(pattern);
         }
+        pattern.clear();
+        start = at + 1;
         return true;
     };
-    NameFilter parsed;
-    if (dash != 0 && !split(0, dash == std::string::npos ? text.size() : dash, parsed.positive_)) {
-        return false;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == '\\') {
+            if (i + 1 == text.size()) {
+                error = "a '\\' at the end of '" + text + "' escapes nothing" + example;
+                return false;
+            }
+            pattern += text.substr(i, 2);
+            ++i;
+        } else if (c == ':') {
+            if (!end(i)) {
+                return false;
+            }
+        } else if (c == '-' && into == &parsed.positive_) {
+            // The first '-' starts the negative patterns; a later one is literal there, as in
+            // GoogleTest.
+            if (!end(i)) {
+                return false;
+            }
+            into = &parsed.negative_;
+        } else {
+            pattern += c;
+        }
     }
-    if (dash != std::string::npos && !split(dash + 1, text.size(), parsed.negative_)) {
+    if (!end(text.size())) {
         return false;
     }
     if (parsed.positive_.empty()) {
@@ -262,18 +322,22 @@ bool NameFilter::parse(const std::string& text, NameFilter& filter, std::string&
 
 bool NameFilter::matches(const std::string& id) const {
     auto any = [&id](const std::vector<std::string>& patterns) {
-        return std::any_of(patterns.begin(), patterns.end(),
-                           [&id](const std::string& pattern) { return globMatches(pattern, id); });
+        return std::any_of(patterns.begin(), patterns.end(), [&id](const std::string& pattern) {
+            return escapedGlobMatches(pattern, id);
+        });
     };
     return any(positive_) && !any(negative_);
 }
 
 namespace {
 
-bool selected(const Selection& selection, const SuiteSpec& suite, const TestSpec& test) {
-    const std::string id = suite.name + "/" + PluginTest::displayName(test);
+// `ids`: the id of every test of the run, for the filters that name one as written.
+bool selected(const Selection& selection, const SuiteSpec& suite, const TestSpec& test,
+              const std::set<std::string>& ids) {
+    const std::string id = testId(suite, test);
     for (const auto& filter : selection.filters) {
-        if (!filter.matches(id)) {
+        const bool exact = ids.count(filter.text()) != 0;
+        if (exact ? filter.text() != id : !filter.matches(id)) {
             return false;
         }
     }
@@ -296,10 +360,16 @@ void applySelection(std::vector<SuiteSpec>& suites, const Selection& selection) 
     std::vector<std::vector<bool>> keep;
     std::vector<const TestSpec*> left;  // the tests not selected
     std::vector<const TestSpec*> kept;
+    std::set<std::string> ids;
+    for (const auto& suite : suites) {
+        for (const auto& test : suite.tests) {
+            ids.insert(testId(suite, test));
+        }
+    }
     for (const auto& suite : suites) {
         keep.emplace_back();
         for (const auto& test : suite.tests) {
-            keep.back().push_back(selected(selection, suite, test));
+            keep.back().push_back(selected(selection, suite, test, ids));
             (keep.back().back() ? kept : left).push_back(&test);
         }
     }

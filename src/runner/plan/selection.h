@@ -31,14 +31,21 @@ private:
 };
 
 // "arm/*:leg/*-*slow*": patterns separated by ':', the negative ones after '-'; '*' any text,
-// '?' one character; matched against the whole "suite/test".
+// '?' one character (a '-' after the first is literal); matched against the whole test id
+// ("suite/test", model/test_id.h). A '\' makes the next character literal: "*/arm\-fast" matches
+// the id "s/arm-fast", and "\:", "\*", "\?" and "\\" likewise. A filter that is, as written,
+// the id of a test of the run selects that test alone (applySelection), so any id can be given
+// as it is shown, hyphens and all.
 class NameFilter {
 public:
+    // False with `error` for an empty filter or pattern, or a '\' at the end.
     static bool parse(const std::string& text, NameFilter& filter, std::string& error);
     bool matches(const std::string& id) const;
+    const std::string& text() const { return text_; }
 
 private:
-    std::vector<std::string> positive_;
+    std::string text_;
+    std::vector<std::string> positive_;  // with their '\' escapes
     std::vector<std::string> negative_;
 };
 

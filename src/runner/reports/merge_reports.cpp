@@ -124,7 +124,8 @@ bool needsStateProperty(const std::string& state) {
 
 // The merged report is the whole run's: no suite keeps the shard or rerun properties of the
 // report it came from, and the state properties are written again from its tests as they are
-// after the reruns (an empty <properties> goes).
+// after the reruns (an empty <properties> goes). The display names ("rtf.name.S.T") stay: a
+// rerun's test replaces the one of its id in place, and a test's id gives its name.
 void resetProperties(pugi::xml_node suite) {
     pugi::xml_node properties = suite.child("properties");
     if (!properties) {

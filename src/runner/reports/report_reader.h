@@ -27,7 +27,7 @@ struct ReportedSuite {
     double seconds = 0;  // fixtures included when the report says so
 };
 
-// Which shard wrote the report (JUnit <properties>, CTRF results.extra.rtf.shard).
+// Which shard wrote the report (JUnit <properties>, CTRF results.extra["robotology.rtf"].shard).
 struct ReportedShard {
     bool known = false;
     unsigned int index = 0;

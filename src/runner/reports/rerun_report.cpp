@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "runner/model/stand_in_test.h"
+#include "runner/model/test_id.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -41,8 +41,9 @@ void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTes
         for (auto& test : suite.tests) {
             const bool named =
                 std::any_of(failed.begin(), failed.end(), [&](const FailedTest& other) {
-                    return other.suite == suite.name &&
-                           (other.test == test.name || other.test == PluginTest::displayName(test));
+                    // Reports name a test by its id (model/test_id.h), never by the name it
+                    // gives itself, so a renamed, repeated or moved test is found again.
+                    return testId(suite, test) == other.suite + "/" + other.test;
                 });
             if (named) {
                 test.depends.clear();  // what it depends on passed in the earlier run

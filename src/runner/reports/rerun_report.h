@@ -25,7 +25,7 @@ std::vector<FailedTest> readFailedTests(const std::string& path);
 // The same from the report's text (`path` names it in messages).
 std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path);
 
-// Keeps in `suites` only the tests `failed` names (by name="..." or plug-in, in their suite),
+// Keeps in `suites` only the tests `failed` names (by their id, model/test_id.h),
 // and only the suites left with a test, whose fixtures then run as usual.
 void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed);
 

@@ -14,6 +14,7 @@
 
 #include <pugixml.hpp>
 
+#include "runner/model/test_id.h"
 #include "runner/model/value_limits.h"
 
 #include <sys/stat.h>
@@ -366,6 +367,7 @@ public:
                 suite.variablesUsed.push_back(name);
             }
         }
+        assignTestIds(suite, folder_);
         return suite;
     }
 

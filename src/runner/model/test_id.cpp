@@ -1,0 +1,108 @@
+#include "runner/model/test_id.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <set>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// A param on one line, as an id must be: runs of white space become one space.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    bool space = false;
+    for (char c : text) {
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+            space = !out.empty();
+            continue;
+        }
+        if (space) {
+            out += ' ';
+            space = false;
+        }
+        out += c;
+    }
+    return out;
+}
+
+// "a/b/c" below "a" is "b/c"; empty when `path` is not below `folder`.
+std::string below(const fs::path& path, const fs::path& folder) {
+    auto p = path.begin();
+    for (auto f = folder.begin(); f != folder.end(); ++f, ++p) {
+        if (f->empty()) {
+            continue;  // the trailing "" of "a/b/"
+        }
+        if (p == path.end() || *p != *f) {
+            return {};
+        }
+    }
+    fs::path rest;
+    for (; p != path.end(); ++p) {
+        rest /= *p;
+    }
+    return rest.generic_string();
+}
+
+}  // namespace
+
+std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder) {
+    const fs::path written = fs::path(plugin).lexically_normal();
+    if (!written.is_absolute()) {
+        std::string text = written.generic_string();
+        // "./x" is normal as "x"; a lone "." (never a plug-in) stays as written.
+        return text.empty() ? plugin : text;
+    }
+    std::error_code error;
+    fs::path folder = fs::absolute(suiteFolder.empty() ? "." : suiteFolder, error);
+    if (!error) {
+        const std::string relative = below(written, folder.lexically_normal());
+        if (!relative.empty()) {
+            return relative;
+        }
+    }
+    return written.filename().generic_string();
+}
+
+void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
+    // The params each unnamed plug-in is given in this suite: more than one, and each says its own.
+    std::map<std::string, std::set<std::string>> params;
+    for (auto& test : suite.tests) {
+        if (test.name.empty()) {
+            test.id = pluginIdPart(test.plugin, suiteFolder);
+            params[test.id].insert(oneLine(test.param));
+        } else {
+            test.id = test.name;
+        }
+    }
+    std::set<std::string> taken;
+    for (auto& test : suite.tests) {
+        if (test.name.empty() && params[test.id].size() > 1) {
+            const std::string param = oneLine(test.param);
+            if (!param.empty()) {
+                test.id += "[" + param + "]";
+            }
+        }
+        // A second test of the same id: "[2]", the next free number, in document order.
+        const std::string base = test.id;
+        for (unsigned int k = 2; taken.count(test.id) != 0; ++k) {
+            test.id = base + "[" + std::to_string(k) + "]";
+        }
+        taken.insert(test.id);
+    }
+}
+
+std::string testId(const SuiteSpec& suite, const TestSpec& test) {
+    // A spec made without a suite file (the unit tests) has no id yet: its name or plug-in.
+    if (test.id.empty()) {
+        return suite.name + "/" + (test.name.empty() ? test.plugin : test.name);
+    }
+    return suite.name + "/" + test.id;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework
