@@ -165,7 +165,14 @@ def _properties(attributes):
 
 
 def _add_properties(root, attributes):
-    _first(root, "testsuite").insert(0, _properties(attributes))
+    """One more property on the first suite: into its <properties> (the display names of its
+    tests, "rtf.name.S.T", are there already), else a new <properties> first."""
+    suite = _first(root, "testsuite")
+    properties = suite.find("properties")
+    if properties is None:
+        suite.insert(0, _properties(attributes))
+    else:
+        ET.SubElement(properties, "property", attributes)
 
 
 def _move_output_first(root):

@@ -6,6 +6,8 @@ import re
 import shutil
 import xml.etree.ElementTree as ET
 
+import pytest
+
 from conftest import junit_display_names, run_runner, validate_ctrf, validate_junit, validate_tap
 
 # Fails when its param says --fail (or, with --break-on K, on its K-th run in the process).
@@ -167,6 +169,7 @@ def test_a_rerun_whose_failures_are_not_in_this_run_is_an_error(tmp_path, suite_
         in again.stderr, again
 
 
+@pytest.mark.edited_reports  # it cuts and forges reports on purpose
 def test_a_truncated_or_foreign_rerun_report_is_an_error_naming_it(tmp_path, suite_file):
     (tmp_path / "bad.py").write_text(CHECK)
     suite_file('<suite name="s"><test type="python" param="--fail">bad.py</test></suite>')

@@ -199,36 +199,11 @@ bool TagExpression::matches(const std::vector<std::string>& tags) const {
     return root_ && root_->matches(tags);
 }
 
-bool globMatches(const std::string& pattern, const std::string& text) {
-    // Iterative, with one backtrack point: linear enough for names and tags.
-    std::size_t p = 0;
-    std::size_t t = 0;
-    std::size_t star = std::string::npos;
-    std::size_t mark = 0;
-    while (t < text.size()) {
-        if (p < pattern.size() && (pattern[p] == '?' || pattern[p] == text[t])) {
-            ++p;
-            ++t;
-        } else if (p < pattern.size() && pattern[p] == '*') {
-            star = p++;
-            mark = t;
-        } else if (star != std::string::npos) {
-            p = star + 1;
-            t = ++mark;
-        } else {
-            return false;
-        }
-    }
-    while (p < pattern.size() && pattern[p] == '*') {
-        ++p;
-    }
-    return p == pattern.size();
-}
-
 namespace {
 
-// globMatches, with "\\x" in `pattern` standing for a literal x.
-bool escapedGlobMatches(const std::string& pattern, const std::string& text) {
+// "*", "?" glob over the whole text; with `escapes`, "\\x" in `pattern` stands for a literal x.
+// Iterative, with one backtrack point: linear enough for names and tags.
+bool matchGlob(const std::string& pattern, const std::string& text, bool escapes) {
     std::size_t p = 0;
     std::size_t t = 0;
     std::size_t star = std::string::npos;
@@ -239,7 +214,7 @@ bool escapedGlobMatches(const std::string& pattern, const std::string& text) {
             mark = t;
             continue;
         }
-        const bool escaped = p + 1 < pattern.size() && pattern[p] == '\\';
+        const bool escaped = escapes && p + 1 < pattern.size() && pattern[p] == '\\';
         const bool one = p < pattern.size() && !escaped && pattern[p] == '?';
         if (p < pattern.size() && (one || pattern[p + (escaped ? 1 : 0)] == text[t])) {
             p += escaped ? 2 : 1;
@@ -257,7 +232,15 @@ bool escapedGlobMatches(const std::string& pattern, const std::string& text) {
     return p == pattern.size();
 }
 
+bool escapedGlobMatches(const std::string& pattern, const std::string& text) {
+    return matchGlob(pattern, text, true);
+}
+
 }  // namespace
+
+bool globMatches(const std::string& pattern, const std::string& text) {
+    return matchGlob(pattern, text, false);
+}
 
 bool NameFilter::parse(const std::string& text, NameFilter& filter, std::string& error) {
     const std::string example =
