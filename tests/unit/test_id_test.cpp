@@ -75,3 +75,17 @@ TEST(TestId, NeverRepeatsEvenWhenAParamLooksLikeANumber) {
         idsOf({test("a.py", "2"), test("a.py"), test("a.py"), test("a.py", "", "a.py[2]")}),
         (std::vector<std::string>{"arm/a.py[2]", "arm/a.py", "arm/a.py[3]", "arm/a.py[2][2]"}));
 }
+
+TEST(TestId, NumbersTheRunsOfOnePluginInOrderSkippingNumbersANameTook) {
+    // The numbering goes on from the last number given (not from 2 again for each run), and
+    // passes over an id a test's name= already took.
+    std::vector<TestSpec> tests{test("p.so", "", "p.so[3]"), test("p.so")};
+    std::vector<std::string> expected{"arm/p.so[3]", "arm/p.so"};
+    for (unsigned int k = 2; k <= 1000; ++k) {
+        tests.push_back(test("p.so"));
+        expected.push_back("arm/p.so[" + std::to_string(k < 3 ? k : k + 1) + "]");
+    }
+    tests.push_back(test("p.so"));
+    expected.push_back("arm/p.so[1002]");
+    EXPECT_EQ(idsOf(tests), expected);
+}

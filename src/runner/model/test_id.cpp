@@ -71,15 +71,24 @@ std::string pluginIdPart(const std::string& plugin, const std::string& suiteFold
 void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
     // The params each unnamed plug-in is given in this suite: more than one, and each says its own.
     std::map<std::string, std::set<std::string>> params;
+    // Each plug-in path's part once: a suite often names one plug-in many times.
+    std::map<std::string, std::string> partOf;
     for (auto& test : suite.tests) {
         if (test.name.empty()) {
-            test.id = pluginIdPart(test.plugin, suiteFolder);
+            auto part = partOf.find(test.plugin);
+            if (part == partOf.end()) {
+                part = partOf.emplace(test.plugin, pluginIdPart(test.plugin, suiteFolder)).first;
+            }
+            test.id = part->second;
             params[test.id].insert(oneLine(test.param));
         } else {
             test.id = test.name;
         }
     }
     std::set<std::string> taken;
+    // The next number to try for each id given twice: a suite of 10 000 runs of one plug-in
+    // must not try 2, 3, ... again for each (that was quadratic in the suite's size).
+    std::map<std::string, unsigned int> nextNumber;
     for (auto& test : suite.tests) {
         if (test.name.empty() && params[test.id].size() > 1) {
             const std::string param = oneLine(test.param);
@@ -88,9 +97,12 @@ void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
             }
         }
         // A second test of the same id: "[2]", the next free number, in document order.
-        const std::string base = test.id;
-        for (unsigned int k = 2; taken.count(test.id) != 0; ++k) {
-            test.id = base + "[" + std::to_string(k) + "]";
+        if (taken.count(test.id) != 0) {
+            const std::string base = test.id;
+            unsigned int& k = nextNumber.emplace(base, 2).first->second;
+            do {
+                test.id = base + "[" + std::to_string(k++) + "]";
+            } while (taken.count(test.id) != 0);
         }
         taken.insert(test.id);
     }
