@@ -11,7 +11,7 @@
 namespace robottestingframework {
 namespace plugin {
 
-class SharedLibrary;
+class PluginFactory;
 
 // Owns the library and the fixture it made; both go when the loader is closed or destroyed.
 class DllFixturePluginLoader {
@@ -28,9 +28,8 @@ public:
     const std::string getLastError() { return error_; }
 
 private:
-    std::unique_ptr<SharedLibrary> library_;
+    std::shared_ptr<const PluginFactory> factory_;
     void* object_ = nullptr;
-    void (*destroy_)(void*) = nullptr;
     std::string error_;
 };
 

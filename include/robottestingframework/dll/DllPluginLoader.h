@@ -11,7 +11,7 @@
 namespace robottestingframework {
 namespace plugin {
 
-class SharedLibrary;
+class PluginFactory;
 
 // Owns the library and the object it made; both go when the loader is closed or destroyed.
 class DllPluginLoader : public PluginLoader {
@@ -26,9 +26,8 @@ public:
     const std::string getLastError() override { return error_; }
 
 private:
-    std::unique_ptr<SharedLibrary> library_;
+    std::shared_ptr<const PluginFactory> factory_;
     void* object_ = nullptr;
-    void (*destroy_)(void*) = nullptr;
     std::string error_;
 };
 
