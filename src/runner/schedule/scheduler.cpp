@@ -60,16 +60,19 @@ Scheduler::Scheduler(RunPlan& plan, ResourcePools pools, SchedulerSettings setti
     after_.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         const SuiteSpec& spec = plan_.spec(i);
-        std::vector<std::string> params, environments, fixtureParams;
-        for (const auto& test : spec.tests) {
-            params.push_back(test.param);
-            environments.push_back(test.environment);
+        std::vector<ResourceTemplate> templates;
+        std::vector<std::string> fixtureParams;
+        for (std::size_t t = 0; t < spec.tests.size(); ++t) {
+            const TestSpec& test = spec.tests[t];
+            if (!variables::resourcesUsed(test.param).empty() ||
+                !variables::resourcesUsed(test.environment).empty()) {
+                templates.push_back({t, test.param, test.environment});
+            }
         }
         for (const auto& fixture : spec.fixtures) {
             fixtureParams.push_back(fixture.param);
         }
-        params_.push_back(std::move(params));
-        environments_.push_back(std::move(environments));
+        testTemplates_.push_back(std::move(templates));
         fixtureParams_.push_back(std::move(fixtureParams));
         // A test that depends on a test of another suite sees it as run one suite at a time
         // would: the later of the two suites starts once the earlier one ended.
@@ -171,9 +174,9 @@ void Scheduler::start(Job& job) {
         }
         return text;
     };
-    for (std::size_t t = 0; t < spec.tests.size(); ++t) {
-        spec.tests[t].param = variables::fillResources(params_[i][t], value);
-        spec.tests[t].environment = variables::fillResources(environments_[i][t], value);
+    for (const ResourceTemplate& given : testTemplates_[i]) {
+        spec.tests[given.test].param = variables::fillResources(given.param, value);
+        spec.tests[given.test].environment = variables::fillResources(given.environment, value);
     }
     std::vector<std::string> environment;
     for (const auto& pool : job.held.items) {

@@ -81,8 +81,14 @@ private:
     SchedulerSettings settings_;
     std::vector<std::unique_ptr<Job>> jobs_;
     std::vector<std::vector<std::size_t>> after_;  // per suite: earlier suites it depends on
-    // What a suite file said before ${resource.NAME} was filled in, per suite.
-    std::vector<std::vector<std::string>> params_, environments_, fixtureParams_;
+    // What a suite file said before ${resource.NAME} was filled in, per suite: only the tests
+    // that name a resource (a copy of every test's param would cost 10 000 strings for nothing).
+    struct ResourceTemplate {
+        std::size_t test;
+        std::string param, environment;
+    };
+    std::vector<std::vector<ResourceTemplate>> testTemplates_;
+    std::vector<std::vector<std::string>> fixtureParams_;
     TestResult* result_ = nullptr;  // during run()
     std::size_t running_ = 0;
     bool aloneRunning_ = false;  // an exclusive suite runs
