@@ -1,6 +1,7 @@
 // RunView: what the live page is told, in what order, and that test text stays data.
 #include <chrono>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -196,4 +197,25 @@ TEST(RunView, TwoTestsOfOneNameAreToldApartByIdAndARenameIsFollowed) {
     EXPECT_EQ(tests[1]["output"], "said by the second\n");
     auto suite = nlohmann::json::parse(view.snapshotJson())["suites"][0];
     EXPECT_EQ(suite["messages"][0]["text"], "a fixture");
+}
+
+TEST(RunView, RunningTestsAndSuitesSayWhenTheyStartedOnTheClockEveryChangeCarries) {
+    RunView view(false);
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}});
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    view.startTest(1, "reach");
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const double suiteStarted = snapshot["suites"][0]["startedAt"];
+    const double testStarted = snapshot["suites"][0]["tests"][0]["startedAt"];
+    EXPECT_GE(testStarted, suiteStarted + 0.015);
+    EXPECT_GE(snapshot["now"].get<double>(), testStarted);
+    // Each change says the clock as it is sent, after the thing it is about started.
+    const std::string stream = changesAfter(view, 0);
+    const std::size_t data = stream.rfind("data: ");
+    ASSERT_NE(data, std::string::npos) << stream;
+    auto change =
+        nlohmann::json::parse(stream.substr(data + 6, stream.find('\n', data) - data - 6));
+    EXPECT_EQ(change["type"], "test");
+    EXPECT_GE(change["now"].get<double>(), change["test"]["startedAt"].get<double>());
 }
