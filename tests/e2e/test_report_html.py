@@ -136,7 +136,8 @@ def test_page_from_file_url_filters_searches_and_shows_test_text_as_text(tmp_pat
 
 def test_the_example_run_as_a_page(tmp_path, browser):
     """The C++ and script example suites of `./run.sh example` (the robot's world is left to
-    test_examples.py); its screenshot, in build/test-artifacts/, is docs/html-report.png."""
+    test_examples.py); its screenshot is build/test-artifacts/example-report.png (docs/
+    html-report.png is test_report_html_details.py's, of a -j 2 run)."""
     examples = BUILD_DIR / "examples"
     run = run_runner("--suite", examples / "example.xml", "--suite", examples / "scripts.xml",
                      "--output", "html:example.html", cwd=tmp_path, timeout=60)

@@ -245,8 +245,12 @@
         if (box.open && !box.dataset.built) fillSuite(box, suite);
       });
       suitesBox.appendChild(box);
-      // Failures open; so is everything a search or a filter found.
-      if (bad || flaky || suite.problems || searching) box.open = true;
+      // Failures open; so is everything a search or a filter found. Their rows are built
+      // now, not on the toggle event, which comes later: what is shown is there at once.
+      if (bad || flaky || suite.problems || searching) {
+        box.open = true;
+        fillSuite(box, suite);
+      }
     }
     document.getElementById("shown").textContent = count + " of " + total + " tests shown";
     // The slowest of the tests shown: it follows the filter and the search.
