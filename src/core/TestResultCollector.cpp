@@ -70,7 +70,25 @@ void TestResultCollector::reset() {
     fixturesFailed_ = 0;
 }
 
+namespace {
+
+// When the event being handed to the listeners on this thread happened (steady clock,
+// seconds), if a relay kept it a while: under -j N a suite's events wait while the scheduler's
+// thread runs another suite, and their times are when they happened, not when they arrived.
+// 0: now.
+thread_local double t_eventHappened = 0;
+
+}  // namespace
+
+// The relay that replays kept events says when each happened (runner/schedule/suite_events.cpp).
+void setReplayedEventTime(double steadySeconds) {
+    t_eventHappened = steadySeconds;
+}
+
 double TestResultCollector::now() const {
+    if (t_eventHappened > 0) {
+        return t_eventHappened - std::chrono::duration<double>(origin_.time_since_epoch()).count();
+    }
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
 }
 

@@ -11,7 +11,7 @@ JUnitOutputter::JUnitOutputter(TestResultCollector& collector, bool verbose)
 
 std::string JUnitOutputter::xml() const {
     reporters::ReporterSettings settings;
-    settings.verbose = verbose_;
+    settings.passedChecks = verbose_;
     return reporters::JUnitReporter(collector_, settings).document();
 }
 

@@ -11,7 +11,8 @@ TextOutputter::TextOutputter(TestResultCollector& collector, bool verbose)
 
 std::string TextOutputter::text(bool summary) const {
     reporters::ReporterSettings settings;
-    settings.verbose = verbose_;
+    settings.passedChecks = verbose_;
+    settings.reports = verbose_;
     settings.summary = summary;
     return reporters::TextReporter(collector_, settings).document();
 }

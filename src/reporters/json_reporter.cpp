@@ -64,11 +64,29 @@ std::string lines(const std::string& text) {
     return out + "]";
 }
 
+// The messages of `events` as [{"kind","message","time"}]: reports and checks (passed ones
+// when `passedChecks`), and with `all` every other kind too (a fixture's failures).
+std::string messageList(const std::vector<ResultEvent>& events, long long origin, bool passedChecks,
+                        bool all) {
+    std::string out;
+    for (const ResultEvent& event : events) {
+        const bool message = event.kind == Kind::Report || event.kind == Kind::Check;
+        if ((!message && !all) || (event.kind == Kind::Check && event.passed && !passedChecks)) {
+            continue;
+        }
+        out += std::string(out.empty() ? "" : ",") +
+               "{\"kind\":" + jsonString(eventLabel(event.kind, event.passed)) +
+               ",\"message\":" + jsonString(event.message.toString()) +
+               ",\"time\":" + std::to_string(origin + milliseconds(event.time)) + "}";
+    }
+    return "[" + out + "]";
+}
+
 // `testId` is the test's place in the run ("suite.test", from 1): the same in every run of
 // the same suites, and apart for two tests of one name. `executionId` is the id its events
 // carried in this run.
 void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& suite,
-                const std::string& testId, long long origin, bool verbose) {
+                const std::string& testId, long long origin, bool passedChecks) {
     const long long start = origin + milliseconds(test.start);
     out += "{\"testId\":\"" + testId + "\"";
     out += ",\"executionId\":\"" + std::to_string(test.id) + "\"";
@@ -166,17 +184,8 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
             out += ",\"timeout\":" + jsonString(reason->message.toString());
         }
     }
-    if (verbose) {
-        std::string reports;
-        for (const ResultEvent& event : test.events) {
-            if (event.kind == Kind::Report || event.kind == Kind::Check) {
-                reports +=
-                    (reports.empty() ? "" : ",") +
-                    jsonString(std::string(toString(event.kind)) + ": " + event.message.toString());
-            }
-        }
-        out += ",\"reports\":[" + reports + "]";
-    }
+    // Every report and check, whatever -v said, each with its time (ms since the epoch).
+    out += ",\"reports\":" + messageList(test.events, origin, passedChecks, false);
     out += "}}}";
 }
 
@@ -218,17 +227,19 @@ std::string JsonReporter::document() {
     std::size_t index = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
         const std::size_t suitePlace = settings_.suitePlace(index++) + 1;
-        suites += std::string(suites.empty() ? "" : ",") +
-                  "{\"place\":" + std::to_string(suitePlace) +
-                  ",\"name\":" + jsonString(suite.name) +
-                  ",\"duration\":" + std::to_string(milliseconds(suite.duration)) + "}";
+        suites +=
+            std::string(suites.empty() ? "" : ",") + "{\"place\":" + std::to_string(suitePlace) +
+            ",\"name\":" + jsonString(suite.name) +
+            ",\"duration\":" + std::to_string(milliseconds(suite.duration)) +
+            ",\"messages\":" + messageList(suite.events, origin, settings_.passedChecks, true) +
+            "}";
         std::size_t testPlace = 0;
         for (const TestRecord& test : suite.tests) {
             out += first ? "\n" : ",\n";
             first = false;
             const std::string testId =
                 std::to_string(suitePlace) + "." + std::to_string(++testPlace);
-            appendTest(out, test, suite, testId, origin, settings_.verbose);
+            appendTest(out, test, suite, testId, origin, settings_.passedChecks);
         }
         if (suite.fixtureFailed) {
             fixtures += std::string(fixtures.empty() ? "" : ",") +

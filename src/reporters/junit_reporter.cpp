@@ -125,10 +125,10 @@ std::string problems(const std::vector<ResultEvent>& events) {
 }
 
 std::string systemOut(const std::vector<ResultEvent>& events, const std::string& output,
-                      bool verbose) {
+                      bool passedChecks) {
     std::string text;
     for (const ResultEvent& event : events) {
-        if (event.kind == Kind::Report || (verbose && event.kind == Kind::Check)) {
+        if (event.kind == Kind::Report || (passedChecks && event.kind == Kind::Check)) {
             text += eventLabel(event.kind, event.passed) + ": " + messageText(event.message) + "\n";
         }
     }
@@ -176,7 +176,7 @@ void appendAttempt(std::string& inner, const char* element, const TestAttempt& a
 }
 
 void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
-                    bool verbose) {
+                    bool passedChecks) {
     out += "    <testcase";
     // classname/name is the test's id (README: "Test ids"), so CI history follows a test
     // across workspaces; the name it gave itself is a property of the suite ("rtf.name.S.T":
@@ -209,7 +209,7 @@ void appendTestCase(std::string& out, const TestRecord& test, const std::string&
             appendAttempt(inner, element, attempt);
         }
     }
-    const std::string output = systemOut(test.events, test.output, verbose);
+    const std::string output = systemOut(test.events, test.output, passedChecks);
     if (!output.empty()) {
         inner += "      <system-out>" + escape(output, false) + "</system-out>\n";
     }
@@ -261,7 +261,7 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
 // Written into one string, front to back (the counts are known before the elements they head):
 // a run of 10 000 tests must not hold several copies of its report at once.
 std::string JUnitReporter::document() {
-    const bool verbose = settings_.verbose;
+    const bool passedChecks = settings_.passedChecks;
     const std::string host = hostname();
     Counts total;
     double totalTime = 0;
@@ -308,7 +308,7 @@ std::string JUnitReporter::document() {
         out += ">\n";
         out += suiteProperties(settings_, index++ == 0, &suite, place + 1);
         for (const TestRecord& test : suite.tests) {
-            appendTestCase(out, test, suiteName, verbose);
+            appendTestCase(out, test, suiteName, passedChecks);
         }
         // A fixture that failed or collapsed is an error of its own, so CI shows the suite red
         // even when every test was only skipped.
@@ -326,7 +326,7 @@ std::string JUnitReporter::document() {
                    attr("type", "fixture") + ">" + escape(suiteProblems, false) +
                    "</error>\n    </testcase>\n";
         }
-        const std::string output = systemOut(suite.events, suite.output, verbose);
+        const std::string output = systemOut(suite.events, suite.output, passedChecks);
         if (!output.empty()) {
             out += "    <system-out>" + escape(output, false) + "</system-out>\n";
         }

@@ -5,7 +5,9 @@
 #pragma once
 
 #include <cstddef>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <robottestingframework/TestListener.h>
@@ -14,10 +16,22 @@
 namespace robottestingframework {
 namespace reporters {
 
+// What the plan says of a test that its events do not: the HTML report shows it.
+struct TestFacts {
+    std::string type;    // "dll", "python", ...; empty: from the file
+    std::string plugin;  // as the suite wrote it
+    std::string param;   // expanded
+    std::vector<std::string> tags;
+};
+
 // What the command line says about every output.
 struct ReporterSettings {
-    bool verbose = false;  // --verbose: reports, checks and output in full
-    bool summary = true;   // --no-summary turns it off (text only)
+    // The runner's reports keep everything whatever -v/-d say (those change only the console).
+    // RTF 2.x's outputters keep these only when made verbose: passed checks (JUnitOutputter,
+    // TextOutputter), reports and what tests printed (TextOutputter).
+    bool passedChecks = true;
+    bool reports = true;
+    bool summary = true;  // --no-summary turns it off (text only)
     // The shard this run is (--shard-index/--shard-count or a CI engine's variables): JUnit
     // and JSON say so, for --merge --expect-shards to check.
     bool sharded = false;
@@ -28,6 +42,11 @@ struct ReporterSettings {
     // was taken: JUnit's testsuite id and JSON's testId, so merged shards order their suites
     // as one machine would. Empty: the suites' places in this run.
     std::vector<std::size_t> suitePlaces;
+    // What the run was, as "name: value" pairs in order (command line, variables, host,
+    // version, isolation, jobs): the HTML report's run metadata. Empty outside the runner.
+    std::vector<std::pair<std::string, std::string>> runFacts;
+    // Each planned test's facts by its whole id ("SUITE/id"). Empty outside the runner.
+    std::map<std::string, TestFacts> testFacts;
     std::size_t suitePlace(std::size_t index) const {
         return suitePlaces.empty() ? index : suitePlaces[index % suitePlaces.size()];
     }

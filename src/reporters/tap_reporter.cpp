@@ -1,10 +1,12 @@
 #include "reporters/tap_reporter.h"
 
 #include <algorithm>
+#include <cstdio>
 
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "reporters/summary.h"
 #include "reporters/text_safety.h"
 
 namespace robottestingframework {
@@ -59,8 +61,21 @@ const char* severity(TestStatus status) {
     }
 }
 
+// A test's reports and checks as YAML lines ("  messages:" and one item each), or nothing.
+std::string messageLines(const std::vector<std::string>& messages) {
+    if (messages.empty()) {
+        return "";
+    }
+    std::string text = "  messages:\n";
+    for (const std::string& message : messages) {
+        text += "    - " + jsonString(message) + "\n";
+    }
+    return text;
+}
+
 // YAML diagnostics for a failed point; strings as JSON literals, which YAML reads as they are.
-std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output) {
+std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output,
+                        const std::vector<std::string>& messages = {}) {
     std::string text = "  ---\n";
     text += "  message: " + jsonString(reason.getMessage()) + "\n";
     text += std::string("  severity: ") + severity(status) + "\n";
@@ -74,6 +89,7 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     if (!output.empty()) {
         text += "  output: " + jsonString(output) + "\n";
     }
+    text += messageLines(messages);
     text += "  ...\n";
     return text;
 }
@@ -100,8 +116,8 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
     if (test.status == TestStatus::Passed && test.retries > 0) {
         // Flaky: passed on a later attempt. TAP has no such directive; the YAML says it.
         block.body += "ok " + number + " - " + name +
-                      "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) +
-                      "\n  ...\n";
+                      "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) + "\n" +
+                      messageLines(test.messages) + "  ...\n";
         return;
     }
     if (!isFailure(test.status)) {
@@ -110,11 +126,14 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
             block.body += " # SKIP " + oneLine(test.reason.toString());
         }
         block.body += "\n";
+        if (!test.messages.empty()) {
+            block.body += "  ---\n" + messageLines(test.messages) + "  ...\n";
+        }
         return;
     }
     block.failed = true;
     block.body += "not ok " + number + " - " + name + "\n" +
-                  diagnostics(test.status, test.reason, test.output);
+                  diagnostics(test.status, test.reason, test.output, test.messages);
 }
 
 void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts) {
@@ -191,7 +210,7 @@ void TapReporter::startTest(const Test* test) {
     const std::string name = test == nullptr          ? ""
                              : test->getKey().empty() ? test->getName()
                                                       : test->getKey();
-    OpenTest open{idOf(test), name, TestStatus::Passed, {}, {}, 0};
+    OpenTest open{idOf(test), name, TestStatus::Passed, {}, {}, 0, {}};
     if (test != nullptr && retrying_ != 0 && idOf(test) == retrying_) {
         open.retries = retryCount_;
     }
@@ -216,18 +235,33 @@ void TapReporter::endTest(const Test* test) {
     }
 }
 
-void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg) {
+void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg, bool passed) {
     const TestStatus state = stateOf(kind);
+    // Reports and checks are kept whatever -v says, each with its time from the run's start.
+    const bool message = (kind == Kind::Report || kind == Kind::Check) &&
+                         !(kind == Kind::Check && passed && !settings_.passedChecks);
+    std::string line;
+    if (message) {
+        char at[32];
+        std::snprintf(at, sizeof(at), "[%.3f s] ", collector_.duration());
+        line = at + eventLabel(kind, passed) + ": " + messageText(msg);
+    }
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->id == idOf(test)) {
             if (state > it->status) {
                 it->status = state;
                 it->reason = msg;
             }
+            if (message) {
+                it->messages.push_back(line);
+            }
             return;
         }
     }
-    // Not a test's own: a fixture's, as the collector counts it.
+    // Not a test's own: a fixture's, as the collector counts it. Its reports are comments.
+    if (message) {
+        blocks_.back().body += "# " + oneLine(line) + "\n";
+    }
     if (isFailure(state) && blocks_.size() > 1) {
         blocks_.back().fixtureProblems.push_back(msg);
     }
@@ -235,6 +269,9 @@ void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg) {
 
 void TapReporter::addReport(const Test* test, TestMessage msg) {
     note(Kind::Report, test, msg);
+}
+void TapReporter::addCheck(const Test* test, TestMessage msg, bool passed) {
+    note(Kind::Check, test, msg, passed);
 }
 void TapReporter::addError(const Test* test, TestMessage msg) {
     note(Kind::Error, test, msg);

@@ -15,8 +15,9 @@ namespace reporters {
 
 class TapReporter : public StreamingReporter {
 public:
-    TapReporter(const TestResultCollector& /*collector*/, ReporterSettings settings)
-        : settings_(settings) {}
+    // The collector's clock times the messages.
+    TapReporter(const TestResultCollector& collector, ReporterSettings settings)
+        : collector_(collector), settings_(settings) {}
     std::string document() override;
 
     void startTestSuite(const TestSuite* suite) override;
@@ -24,6 +25,7 @@ public:
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
     void addReport(const Test* test, TestMessage msg) override;
+    void addCheck(const Test* test, TestMessage msg, bool passed) override;
     void addError(const Test* test, TestMessage msg) override;
     void addFailure(const Test* test, TestMessage msg) override;
     void addSkipped(const Test* test, TestMessage reason) override;
@@ -51,7 +53,8 @@ private:
         TestStatus status = TestStatus::Passed;
         TestMessage reason;  // the first message of the state it has now
         std::string output;
-        std::size_t retries = 0;  // earlier failed attempts (--retries)
+        std::size_t retries = 0;            // earlier failed attempts (--retries)
+        std::vector<std::string> messages;  // its reports and checks, "[time] kind: text"
     };
     // The point last written, so that a retry can take it back: one point per test.
     struct LastPoint {
@@ -66,10 +69,11 @@ private:
     std::uint64_t retrying_ = 0;  // the id of the test whose next start is a retry; 0 for none
     std::size_t retryCount_ = 0;
 
-    void note(ResultEvent::Kind kind, const Test* test, const TestMessage& msg);
+    void note(ResultEvent::Kind kind, const Test* test, const TestMessage& msg, bool passed = true);
     static void closeTest(std::vector<Block>& blocks, const OpenTest& test);
     static void closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts);
 
+    const TestResultCollector& collector_;
     ReporterSettings settings_;
     std::vector<Block> blocks_{Block{}};  // the top level first, the innermost suite last
     std::vector<OpenTest> open_;

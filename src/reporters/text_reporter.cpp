@@ -10,15 +10,20 @@ namespace reporters {
 
 namespace {
 
-void appendEvents(std::string& out, const std::vector<ResultEvent>& events, bool verbose,
-                  const char* indent) {
+// Every message, each with its time ("[1.042 s]", from the run's start): what -v shows on the
+// console is the report's whatever -v says.
+void appendEvents(std::string& out, const std::vector<ResultEvent>& events,
+                  const ReporterSettings& settings, const char* indent) {
     using Kind = ResultEvent::Kind;
     for (const ResultEvent& event : events) {
-        if (!verbose && (event.kind == Kind::Report || event.kind == Kind::Check)) {
+        if ((!settings.passedChecks && event.kind == Kind::Check && event.passed) ||
+            (!settings.reports && event.kind == Kind::Report)) {
             continue;
         }
-        out += indent + eventLabel(event.kind, event.passed) + ": " + messageText(event.message) +
-               "\n";
+        char at[32];
+        std::snprintf(at, sizeof(at), "[%.3f s] ", event.time);
+        out += indent + std::string(at) + eventLabel(event.kind, event.passed) + ": " +
+               messageText(event.message) + "\n";
     }
 }
 
@@ -44,7 +49,6 @@ void appendOutput(std::string& out, const std::string& output, const char* inden
 
 std::string TextReporter::document() {
     const bool summary = settings_.summary;
-    const bool verbose = settings_.verbose;
     std::string out = "Robot Testing Framework results\n";
     for (const SuiteRecord& suite : collector_.suites()) {
         out += "\n";
@@ -57,8 +61,8 @@ std::string TextReporter::document() {
                 out += "  " + suite.description + "\n";
             }
         }
-        appendEvents(out, suite.events, verbose, "  ");
-        if (verbose) {
+        appendEvents(out, suite.events, settings_, "  ");
+        if (settings_.reports) {
             appendOutput(out, suite.output, "  ");
         }
         for (const TestRecord& test : suite.tests) {
@@ -66,8 +70,8 @@ std::string TextReporter::document() {
             std::snprintf(word, sizeof(word), "%-11s", statusWord(test.status));
             out += "  " + std::string(word) + " " + shownAs(test.key, test.name) + "  (" +
                    seconds(test.duration) + ")\n";
-            appendEvents(out, test.events, verbose, "      ");
-            if (verbose) {
+            appendEvents(out, test.events, settings_, "      ");
+            if (settings_.reports) {
                 appendOutput(out, test.output, "      ");
             }
         }

@@ -73,12 +73,17 @@ int statusCode(const std::string& state) {
 
 RunView::RunView(bool verbose) : verbose_(verbose) {}
 
+double RunView::clock() const {
+    return secondsSince(origin_);
+}
+
 RunView::SuiteView& RunView::openSuite() {
     if (openSuite_ == none) {
         // Tests run outside any suite get one of their own.
         SuiteView loose;
         loose.name = "(no suite)";
         loose.started = std::chrono::steady_clock::now();
+        loose.startedAt = clock();
         suites_.push_back(std::move(loose));
         openSuite_ = suites_.size() - 1;
         publishSuite(openSuite_);
@@ -120,6 +125,7 @@ void RunView::startSuite(const std::string& name, const std::vector<Planned>& te
     SuiteView suite;
     suite.name = name;
     suite.started = std::chrono::steady_clock::now();
+    suite.startedAt = clock();
     for (const auto& test : tests) {
         TestView view;
         view.id = test.id;
@@ -185,6 +191,7 @@ void RunView::startTest(std::uint64_t id, const std::string& name) {
     test.name = name;
     test.state = "running";
     test.started = std::chrono::steady_clock::now();
+    test.startedAt = clock();
     openTests_.push_back({id, openSuite_, index});
     log("test " + name + " started");
     publishTest(openSuite_, index);
@@ -371,6 +378,7 @@ Json toJson(const RunView::TestView& test) {
                  {"name", test.name},
                  {"state", test.state},
                  {"duration", test.duration},
+                 {"startedAt", test.startedAt},
                  {"messages", toJson(test.messages)},
                  {"hiddenReports", test.hiddenReports},
                  {"output", test.output}};
@@ -394,6 +402,7 @@ void RunView::publishSuite(std::size_t index) {
                   {{"name", suite.name},
                    {"state", suite.state},
                    {"duration", suite.duration},
+                   {"startedAt", suite.startedAt},
                    {"messages", toJson(suite.messages)},
                    {"hiddenReports", suite.hiddenReports},
                    {"tests", Json::array()}}}};
@@ -438,12 +447,15 @@ std::string RunView::snapshotJson() const {
         suites.push_back({{"name", suite.name},
                           {"state", suite.state},
                           {"duration", suite.duration},
+                          {"startedAt", suite.startedAt},
                           {"messages", toJson(suite.messages)},
                           {"hiddenReports", suite.hiddenReports},
                           {"tests", std::move(tests)}});
     }
-    Json snapshot = {
-        {"seq", lastChange_}, {"run", Json::parse(runJson())}, {"suites", std::move(suites)}};
+    Json snapshot = {{"seq", lastChange_},
+                     {"now", clock()},
+                     {"run", Json::parse(runJson())},
+                     {"suites", std::move(suites)}};
     return dump(snapshot);
 }
 
@@ -474,9 +486,11 @@ std::uint64_t RunView::waitForChanges(std::uint64_t since, std::chrono::millisec
     changed_.wait_for(lock, timeout, [&] { return closed_ || lastChange_ > since; });
     closed = closed_;
     // A change replaced by a later one of the same thing is not sent: the later one says all.
+    // Each says the view's clock as it is sent, which the page ticks running tests by.
+    const std::string now = ",\"now\":" + Json(clock()).dump() + ",";
     for (auto it = changes_.upper_bound(since); it != changes_.end(); ++it) {
         out += "id: " + std::to_string(it->first) +
-               "\ndata: {\"seq\":" + std::to_string(it->first) + "," + it->second.substr(1) +
+               "\ndata: {\"seq\":" + std::to_string(it->first) + now + it->second.substr(1) +
                "\n\n";
     }
     return lastChange_;

@@ -72,6 +72,7 @@ public:
         std::string state = "not run";  // "not run", "running", or toString(TestStatus)
         TestStatus worst = TestStatus::Passed;
         std::chrono::steady_clock::time_point started;
+        double startedAt = 0;  // seconds on the view's clock ("now" of what the page reads)
         double duration = 0;
         std::vector<Message> messages;
         std::size_t hiddenReports = 0;  // messages beyond the caps, counted only
@@ -86,6 +87,7 @@ private:
         std::string state = "running";  // "running", "passed", "failed"
         bool failed = false;
         std::chrono::steady_clock::time_point started;
+        double startedAt = 0;  // on the view's clock, as TestView's
         double duration = 0;
         std::vector<Message> messages;
         std::size_t hiddenReports = 0;
@@ -106,7 +108,12 @@ private:
     void log(const std::string& line);
     std::string runJson() const;
 
+    // Seconds since the view was made. The snapshot and every change say it ("now"), and
+    // running tests and suites when they started on it: the page ticks their elapsed time.
+    double clock() const;
+
     const bool verbose_;
+    const std::chrono::steady_clock::time_point origin_ = std::chrono::steady_clock::now();
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;
     bool closed_ = false;

@@ -65,8 +65,12 @@ def normal_ctrf(path):
     for test in report["results"]["tests"]:
         for key in ("start", "stop", "duration", "executionId"):
             test.pop(key)
+        for message in test["extra"]["robotology.rtf"].get("reports", []):
+            message.pop("time")
     for suite in report["results"]["extra"]["robotology.rtf"]["suites"]:
         suite.pop("duration")
+        for message in suite.get("messages", []):
+            message.pop("time")
     return report
 
 

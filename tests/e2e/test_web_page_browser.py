@@ -116,3 +116,63 @@ def test_page_opened_after_the_run_shows_the_final_result(tmp_path, browser):
             run.proc.send_signal(signal.SIGINT)
         status = run.wait(timeout=20)
     assert status == 0, run.output()
+
+
+def elapsed_text(driver, selector):
+    return driver.execute_script(
+        "const node = document.querySelector(arguments[0]);"
+        "return node ? node.textContent : null;", selector)
+
+
+def seconds_in(text):
+    return float(text.rsplit(" ", 2)[-2])
+
+
+@pytest.mark.parametrize("isolation", ["none", "process"])
+def test_running_fixtures_and_tests_tick_their_elapsed_time(tmp_path, suite_file, browser,
+                                                            isolation):
+    """Issue 22, item 6: a fixture setting up and a test running show how long they have been
+    at it, counting up on the page between the run's events."""
+    fixture_go, test_go = tmp_path / "fixture-go", tmp_path / "test-go"
+    (tmp_path / "world.py").write_text(f"""import os, time
+class FixtureManager:
+    def setup(self, param):
+        for _ in range(1200):
+            if os.path.exists({str(fixture_go)!r}):
+                break
+            time.sleep(0.05)
+        return True
+""")
+    waiting = waiting_test(tmp_path, "move arm", test_go)
+    suite = suite_file(f"""<suite name="arm">
+  <fixture>{escape(str(tmp_path / "world.py"))}</fixture>
+  <test type="exec">{escape(str(waiting))}</test>
+</suite>""")
+    run = WebRun("-s", suite, "--isolation", isolation, "--web-linger", "120", cwd=tmp_path)
+    try:
+        browser.get(run.url)
+        wait = WebDriverWait(browser, 30, poll_frequency=0.05)
+        title = "section.suite h2 .elapsed"
+        wait.until(lambda d: (elapsed_text(d, title) or "").startswith("fixture setting up"))
+        first = seconds_in(elapsed_text(browser, title))
+        wait.until(lambda d: seconds_in(elapsed_text(d, title) or "x 0 s") >= first + 0.5)
+
+        fixture_go.touch()
+        cell = "tr.test td.elapsed"
+        wait.until(lambda d: (elapsed_text(d, cell) or "").startswith("running"))
+        first = seconds_in(elapsed_text(browser, cell))
+        wait.until(lambda d: seconds_in(elapsed_text(d, cell) or "x 0 s") >= first + 0.5)
+        assert not elapsed_text(browser, title).startswith("fixture"), elapsed_text(browser, title)
+
+        test_go.touch()
+        wait.until(lambda d: row_state(d, "move arm") == "passed")
+        wait.until(lambda d: d.find_element(By.ID, "summary").text.startswith("Finished"))
+        assert browser.find_elements(By.CSS_SELECTOR, ".elapsed") == []
+        run.wait_for_line("final page stays")
+    finally:
+        fixture_go.touch()
+        test_go.touch()
+        if run.proc.poll() is None:
+            run.proc.send_signal(signal.SIGINT)
+        status = run.wait(timeout=20)
+    assert status == 0, run.output()

@@ -1,3 +1,4 @@
+#include <chrono>
 #include <string>
 #include <thread>
 #include <vector>
@@ -9,6 +10,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "core_test_helpers.h"
+#include "reporters/html_reporter.h"
 #include "reporters/reporter_registry.h"
 #include "reporters/tap_reporter.h"
 #include "reporters/text_safety.h"
@@ -135,4 +137,72 @@ TEST(TextSafety, OneMarkupEscapingForEachPlaceTextGoes) {
     EXPECT_EQ(escapeMarkup(text, Markup::Attribute),
               "&lt;a href=&quot;x&quot;&gt;it's &amp; &#9;tab&#10;line&#13;");
     EXPECT_EQ(escapeMarkup("caf\xC3\xA9", Markup::Quoted), "caf\xC3\xA9");
+}
+
+TEST(TapReporter, KeepsEveryReportAndCheckWithItsTimeAndAFixturesAsComments) {
+    TestResultCollector collector;
+    TapReporter tap(collector, ReporterSettings{});
+    TestSuite suite("s");
+    LambdaTest a("a");
+    tap.startTestSuite(&suite);
+    tap.addReport(&suite, TestMessage("world is ready"));
+    tap.startTest(&a);
+    tap.addReport(&a, TestMessage("moved the arm"));
+    tap.addCheck(&a, TestMessage("joint in range"), true);
+    tap.endTest(&a);
+    tap.endTestSuite(&suite);
+    const std::string text = tap.document();
+    EXPECT_TRUE(has(text, "    # [")) << text;
+    EXPECT_TRUE(has(text, " s] report: world is ready\n")) << text;
+    EXPECT_TRUE(has(text, "    ok 1 - a\n      ---\n      messages:\n        - \"[")) << text;
+    EXPECT_TRUE(has(text, " s] report: moved the arm\"\n")) << text;
+    EXPECT_TRUE(has(text, " s] check ok: joint in range\"\n      ...\n")) << text;
+}
+
+TEST(TextReporter, KeepsReportsChecksAndOutputWithTheirTimeByDefault) {
+    TestResultCollector collector;
+    TestResult result;
+    result.addListener(&collector);
+    LambdaTest pass("pass", [] {
+        ROBOTTESTINGFRAMEWORK_TEST_REPORT("all good");
+        ROBOTTESTINGFRAMEWORK_TEST_CHECK(true, "fine");
+    });
+    TestSuite suite("arm");
+    suite.addTest(&pass);
+    result.startTestRunner();
+    suite.run(result);
+    result.endTestRunner();
+    const std::string text = findReporterType("text")->make(collector, {})->document();
+    EXPECT_TRUE(has(text, " s] report: all good")) << text;
+    EXPECT_TRUE(has(text, " s] check ok: fine")) << text;
+}
+
+TEST(HtmlReporter, ASuitesFixtureTimesAreBeforeItsFirstTestAndAfterItsLast) {
+    TestResultCollector collector;
+    TestSuite suite("arm");
+    LambdaTest a("a");
+    a.setKey("a.py");
+    collector.startTestSuite(&suite);
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    collector.startTest(&a);
+    collector.endTest(&a);
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    collector.endTestSuite(&suite);
+    ReporterSettings settings;
+    settings.testFacts["arm/a.py"] = {"python", "a.py", "--speed 30", {"slow", "arm"}};
+    HtmlReporter html(collector, settings);
+    const SuiteRecord& record = collector.suites().at(0);
+    const std::string data = html.suiteData(record);
+    const auto field = [&data](const std::string& name) {
+        const std::size_t at = data.find("\"" + name + "\":");
+        return at == std::string::npos ? -1.0 : std::stod(data.substr(at + name.size() + 3));
+    };
+    EXPECT_GE(field("setup"), 0.05) << data;
+    EXPECT_GE(field("teardown"), 0.03) << data;
+    EXPECT_LT(field("setup") + field("teardown"), record.duration + 1e-6) << data;
+    const std::string test = html.testData(record.tests.at(0), record);
+    EXPECT_TRUE(has(test,
+                    "\"fullId\":\"arm/a.py\",\"type\":\"python\",\"param\":\"--speed 30\","
+                    "\"tags\":[\"slow\",\"arm\"]"))
+        << test;
 }

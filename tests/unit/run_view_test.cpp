@@ -1,6 +1,7 @@
 // RunView: what the live page is told, in what order, and that test text stays data.
 #include <chrono>
 #include <string>
+#include <thread>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -21,6 +22,15 @@ std::string changesAfter(const RunView& view, std::uint64_t since, std::uint64_t
         *last = got;
     }
     return out;
+}
+
+// The changes with each one's "now" (the clock as it was sent) left out.
+std::string withoutClock(std::string changes) {
+    for (std::size_t at = changes.find("\"now\":"); at != std::string::npos;
+         at = changes.find("\"now\":", at)) {
+        changes.erase(at, changes.find(',', at) + 1 - at);
+    }
+    return changes;
 }
 
 }  // namespace
@@ -76,8 +86,9 @@ TEST(RunView, ChangesAreNumberedAndReplayedAfterANumber) {
     std::string more = changesAfter(view, last);
     EXPECT_EQ(more.rfind("id: " + std::to_string(last + 1) + "\n", 0), 0u) << more;
     EXPECT_NE(more.find(R"("state":"running")"), std::string::npos) << more;
-    // A number beyond this run (a page left open on another run) gets everything again.
-    EXPECT_EQ(changesAfter(view, 1000), changesAfter(view, 0));
+    // A number beyond this run (a page left open on another run) gets everything again, each
+    // change with the clock as it is sent ("now"), which alone differs.
+    EXPECT_EQ(withoutClock(changesAfter(view, 1000)), withoutClock(changesAfter(view, 0)));
 }
 
 TEST(RunView, AChangeReplacedByALaterOneOfTheSameThingIsNotKept) {
@@ -196,4 +207,25 @@ TEST(RunView, TwoTestsOfOneNameAreToldApartByIdAndARenameIsFollowed) {
     EXPECT_EQ(tests[1]["output"], "said by the second\n");
     auto suite = nlohmann::json::parse(view.snapshotJson())["suites"][0];
     EXPECT_EQ(suite["messages"][0]["text"], "a fixture");
+}
+
+TEST(RunView, RunningTestsAndSuitesSayWhenTheyStartedOnTheClockEveryChangeCarries) {
+    RunView view(false);
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}});
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    view.startTest(1, "reach");
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const double suiteStarted = snapshot["suites"][0]["startedAt"];
+    const double testStarted = snapshot["suites"][0]["tests"][0]["startedAt"];
+    EXPECT_GE(testStarted, suiteStarted + 0.015);
+    EXPECT_GE(snapshot["now"].get<double>(), testStarted);
+    // Each change says the clock as it is sent, after the thing it is about started.
+    const std::string stream = changesAfter(view, 0);
+    const std::size_t data = stream.rfind("data: ");
+    ASSERT_NE(data, std::string::npos) << stream;
+    auto change =
+        nlohmann::json::parse(stream.substr(data + 6, stream.find('\n', data) - data - 6));
+    EXPECT_EQ(change["type"], "test");
+    EXPECT_GE(change["now"].get<double>(), change["test"]["startedAt"].get<double>());
 }

@@ -258,7 +258,14 @@ private:
             case Stop::None:
                 break;
         }
+        // The traceback starts with the message, which the report shows already: once is
+        // enough, so the detail keeps the traceback only.
         TestMessage message = errorLocation;
+        const std::string& text = message.getMessage();
+        if (!text.empty() && error.compare(0, text.size(), text) == 0) {
+            error.erase(0, text.size());
+            error.erase(0, error.find_first_not_of('\n'));
+        }
         message.setDetail(error);
         throw TestErrorException(message);
     }

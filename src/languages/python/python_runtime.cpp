@@ -317,6 +317,22 @@ void guardProcessExit() {
     g_exitGuard = globals.release().ptr();  // never released, like the interpreter
 }
 
+// A test that crashes the process natively (a segfault in an extension, ctypes, abort()) gets
+// its Python stack, every thread's, written to stderr as the process dies: in a worker that is
+// the test's output, which the report keeps beside "crashed: SIGSEGV". The handlers chain to
+// the ones before them, so the process still dies of its signal. In the runner's own process
+// (--isolation none) the runner dies too; the stack then goes to its stderr.
+void dumpStackOnCrash() {
+    try {
+        py::module_ sys = py::module_::import("sys");
+        py::module_::import("faulthandler")
+            .attr("enable")(py::arg("file") = sys.attr("__stderr__"),
+                            py::arg("all_threads") = true);
+    } catch (py::error_already_set&) {
+        // No stderr to write to (closed, or not a file): nothing to dump into.
+    }
+}
+
 // What a test does, on a script of nothing: compile, run it as a module, make its TestCase and
 // call it, in its Scope. The first time a process does it, it faults in (and, in a fork, copies)
 // the pages it touches; a rehearsal does that ahead of the test (GIL held).
@@ -362,6 +378,7 @@ void ensureInterpreter() {
             g_scopeType.inc_ref();  // never released: the interpreter is never finalized
             addVirtualEnvironment();
             writeLinesAsTheyEnd();
+            dumpStackOnCrash();
             guardProcessExit();
             installWakeHandler();
         }

@@ -19,6 +19,7 @@
 #include "runner/cli/planned_run.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/progress_plan.h"
+#include "runner/cli/run_facts.h"
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
@@ -76,6 +77,7 @@ int main(int argc, char** argv) {
     plan.setRetries(options.retries);
     for (auto& suite : planned.suites) {
         applyOverrides(suite, inputs.overrides);
+        addTestFacts(suite, planned.reportSettings.testFacts);
         plan.addSuite(std::move(suite));
     }
     planned.suites.clear();

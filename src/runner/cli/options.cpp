@@ -171,6 +171,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         "(unless --allow-empty), 130 when interrupted by Ctrl-C "
         "(SIGINT), 143 when stopped by SIGTERM.");
     app.option_defaults()->always_capture_default(false);
+    options.commandLine.assign(argv, argv + argc);
 
     std::vector<std::string> outputs;
     std::string outputType = "text";

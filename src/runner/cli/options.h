@@ -43,12 +43,13 @@ struct Options {
     std::vector<OutputRequest> outputs;
     bool noOutput = false;
     bool noSummary = false;
-    bool webReporter = false;           // --web-reporter/-w
-    int webPort = 8080;                 // --web-port N; 0: a free port
-    std::string webHost = "127.0.0.1";  // --web-host ADDRESS
-    double webLinger = 0;               // --web-linger SECONDS: serve the final page that long
-    bool detail = false;                // --detail/-d: every check on the console
-    bool verbose = false;               // --verbose/-v: reports and output on the console
+    bool webReporter = false;              // --web-reporter/-w
+    int webPort = 8080;                    // --web-port N; 0: a free port
+    std::string webHost = "127.0.0.1";     // --web-host ADDRESS
+    double webLinger = 0;                  // --web-linger SECONDS: serve the final page that long
+    bool detail = false;                   // --detail/-d: every check on the console
+    bool verbose = false;                  // --verbose/-v: reports and output on the console
+    std::vector<std::string> commandLine;  // argv as given, for the reports' run facts
     Isolation isolation = Isolation::Process;  // --isolation process|none
     double timeout = 0;                        // --timeout SECONDS for every test; 0: none
     bool failFast = false;                     // --fail-fast: the first failure stops the run

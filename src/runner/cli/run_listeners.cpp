@@ -7,6 +7,7 @@
 
 #include "reporters/reporter_registry.h"
 #include "runner/cli/program_name.h"
+#include "runner/cli/run_facts.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -75,10 +76,11 @@ RunListeners::RunListeners(const Options& options,
     if (!options.verbose) {
         console_.hideUncriticalMessages();
     }
-    // The outputs read the per-test records only, and show checks only when verbose.
+    // The outputs read the per-test records only. They keep every report and check whatever
+    // -v/-d say: those change only what the console prints.
     collector_.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
     collector_.setKeepEventLog(false);
-    collector_.setKeepChecks(options.verbose);
+    collector_.setKeepChecks(true);
     ParallelConsoleSettings parallelSettings;
     parallelSettings.verbose = options.verbose;
     parallelSettings.colours = colours;
@@ -115,7 +117,8 @@ RunListeners::RunListeners(const Options& options,
     // The gate (--fail-fast, depends) listens to each suite's events as they come: the
     // scheduler adds it to them.
     reporters::ReporterSettings settings = reportSettings;
-    settings.verbose = options.verbose;
+    settings.passedChecks = true;
+    settings.runFacts = runFacts(options);
     settings.summary = !options.noSummary;
     for (const auto& request : options.outputs) {
         // The option parser let only the table's types through.

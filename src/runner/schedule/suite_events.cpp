@@ -1,10 +1,30 @@
 #include "runner/schedule/suite_events.h"
 
+#include <chrono>
+
 namespace robottestingframework {
+
+// In the collector (TestResultCollector.cpp): the time the event now handed on happened, so a
+// kept event is timed when it happened (0: now).
+void setReplayedEventTime(double steadySeconds);
+
 namespace runner {
 
+namespace {
+
+double steadySeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+}  // namespace
+
+// A kept event carries in `data.time` when it happened (see onEvent): the collector times
+// it so, and the reports' start times, durations and timeline lanes are the suite's own.
 void replay(const SuiteEvents::Event& event, TestResult& result) {
+    setReplayedEventTime(event.data.time);
     result.publish(event);
+    setReplayedEventTime(0);
 }
 
 std::vector<SuiteEvents::Event> SuiteEvents::take() {
@@ -16,7 +36,7 @@ std::vector<SuiteEvents::Event> SuiteEvents::take() {
 
 void SuiteEvents::onEvent(const RunEvent& event) {
     if (direct_ != nullptr) {
-        replay(event, *direct_);
+        direct_->publish(event);
         return;
     }
     bool first = false;
@@ -24,6 +44,7 @@ void SuiteEvents::onEvent(const RunEvent& event) {
         std::lock_guard<std::mutex> lock(mutex_);
         first = events_.empty();
         events_.push_back(event);
+        events_.back().data.time = steadySeconds();  // when it happened (see replay)
     }
     // One wake-up per batch: the scheduler takes them all at once.
     if (first && wake_) {

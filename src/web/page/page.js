@@ -7,6 +7,35 @@ const suites = [];
 let lastSeq = 0;
 let source = null;
 let drawPending = false;
+// The run view's clock ("now" of the snapshot and of each change) less this page's: running
+// tests and suites tick their elapsed time from when they started on it.
+let clockOffset = null;
+
+function setClock(now) {
+  if (typeof now === "number") clockOffset = now - performance.now() / 1000;
+}
+
+function elapsedSince(startedAt) {
+  if (clockOffset === null || typeof startedAt !== "number") return 0;
+  return Math.max(0, performance.now() / 1000 + clockOffset - startedAt);
+}
+
+// A ticking "running 1.2 s": its text is redrawn by tick() until the change that ends it.
+function elapsedNode(tag, className, startedAt, what) {
+  const node = element(tag, className + " elapsed");
+  node.dataset.startedAt = startedAt;
+  node.dataset.what = what;
+  node.textContent = what + " " + seconds(elapsedSince(startedAt));
+  return node;
+}
+
+function tick() {
+  for (const node of document.querySelectorAll(".elapsed")) {
+    node.textContent = node.dataset.what + " " +
+        seconds(elapsedSince(Number(node.dataset.startedAt)));
+  }
+}
+setInterval(tick, 200);
 
 function element(tag, className, text) {
   const node = document.createElement(tag);
@@ -49,19 +78,36 @@ function testRow(test) {
   }
   if (test.output) name.appendChild(element("pre", "output", test.output));
   row.appendChild(name);
-  const running = test.state === "running" || test.state === "not run";
-  row.appendChild(element("td", "duration", running ? "" : seconds(test.duration)));
+  if (test.state === "running") {
+    row.appendChild(elapsedNode("td", "duration", test.startedAt, "running"));
+  } else {
+    row.appendChild(element("td", "duration", test.state === "not run" ? "" : seconds(test.duration)));
+  }
   return row;
+}
+
+function suiteTitle(suite) {
+  const title = element("h2");
+  title.appendChild(element("span", stateClass(suite.state), suite.state));
+  title.appendChild(document.createTextNode(" "));
+  title.appendChild(element("span", "suite-name", suite.name));
+  if (suite.state !== "running") {
+    title.appendChild(element("span", "where", seconds(suite.duration)));
+  } else {
+    // Before its first test the fixture sets up; after its last one it tears down.
+    const tests = suite.tests || [];
+    const phase = tests.length && tests.every((t) => t.state === "not run") ? "fixture setting up, "
+        : tests.length && tests.every((t) => t.state !== "not run" && t.state !== "running")
+        ? "fixture tearing down, " : "";
+    title.appendChild(elapsedNode("span", "where", suite.startedAt, phase + "running"));
+  }
+  return title;
 }
 
 function suiteSection(suite) {
   const section = element("section", "suite");
   section.dataset.state = suite.state;
-  const title = element("h2");
-  title.appendChild(element("span", stateClass(suite.state), suite.state));
-  title.appendChild(document.createTextNode(" "));
-  title.appendChild(element("span", "suite-name", suite.name));
-  if (suite.state !== "running") title.appendChild(element("span", "where", seconds(suite.duration)));
+  const title = suiteTitle(suite);
   section.appendChild(title);
   if ((suite.messages && suite.messages.length) || suite.hiddenReports > 0) {
     section.appendChild(messagesList(suite.messages, suite.hiddenReports));
@@ -117,6 +163,10 @@ function placeRow(suiteIndex, index) {
   } else {
     table.appendChild(row);
   }
+  // A running suite's title says its fixture's phase, which its tests' states tell.
+  if (suites[suiteIndex].state === "running") {
+    section.querySelector("h2").replaceWith(suiteTitle(suites[suiteIndex]));
+  }
 }
 
 function draw() {
@@ -169,7 +219,9 @@ function listen() {
   source = new EventSource("/events?since=" + lastSeq);
   source.onopen = () => setConnection("live");
   source.onmessage = (event) => {
-    apply(JSON.parse(event.data));
+    const change = JSON.parse(event.data);
+    setClock(change.now);
+    apply(change);
     scheduleDraw();
     if (run.state === "finished") {
       source.close();  // the final result stays on the page
@@ -194,6 +246,7 @@ async function start() {
     suites.length = 0;
     suites.push(...snapshot.suites);
     lastSeq = snapshot.seq;
+    setClock(snapshot.now);
     dirty.all = true;
   } catch (error) {
     setConnection("cannot read the run: " + error);
