@@ -77,7 +77,9 @@ pre { background: var(--panel); border: 1px solid var(--line); border-radius: 6p
 <div id="suites"></div>
 <h2>Slowest tests</h2>
 <ol id="slowest"></ol>
-<script type="application/json" id="report-data">)html";
+)html";
+
+const char* const dataStart = R"html(<script type="application/json" id="report-data">)html";
 
 const char* const tail = R"html(</script>
 <script>
@@ -155,6 +157,7 @@ const char* const tail = R"html(</script>
     const head = el("summary");
     head.appendChild(el("span", "state " + colour(t.state), t.state));
     head.appendChild(el("span", "name", t.shown ? t.name + " (" + t.shown + ")" : t.name));
+    if (t.history && window.rtfHistoryStrip) head.appendChild(window.rtfHistoryStrip(t.history));
     head.appendChild(el("span", "time", secs(t.duration)));
     box.appendChild(head);
     box.addEventListener("toggle", () => {
@@ -297,6 +300,10 @@ std::string HtmlReporter::document() {
     std::strftime(when, sizeof(when), "%Y-%m-%d %H:%M:%S UTC", &utc);
 
     std::string out = head;
+    if (settings_.history) {
+        out += historyStripScript();
+    }
+    out += dataStart;
     out += "{\"started\":" + jsonString(when);
     out += ",\"duration\":" + number(collector_.duration());
     out += ",\"suitesRun\":" + std::to_string(collector_.suiteCount());
@@ -337,6 +344,13 @@ std::string HtmlReporter::document() {
             out += ",\"duration\":" + number(test.duration);
             if (!test.description.empty()) {
                 out += ",\"description\":" + jsonString(test.description);
+            }
+            if (settings_.history) {
+                const auto strip =
+                    settings_.history->find(suite.name.empty() ? name : suite.name + "/" + name);
+                if (strip != settings_.history->end()) {
+                    out += ",\"history\":" + historyStripData(strip->second);
+                }
             }
             out += ",\"messages\":[";
             bool firstMessage = true;

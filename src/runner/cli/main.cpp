@@ -12,6 +12,8 @@
 #include "platform/process_tree.h"
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
+#include "runner/cli/history_import_command.h"
+#include "runner/cli/history_report_command.h"
 #include "runner/cli/list_command.h"
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/merge_command.h"
@@ -19,9 +21,11 @@
 #include "runner/cli/planned_run.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/progress_plan.h"
+#include "runner/cli/run_history.h"
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
+#include "runner/history/history_error.h"
 #include "runner/plan/run_plan.h"
 
 using namespace robottestingframework;
@@ -36,6 +40,15 @@ int main(int argc, char** argv) {
     }
     if (!options.merge.type.empty()) {
         return mergeCommand(options);
+    }
+    if (!options.historyImports.empty()) {
+        const int status = historyImportCommand(options);
+        if (status != allPassed || !options.historyReport) {
+            return status;
+        }
+    }
+    if (options.historyReport) {
+        return historyReportCommand(options);
     }
 
     RunInputs inputs;
@@ -62,6 +75,21 @@ int main(int argc, char** argv) {
         return listCommand(options, planned, inputs.overrides);
     }
     std::fflush(stdout);
+
+    // The history file is checked before anything runs; it is written once the run is over.
+    std::unique_ptr<RunHistory> history;
+    if (!options.history.empty()) {
+        try {
+            const auto& where = planned.reportSettings;
+            history = std::make_unique<RunHistory>(
+                options.history,
+                thisRun(argc, argv, where.sharded, where.shardIndex, where.shardCount));
+        } catch (const HistoryError& e) {
+            std::fprintf(stderr, "%s: %s\n", programName, e.what());
+            return configurationError;
+        }
+        planned.reportSettings.history = history->strips();
+    }
 
     // On the main thread, which lives for the whole run (executor_choice.h).
     std::string error;
@@ -97,6 +125,9 @@ int main(int argc, char** argv) {
     }
 
     int status = runStatus(listeners.collector(), options.failOnFlaky, interrupted);
+    if (history) {
+        history->record(listeners.collector(), stderr);  // a warning at worst: status stays
+    }
     if (!listeners.writeOutputs(stderr)) {
         status = configurationError;
     }
