@@ -3,11 +3,16 @@ the shards of one run appending at once, --history-report, --history-import of J
 (this runner's and other tools'), --durations from the history, the HTML report's strips, a
 damaged or foreign file, and a history that cannot be written (the reports still are)."""
 import json
+import shutil
 import sqlite3
 import subprocess
 import xml.etree.ElementTree as ET
 
 import pytest
+from selenium import webdriver
+from selenium.webdriver.chrome.service import Service
+from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import WebDriverWait
 
 from conftest import RUNNER, empty_environment, run_runner
 
@@ -221,6 +226,42 @@ def test_the_html_report_shows_each_tests_last_runs(tmp_path):
     assert r.returncode == 0, r
     assert "history" not in report_data(folder / "plain.html")["suites"][0]["tests"][0]
     assert "window.rtfHistoryStrip = " not in (folder / "plain.html").read_text()
+
+
+@pytest.fixture
+def browser(tmp_path):
+    options = webdriver.ChromeOptions()
+    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
+    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
+                "--window-size=1200,900", f"--user-data-dir={tmp_path / 'chromium-profile'}"):
+        options.add_argument(arg)
+    service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
+    driver = webdriver.Chrome(service=service, options=options)
+    driver.set_page_load_timeout(60)
+    try:
+        yield driver
+    finally:
+        driver.quit()
+
+
+def test_the_strips_are_drawn_in_a_browser(tmp_path, browser):
+    folder = make_suite(tmp_path / "suite")
+    for flip in ["", "", "1"]:  # the last run fails: its suite opens by itself
+        r = run_runner("--suite", "hist.xml", "--history", "h.db", "-o", "html:r.html",
+                       cwd=folder, env={"FLIP": flip})
+    assert r.returncode == 1, r
+    browser.get((folder / "r.html").as_uri())
+    WebDriverWait(browser, 10).until(
+        lambda _: len(browser.find_elements(By.CSS_SELECTOR, "details.test")) == 4)
+    rows = {row.find_element(By.CSS_SELECTOR, ".name").text: row
+            for row in browser.find_elements(By.CSS_SELECTOR, "details.test")}
+    flip = rows["flip"]
+    cells = flip.find_elements(By.CSS_SELECTOR, ".history .cell")
+    assert [c.get_attribute("class") for c in cells] == ["cell passed", "cell passed",
+                                                         "cell failing"]
+    assert flip.find_elements(By.CSS_SELECTOR, ".history svg polyline")
+    assert flip.find_element(By.CSS_SELECTOR, ".flaky-rate").text == "flaky 33%"
+    assert rows["ok"].find_element(By.CSS_SELECTOR, ".flaky-rate").text == "flaky 0%"
 
 
 @pytest.mark.parametrize("content", [b"garbage, not a database" * 10, b"SQLite format 3\0" + b"x" * 200])
