@@ -15,6 +15,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 from conftest import RUNNER, empty_environment, run_runner
+from web_run import WebRun, request
 
 SUITE = """<suite name="hist">
   <test type="exec" name="ok">ok.sh</test>
@@ -262,6 +263,29 @@ def test_the_strips_are_drawn_in_a_browser(tmp_path, browser):
     assert flip.find_elements(By.CSS_SELECTOR, ".history svg polyline")
     assert flip.find_element(By.CSS_SELECTOR, ".flaky-rate").text == "flaky 33%"
     assert rows["ok"].find_element(By.CSS_SELECTOR, ".flaky-rate").text == "flaky 0%"
+
+
+def test_the_live_page_shows_each_tests_earlier_runs(tmp_path, browser):
+    folder = make_suite(tmp_path / "suite")
+    for flip in ["1", ""]:
+        r = run_runner("--suite", "hist.xml", "--history", "h.db", "--no-output", cwd=folder,
+                       env={"FLIP": flip})
+    run = WebRun("--suite", "hist.xml", "--history", "h.db", "--web-linger", "60", cwd=folder)
+    try:
+        run.wait_for_line("final page stays")
+        snapshot = json.loads(request(run.port, "/snapshot")[2])
+        tests = {t["name"]: t for t in snapshot["suites"][0]["tests"]}
+        assert tests["flip"]["history"]["states"] == ["failed", "passed"]
+        assert tests["flip"]["history"]["flakyRate"] == 0.5
+        browser.get(run.url)
+        WebDriverWait(browser, 10).until(
+            lambda _: len(browser.find_elements(By.CSS_SELECTOR, ".history .cell")) == 8)
+        rates = [e.text for e in browser.find_elements(By.CSS_SELECTOR, ".flaky-rate")]
+        assert sorted(rates) == ["flaky 0%"] * 3 + ["flaky 50%"], rates
+        run.proc.send_signal(2)
+        assert run.wait(timeout=10) == 0
+    finally:
+        run.kill()
 
 
 @pytest.mark.parametrize("content", [b"garbage, not a database" * 10, b"SQLite format 3\0" + b"x" * 200])

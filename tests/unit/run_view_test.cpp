@@ -197,3 +197,16 @@ TEST(RunView, TwoTestsOfOneNameAreToldApartByIdAndARenameIsFollowed) {
     auto suite = nlohmann::json::parse(view.snapshotJson())["suites"][0];
     EXPECT_EQ(suite["messages"][0]["text"], "a fixture");
 }
+
+TEST(RunView, ATestsHistoryIsShownWithItByItsId) {
+    RunView view(false);
+    view.setTestHistory("arm/reach", R"({"states":["passed","failed"],"durations":[1,2],)"
+                                     R"("flakyRate":0.5})");
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}, {2, "grasp"}});
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const auto& tests = snapshot["suites"][0]["tests"];
+    EXPECT_EQ(tests[0]["history"]["states"][1], "failed");
+    EXPECT_EQ(tests[0]["history"]["flakyRate"], 0.5);
+    EXPECT_FALSE(tests[1].contains("history"));
+}

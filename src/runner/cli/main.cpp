@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
     if (options.webReporter && !(web = startWebPage(options))) {
         return configurationError;
     }
+    if (web && history) {
+        for (const auto& strip : history->earlierStrips()) {
+            web->setTestHistory(strip.first, reporters::historyStripData(strip.second));
+        }
+    }
     std::vector<std::string> warnings;
     ProgressSettings progress = progressOf(plan, options.durations, warnings);
     for (const std::string& warning : warnings) {

@@ -18,6 +18,28 @@
 namespace robottestingframework {
 namespace runner {
 
+namespace {
+
+// The strips of the last `runs` runs, of the tests in `only` (of every test when null).
+reporters::HistoryStrips readStrips(HistoryDatabase& database, unsigned int runs,
+                                    const std::set<std::string>* only) {
+    reporters::HistoryStrips strips;
+    for (const TestHistory& history : recentHistories(database, runs)) {
+        if (only != nullptr && only->count(history.test) == 0) {
+            continue;
+        }
+        reporters::HistoryStrip& strip = strips[history.test];
+        for (const TestHistoryEntry& entry : history.runs) {
+            strip.states.push_back(entry.state);
+            strip.durations.push_back(entry.duration);
+        }
+        strip.flakyRate = flakyRate(history);
+    }
+    return strips;
+}
+
+}  // namespace
+
 RunHistory::RunHistory(std::string path, HistoryRun run)
     : path_(std::move(path)),
       run_(std::move(run)),
@@ -25,6 +47,15 @@ RunHistory::RunHistory(std::string path, HistoryRun run)
     struct stat status {};
     if (::stat(path_.c_str(), &status) == 0 && status.st_size > 0) {
         HistoryDatabase check(path_, HistoryDatabase::Mode::Read);  // throws when not ours
+    }
+}
+
+reporters::HistoryStrips RunHistory::earlierStrips() const {
+    try {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+        return readStrips(database, shownRuns - 1, nullptr);
+    } catch (const HistoryError&) {
+        return {};  // no file yet: nothing to show (a damaged one was refused at the start)
     }
 }
 
@@ -50,17 +81,7 @@ bool RunHistory::record(const TestResultCollector& collector, std::FILE* console
             }
         }
         HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
-        for (const TestHistory& history : recentHistories(database, shownRuns)) {
-            if (ran.count(history.test) == 0) {
-                continue;
-            }
-            reporters::HistoryStrip& strip = (*strips_)[history.test];
-            for (const TestHistoryEntry& entry : history.runs) {
-                strip.states.push_back(entry.state);
-                strip.durations.push_back(entry.duration);
-            }
-            strip.flakyRate = flakyRate(history);
-        }
+        *strips_ = readStrips(database, shownRuns, &ran);
     } catch (const HistoryError& e) {
         if (recorded) {
             std::fprintf(console, "%s: warning: cannot read the history back: %s\n", programName,

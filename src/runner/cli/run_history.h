@@ -25,6 +25,10 @@ public:
     // Throws HistoryError when `path` exists and is not a history file this runner reads.
     RunHistory(std::string path, HistoryRun run);
 
+    // Each test's last runs before this one (for the live page, before the run starts); none
+    // when the file has no run yet.
+    reporters::HistoryStrips earlierStrips() const;
+
     // Filled by record(): what the reports show (share it through ReporterSettings::history).
     std::shared_ptr<const reporters::HistoryStrips> strips() const { return strips_; }
 
