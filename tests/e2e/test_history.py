@@ -103,9 +103,9 @@ def test_a_slowed_down_test_is_reported(tmp_path):
                        env={"DELAY": delay})
         assert r.returncode == 0, r
     r = run_runner("--history", "h.db", "--history-report", cwd=folder)
-    slowed = r.stdout.split("Most slowed", 1)[1]
-    assert "hist/slow" in slowed, r
-    assert "hist/ok" not in slowed, r
+    slowed = r.stdout.split("Most slowed", 1)[1].splitlines()
+    # 0.4 s more: the first of the list whatever the machine's load does to the others.
+    assert slowed[1].endswith("hist/slow"), r
 
 
 def test_jobs_2_records_every_suite(tmp_path):

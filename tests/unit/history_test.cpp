@@ -247,10 +247,12 @@ TEST(HistoryTrends, TheListsAreOrderedAndLeaveOutSteadyTests) {
         historyOf({"passed", "failed", "passed"}, {1, 1, 1}),
         historyOf({"passed", "passed", "passed"}, {1, 1, 1}),
         historyOf({"passed", "flaky", "passed"}, {1, 1, 2}),
+        historyOf({"passed", "passed", "passed"}, {0.01, 0.01, 0.04}),  // 4 times, yet 30 ms
     };
     histories[0].test = "a";
     histories[1].test = "b";
     histories[2].test = "c";
+    histories[3].test = "d";
     const auto flaky = flakiestTests(histories, 10);
     ASSERT_EQ(flaky.size(), 2u);
     EXPECT_EQ(flaky[0].history->test, "a");

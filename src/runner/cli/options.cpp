@@ -102,6 +102,12 @@ PreparedArgs prepareArgs(const CLI::App& app, int argc, const char* const* argv)
             value = arg.substr(equals + 1);
             glued = true;
         }
+        // Its N may be left out, but not given empty.
+        if (name == "--history-report" &&
+            (glued ? value.empty() : i + 1 < argc && argv[i + 1][0] == '\0')) {
+            prepared.error = name + ": the value is empty; expected N";
+            return prepared;
+        }
         const auto found = valueOptions.find(name);
         if (found == valueOptions.end()) {
             args.push_back(arg);

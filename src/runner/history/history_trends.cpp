@@ -75,7 +75,7 @@ std::vector<SlowedTest> mostSlowedTests(const std::vector<TestHistory>& historie
     for (const TestHistory& history : histories) {
         const Slowdown slowdown = slowdownOf(history);
         if (slowdown.before > 0 && slowdown.recent >= 1.2 * slowdown.before &&
-            slowdown.recent - slowdown.before >= 0.01) {
+            slowdown.recent - slowdown.before >= 0.05) {
             found.push_back({&history, slowdown});
         }
     }

@@ -35,8 +35,8 @@ struct SlowedTest {
 
 // The `limit` flakiest tests (rate above 0), flakiest first, then by id.
 std::vector<FlakyTest> flakiestTests(const std::vector<TestHistory>& histories, std::size_t limit);
-// The `limit` tests that slowed down most (recent over before, at least 1.2 times and 10 ms
-// slower: timer noise is not a slowdown), most first, then by id.
+// The `limit` tests that slowed down most (recent over before, at least 1.2 times and 50 ms
+// slower: a loaded machine's noise is not a slowdown), most first, then by id.
 std::vector<SlowedTest> mostSlowedTests(const std::vector<TestHistory>& histories,
                                         std::size_t limit);
 
