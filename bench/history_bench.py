@@ -136,8 +136,9 @@ def main():
         for window in (30, args.runs):
             report = best(args.rounds, lambda: [runner, "--history", "big.db",
                                                 "--history-report", str(window)], folder)
-            print(f"   --history-report {window:<5} {1000 * report:8.1f} ms   "
-                  f"(target < 200 ms: {verdict(report, 0.2)})")
+            judged = (f"target < 200 ms: {verdict(report, 0.2)}" if window == 30
+                      else "every run: no target")
+            print(f"   --history-report {window:<5} {1000 * report:8.1f} ms   ({judged})")
         write_suite(folder, plugin, args.tests_per_run)
         small = [runner, "--isolation", "none", "--no-output", "--no-summary", "--suite",
                  "many.xml"]
