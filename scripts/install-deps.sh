@@ -11,7 +11,7 @@ packages=(
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
-    python3-yaml
+    python3-yaml libsqlite3-dev
     gcovr
     clang libclang-rt-14-dev
 )

@@ -40,6 +40,10 @@ public:
     unsigned int port() const;
     // "http://127.0.0.1:8080/".
     std::string url() const;
+    // The recent runs of the test "SUITE/TEST", drawn beside it on the page: JSON
+    // {"states":[...],"durations":[...],"flakyRate":R} (the runner's --history). Give it
+    // before the test's suite starts.
+    void setTestHistory(const std::string& testId, const std::string& json);
 
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <ctime>
 
+#include "reporters/history_strip.h"
 #include "reporters/html_page_assets.h"
 #include "reporters/summary.h"
 #include "reporters/text_safety.h"
@@ -106,6 +107,12 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
     out += ",\"duration\":" + number(test.duration);
     if (!test.description.empty()) {
         out += ",\"description\":" + jsonString(test.description);
+    }
+    if (settings_.history) {
+        const auto strip = settings_.history->find(suite.name + "/" + name);
+        if (strip != settings_.history->end()) {
+            out += ",\"history\":" + historyStripData(strip->second);
+        }
     }
     // Why it failed, for its row: the first problem's message.
     if (const ResultEvent* reason = test.reason()) {
@@ -223,6 +230,8 @@ std::string HtmlReporter::document() {
     std::string page = htmlReportPage();
     fill(page, "REPORT_CSS", htmlReportStyle());
     fill(page, "REPORT_JS", htmlReportScript());
+    // Parts the report shows only when asked for, each with its own style and script.
+    fill(page, "REPORT_EXTRAS", settings_.history ? historyStripScript() : "");
     fill(page, "REPORT_DATA", data);
     return page;
 }

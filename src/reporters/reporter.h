@@ -6,12 +6,15 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResultCollector.h>
+
+#include "reporters/history_strip.h"
 
 namespace robottestingframework {
 namespace reporters {
@@ -50,6 +53,9 @@ struct ReporterSettings {
     std::size_t suitePlace(std::size_t index) const {
         return suitePlaces.empty() ? index : suitePlaces[index % suitePlaces.size()];
     }
+    // --history: each test's recent runs, filled once this run is in the history (before the
+    // outputs are written); null without --history.
+    std::shared_ptr<const HistoryStrips> history;
 };
 
 class Reporter : public TestListener {

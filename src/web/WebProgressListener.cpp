@@ -34,6 +34,12 @@ WebProgressListener::WebProgressListener(const std::string& host, unsigned int p
 
 WebProgressListener::~WebProgressListener() = default;
 
+void WebProgressListener::setTestHistory(const std::string& testId, const std::string& json) {
+    if (state_->page) {
+        state_->page->setTestHistory(testId, json);
+    }
+}
+
 bool WebProgressListener::isListening() const {
     return state_->page != nullptr && state_->page->isListening();
 }

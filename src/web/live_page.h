@@ -18,6 +18,9 @@ public:
     virtual std::string error() const = 0;
     // The port served (the one picked when 0 was asked).
     virtual unsigned int port() const = 0;
+    // The recent runs of the test "SUITE/TEST" (--history), as JSON the page draws beside it:
+    // {"states":[...],"durations":[...],"flakyRate":R}. Given before the run starts.
+    virtual void setTestHistory(const std::string& testId, const std::string& json) = 0;
 };
 
 // RTF_web's factory, found by this name: a page on host:port (0 picks a free one), never null.

@@ -130,6 +130,10 @@ void RunView::startSuite(const std::string& name, const std::vector<Planned>& te
         TestView view;
         view.id = test.id;
         view.name = test.name;
+        const auto history = history_.find(name.empty() ? test.name : name + "/" + test.name);
+        if (history != history_.end()) {
+            view.history = history->second;
+        }
         suite.tests.push_back(std::move(view));
     }
     suites_.push_back(std::move(suite));
@@ -138,6 +142,11 @@ void RunView::startSuite(const std::string& name, const std::vector<Planned>& te
     log("suite " + name + " started");
     publishSuite(openSuite_);
     publishRun();
+}
+
+void RunView::setTestHistory(const std::string& testId, const std::string& json) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    history_[testId] = json;
 }
 
 void RunView::endSuite() {
@@ -384,6 +393,9 @@ Json toJson(const RunView::TestView& test) {
                  {"output", test.output}};
     if (!test.repetition.empty()) {
         json["repetition"] = test.repetition;
+    }
+    if (!test.history.empty()) {
+        json["history"] = Json::parse(test.history, nullptr, false);
     }
     return json;
 }

@@ -46,6 +46,9 @@ public:
     // Repetition `index` of `count` of the running test `id` starts: its later messages carry
     // the repetition's id (repetitionId), and the test shows the one it is in.
     void startRepetition(std::uint64_t id, unsigned int index, unsigned int count);
+    // The recent runs of the test "SUITE/TEST" (JSON, --history): shown with it once its suite
+    // starts.
+    void setTestHistory(const std::string& testId, const std::string& json);
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -79,6 +82,7 @@ public:
         std::string output;
         std::size_t retries = 0;  // earlier failed attempts
         std::string repetition;   // the id of the repetition it is in; empty when it runs once
+        std::string history;      // its recent runs (JSON), when --history gave them
     };
 
 private:
@@ -140,6 +144,7 @@ private:
     std::map<std::string, std::uint64_t> latest_;   // key -> the number of its latest change
     std::uint64_t lastChange_ = 0;
     std::string log_;
+    std::map<std::string, std::string> history_;  // test id -> its recent runs (JSON)
 };
 
 }  // namespace web

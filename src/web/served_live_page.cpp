@@ -30,6 +30,9 @@ public:
     bool isListening() const override { return listening; }
     std::string error() const override { return failure; }
     unsigned int port() const override { return listening ? server.port() : 0; }
+    void setTestHistory(const std::string& testId, const std::string& json) override {
+        view.setTestHistory(testId, json);
+    }
 
     void addReport(const Test* test, TestMessage msg) override;
     void addError(const Test* test, TestMessage msg) override;

@@ -140,7 +140,7 @@ REFUSES_EMPTY = {
     "--web-port", "--web-host", "--web-linger", "--isolation", "--timeout", "--retries",
     "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
     "--filter", "--shard-index", "--shard-count", "--durations", "--merge", "--expect-shards",
-    "--jobs", "--resources", "--plugin-path", "--color",
+    "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
 }
 
 

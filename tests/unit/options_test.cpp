@@ -242,3 +242,31 @@ TEST(Options, HelpAndVersionExitWithZero) {
     EXPECT_EQ(version.status, 0);
     EXPECT_NE(version.text.find("3."), std::string::npos) << version.text;
 }
+
+TEST(Options, HistoryReportTakesAnOptionalNumberOfRuns) {
+    Options options;
+    ASSERT_TRUE(runs(parse({"--history", "h.db", "--history-report"}, options)));
+    EXPECT_TRUE(options.historyReport);
+    EXPECT_EQ(options.historyRuns, 30u);
+    Options fifty;
+    ASSERT_TRUE(runs(parse({"--history", "h.db", "--history-report", "50"}, fifty)));
+    EXPECT_EQ(fifty.historyRuns, 50u);
+    for (const char* bad : {"0", "x", "-3"}) {
+        Options wrong;
+        const ParseResult result = parse({"--history", "h.db", "--history-report", bad}, wrong);
+        EXPECT_EQ(result.status, 2) << bad;
+    }
+    Options alone;
+    const ParseResult result = parse({"--history-report"}, alone);
+    EXPECT_EQ(result.status, 2);
+    EXPECT_NE(result.text.find("needs --history FILE"), std::string::npos) << result.text;
+}
+
+TEST(Options, HistoryImportTakesTheReportsAfterTheOptions) {
+    Options options;
+    ASSERT_TRUE(runs(parse({"--history", "h.db", "--history-import", "a.xml", "b.json"}, options)));
+    EXPECT_EQ(options.historyImports, (std::vector<std::string>{"a.xml", "b.json"}));
+    EXPECT_TRUE(options.mergeReports.empty());
+    Options none;
+    EXPECT_EQ(parse({"--history", "h.db", "--history-import"}, none).status, 2);
+}

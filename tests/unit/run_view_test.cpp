@@ -229,3 +229,16 @@ TEST(RunView, RunningTestsAndSuitesSayWhenTheyStartedOnTheClockEveryChangeCarrie
     EXPECT_EQ(change["type"], "test");
     EXPECT_GE(change["now"].get<double>(), change["test"]["startedAt"].get<double>());
 }
+
+TEST(RunView, ATestsHistoryIsShownWithItByItsId) {
+    RunView view(false);
+    view.setTestHistory("arm/reach", R"({"states":["passed","failed"],"durations":[1,2],)"
+                                     R"("flakyRate":0.5})");
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}, {2, "grasp"}});
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const auto& tests = snapshot["suites"][0]["tests"];
+    EXPECT_EQ(tests[0]["history"]["states"][1], "failed");
+    EXPECT_EQ(tests[0]["history"]["flakyRate"], 0.5);
+    EXPECT_FALSE(tests[1].contains("history"));
+}

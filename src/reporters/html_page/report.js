@@ -150,6 +150,7 @@
     head.appendChild(el("span", "state " + colour(t.state), t.state));
     head.appendChild(el("span", "name", t.shown ? t.name + " (" + t.shown + ")" : t.name));
     for (const tag of t.tags || []) head.appendChild(el("span", "tag", tag));
+    if (t.history && window.rtfHistoryStrip) head.appendChild(window.rtfHistoryStrip(t.history));
     head.appendChild(el("span", "time", secs(t.duration)));
     head.appendChild(el("span", "start", at(t.start)));
     // Why it failed, in the row itself: no click needed.

@@ -12,6 +12,8 @@
 #include "platform/process_tree.h"
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
+#include "runner/cli/history_import_command.h"
+#include "runner/cli/history_report_command.h"
 #include "runner/cli/list_command.h"
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/merge_command.h"
@@ -20,9 +22,11 @@
 #include "runner/cli/program_name.h"
 #include "runner/cli/progress_plan.h"
 #include "runner/cli/run_facts.h"
+#include "runner/cli/run_history.h"
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
+#include "runner/history/history_error.h"
 #include "runner/plan/run_plan.h"
 
 using namespace robottestingframework;
@@ -37,6 +41,15 @@ int main(int argc, char** argv) {
     }
     if (!options.merge.type.empty()) {
         return mergeCommand(options);
+    }
+    if (!options.historyImports.empty()) {
+        const int status = historyImportCommand(options);
+        if (status != allPassed || !options.historyReport) {
+            return status;
+        }
+    }
+    if (options.historyReport) {
+        return historyReportCommand(options);
     }
 
     RunInputs inputs;
@@ -64,6 +77,21 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
 
+    // The history file is checked before anything runs; it is written once the run is over.
+    std::unique_ptr<RunHistory> history;
+    if (!options.history.empty()) {
+        try {
+            const auto& where = planned.reportSettings;
+            history = std::make_unique<RunHistory>(
+                options.history,
+                thisRun(argc, argv, where.sharded, where.shardIndex, where.shardCount));
+        } catch (const HistoryError& e) {
+            std::fprintf(stderr, "%s: %s\n", programName, e.what());
+            return configurationError;
+        }
+        planned.reportSettings.history = history->strips();
+    }
+
     // On the main thread, which lives for the whole run (executor_choice.h).
     std::string error;
     const std::unique_ptr<TestExecutor> executor = chooseExecutor(options, error);
@@ -86,6 +114,11 @@ int main(int argc, char** argv) {
     if (options.webReporter && !(web = startWebPage(options))) {
         return configurationError;
     }
+    if (web && history) {
+        for (const auto& strip : history->earlierStrips()) {
+            web->setTestHistory(strip.first, reporters::historyStripData(strip.second));
+        }
+    }
     std::vector<std::string> warnings;
     ProgressSettings progress = progressOf(plan, options.durations, warnings);
     for (const std::string& warning : warnings) {
@@ -99,6 +132,9 @@ int main(int argc, char** argv) {
     }
 
     int status = runStatus(listeners.collector(), options.failOnFlaky, interrupted);
+    if (history) {
+        history->record(listeners.collector(), stderr);  // a warning at worst: status stays
+    }
     if (!listeners.writeOutputs(stderr)) {
         status = configurationError;
     }

@@ -102,6 +102,12 @@ PreparedArgs prepareArgs(const CLI::App& app, int argc, const char* const* argv)
             value = arg.substr(equals + 1);
             glued = true;
         }
+        // Its N may be left out, but not given empty.
+        if (name == "--history-report" &&
+            (glued ? value.empty() : i + 1 < argc && argv[i + 1][0] == '\0')) {
+            prepared.error = name + ": the value is empty; expected N";
+            return prepared;
+        }
         const auto found = valueOptions.find(name);
         if (found == valueOptions.end()) {
             args.push_back(arg);
@@ -303,8 +309,24 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         ->type_name("N");
     app.add_option("--durations", options.durations,
                    "Balance the shards by each suite's time in REPORT, a JUnit or JSON output of "
-                   "an earlier run")
+                   "an earlier run, or a --history file")
         ->type_name("REPORT");
+    app.add_option("--history", options.history,
+                   "Append this run to the history in FILE (SQLite, made when missing): each "
+                   "test's state, time and attempts; the HTML report then shows each test's "
+                   "last 30 runs")
+        ->type_name("FILE");
+    std::string historyRuns;
+    CLI::Option* historyReportOption =
+        app.add_option("--history-report", historyRuns,
+                       "With --history: print the flakiest and the most slowed-down tests of "
+                       "its last N runs (default 30), and exit")
+            ->expected(0, 1)
+            ->type_name("N");
+    bool historyImport = false;
+    app.add_flag("--history-import", historyImport,
+                 "With --history: load the JUnit or CTRF REPORTs (the arguments after the "
+                 "options; this runner's or another tool's) into it, one run each, and exit");
     std::string merge;
     std::string expectShards;
     app.add_option("--merge", merge,
@@ -315,7 +337,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         app.add_option("--expect-shards", expectShards,
                        "With --merge: every shard 0 to N-1 must be there exactly once")
             ->type_name("N");
-    app.add_option("reports", options.mergeReports, "With --merge: the reports to merge")
+    app.add_option("reports", options.mergeReports,
+                   "With --merge: the reports to merge; with --history-import: to load")
         ->type_name("REPORT");
     std::string jobs;
     app.add_option("-j,--jobs", jobs,
@@ -462,9 +485,39 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     } else {
         return usageError("--color " + colour + ": expected auto, always or never");
     }
+    const bool historyCommand = historyImport || historyReportOption->count() > 0;
+    if (historyCommand && options.history.empty()) {
+        return usageError(std::string(historyImport ? "--history-import" : "--history-report") +
+                          " needs --history FILE");
+    }
+    if (historyReportOption->count() > 0) {
+        options.historyReport = true;
+        if (!historyRuns.empty()) {
+            if (historyRuns.size() > 6 ||
+                historyRuns.find_first_not_of("0123456789") != std::string::npos ||
+                std::stoul(historyRuns) == 0) {
+                return usageError("--history-report '" + historyRuns +
+                                  "': expected a whole number of runs from 1 to 999999");
+            }
+            options.historyRuns = static_cast<unsigned int>(std::stoul(historyRuns));
+        }
+    }
+    if (historyImport) {
+        if (!merge.empty()) {
+            return usageError("--history-import and --merge: give one of them");
+        }
+        if (options.mergeReports.empty()) {
+            return usageError("--history-import: no report to load");
+        }
+        options.historyImports = std::move(options.mergeReports);
+        options.mergeReports.clear();
+    }
     if (!options.mergeReports.empty() && merge.empty()) {
         return usageError("unexpected argument " + options.mergeReports.front() +
-                          " (reports are given only to --merge)");
+                          " (reports are given only to --merge and --history-import)");
+    }
+    if (historyCommand) {
+        return result;  // nothing else is read by a command of the history
     }
     if (!merge.empty()) {
         const std::size_t colon = merge.find(':');

@@ -66,7 +66,14 @@ struct Options {
     // Shards: --shard-index/--shard-count as given (checked with the environment's, by
     // chooseShard), --durations REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
     ShardFlags shard;
-    std::string durations;
+    std::string durations;  // a report, or a --history file
+    // --history FILE: every run appended to it (SQLite); --history-report [N]: print the
+    // flakiest and most slowed-down tests of its last N runs and exit; --history-import:
+    // load the REPORTs (JUnit or CTRF, the arguments after the options) into it and exit.
+    std::string history;
+    bool historyReport = false;
+    unsigned int historyRuns = 30;
+    std::vector<std::string> historyImports;
     OutputRequest merge;  // type empty: not merging
     std::vector<std::string> mergeReports;
     unsigned int expectShards = 0;

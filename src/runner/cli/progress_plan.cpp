@@ -3,7 +3,7 @@
 #include <exception>
 #include <map>
 
-#include "runner/reports/report_reader.h"
+#include "runner/cli/suite_durations.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -15,9 +15,7 @@ ProgressSettings progressOf(RunPlan& plan, const std::string& durations,
     std::map<std::string, double> seconds;
     if (!durations.empty()) {
         try {
-            for (const auto& suite : readReport("--durations", durations).suites) {
-                seconds[suite.name] = suite.seconds;
-            }
+            seconds = suiteDurations(durations);
         } catch (const std::exception& e) {
             warnings.push_back(std::string("warning: ") + e.what() + "; no ETA");
         }

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "runner/cli/suite_durations.h"
 #include "runner/plan/shard_split.h"
 #include "runner/reports/report_reader.h"
 
@@ -51,8 +52,8 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
                                    const std::string& durations) {
     std::map<std::string, long long> known;
     if (!durations.empty()) {
-        for (const auto& suite : readReport("--durations", durations).suites) {
-            known[suite.name] = std::llround(suite.seconds * 1000.0);
+        for (const auto& suite : suiteDurations(durations)) {
+            known[suite.first] = std::llround(suite.second * 1000.0);
         }
     }
     std::vector<ShardItem> items;

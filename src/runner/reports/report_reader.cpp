@@ -213,8 +213,17 @@ void readJUnit(Report& report, const std::string& text, const Place& place) {
             if (isJUnitFixtureCase(test)) {
                 continue;
             }
-            report.tests.push_back(
-                {suiteName == "default" ? "" : suiteName, test.attribute("name").value(), state});
+            ReportedTest reportedTest{suiteName == "default" ? "" : suiteName,
+                                      test.attribute("name").value(), state};
+            parseSeconds(test.attribute("time").value(), reportedTest.seconds);
+            for (const pugi::xml_node attempt : test.children()) {
+                const std::string element = attempt.name();
+                if (element == "flakyFailure" || element == "flakyError" ||
+                    element == "rerunFailure" || element == "rerunError") {
+                    ++reportedTest.attempts;
+                }
+            }
+            report.tests.push_back(reportedTest);
         }
     }
 }
@@ -385,8 +394,13 @@ void readJsonShape(Report& report, const Place& place) {
             }
             suite = test["suite"][0].get<std::string>();
         }
-        report.tests.push_back({suite, test["name"].get<std::string>(),
-                                test["extra"][ctrfExtensionKey]["state"].get<std::string>()});
+        ReportedTest reportedTest{suite, test["name"].get<std::string>(),
+                                  test["extra"][ctrfExtensionKey]["state"].get<std::string>()};
+        reportedTest.seconds = test["duration"].get<double>() / 1000.0;
+        if (test.contains("retries") && test["retries"].is_number_unsigned()) {
+            reportedTest.attempts += test["retries"].get<unsigned int>();
+        }
+        report.tests.push_back(reportedTest);
     }
     // Each suite's time: the report's own when it has them (fixtures included), else its tests'.
     if (extra.contains("suites")) {

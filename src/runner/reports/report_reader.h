@@ -19,7 +19,9 @@ enum class ReportFormat { JUnit, Json };
 struct ReportedTest {
     std::string suite;  // empty for tests run outside a suite
     std::string name;
-    std::string state;  // as TestStatus's toString spells it: "passed", "timed out", ...
+    std::string state;          // as TestStatus's toString spells it: "passed", "timed out", ...
+    double seconds = 0;         // every attempt's
+    unsigned int attempts = 1;  // 1 + its retries
 };
 
 struct ReportedSuite {

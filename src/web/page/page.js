@@ -73,6 +73,7 @@ function testRow(test) {
   row.appendChild(element("td", stateClass(test.state), test.state));
   const name = element("td", "name");
   name.appendChild(element("span", "test-name", test.name));
+  if (test.history) name.appendChild(historyStrip(test.history));
   if ((test.messages && test.messages.length) || test.hiddenReports > 0) {
     name.appendChild(messagesList(test.messages, test.hiddenReports));
   }
@@ -260,3 +261,31 @@ async function start() {
 }
 
 start();
+
+// --history: the test's recent runs as a strip of states, a sparkline of their times and its
+// flaky rate (the HTML report draws the same).
+function historyStrip(history) {
+  const box = element("span", "history");
+  box.title = "last " + history.states.length + " runs";
+  const cells = element("span", "cells");
+  history.states.forEach((state, i) => {
+    const cell = element("span", "cell " + stateClass(state));
+    cell.title = state + " (" + seconds(history.durations[i]) + ")";
+    cells.appendChild(cell);
+  });
+  box.appendChild(cells);
+  const times = history.durations;
+  if (times.length > 1) {
+    const ns = "http://www.w3.org/2000/svg";
+    const svg = document.createElementNS(ns, "svg");
+    svg.setAttribute("viewBox", "0 0 60 14");
+    const top = Math.max(...times) || 1;
+    const line = document.createElementNS(ns, "polyline");
+    line.setAttribute("points", times.map((t, i) =>
+      (60 * i / (times.length - 1)).toFixed(1) + "," + (13 - 12 * t / top).toFixed(1)).join(" "));
+    svg.appendChild(line);
+    box.appendChild(svg);
+  }
+  box.appendChild(element("span", "flaky-rate", "flaky " + Math.round(100 * history.flakyRate) + "%"));
+  return box;
+}

@@ -1,0 +1,69 @@
+#include "runner/cli/history_report_command.h"
+
+#include <cstdio>
+
+#include "runner/cli/exit_status.h"
+#include "runner/cli/program_name.h"
+#include "runner/history/history_database.h"
+#include "runner/history/history_error.h"
+#include "runner/history/history_queries.h"
+#include "runner/history/history_trends.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+constexpr std::size_t listed = 10;
+
+std::string format(const char* pattern, double a, double b = 0, double c = 0) {
+    char text[128];
+    std::snprintf(text, sizeof(text), pattern, a, b, c);
+    return text;
+}
+
+}  // namespace
+
+std::string historyReportText(const std::vector<TestHistory>& histories, std::size_t runs,
+                              unsigned int asked) {
+    std::string out = "History: " + std::to_string(histories.size()) + " tests in the last " +
+                      std::to_string(runs) + " runs" +
+                      (runs < asked ? " (of " + std::to_string(asked) + " asked)" : "") + "\n";
+    out += "\nFlakiest tests (runs flaky or changing outcome):\n";
+    const auto flaky = flakiestTests(histories, listed);
+    if (flaky.empty()) {
+        out += "  none\n";
+    }
+    for (const FlakyTest& test : flaky) {
+        out += format("  %5.1f %%  ", 100 * test.rate) + test.history->test + "  (" +
+               std::to_string(test.history->runs.size()) + " runs)\n";
+    }
+    out += "\nMost slowed-down tests (median of the newest third of runs against the older):\n";
+    const auto slowed = mostSlowedTests(histories, listed);
+    if (slowed.empty()) {
+        out += "  none\n";
+    }
+    for (const SlowedTest& test : slowed) {
+        out += format("  %5.2fx  %.3f s -> %.3f s  ", test.slowdown.ratio(), test.slowdown.before,
+                      test.slowdown.recent) +
+               test.history->test + "\n";
+    }
+    return out;
+}
+
+int historyReportCommand(const Options& options) {
+    try {
+        HistoryDatabase database(options.history, HistoryDatabase::Mode::Read);
+        const std::size_t runs = std::min<std::size_t>(countRuns(database), options.historyRuns);
+        const std::string text = historyReportText(recentHistories(database, options.historyRuns),
+                                                   runs, options.historyRuns);
+        std::fputs(text.c_str(), stdout);
+        return allPassed;
+    } catch (const HistoryError& e) {
+        std::fprintf(stderr, "%s: %s\n", programName, e.what());
+        return configurationError;
+    }
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,117 @@
+#include "runner/cli/run_history.h"
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <set>
+
+#include "runner/cli/program_name.h"
+#include "runner/history/collected_run.h"
+#include "runner/history/history_database.h"
+#include "runner/history/history_error.h"
+#include "runner/history/history_queries.h"
+#include "runner/history/history_run_key.h"
+#include "runner/history/history_trends.h"
+#include "runner/history/run_appender.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// The strips of the last `runs` runs, of the tests in `only` (of every test when null).
+reporters::HistoryStrips readStrips(HistoryDatabase& database, unsigned int runs,
+                                    const std::set<std::string>* only) {
+    reporters::HistoryStrips strips;
+    for (const TestHistory& history : recentHistories(database, runs)) {
+        if (only != nullptr && only->count(history.test) == 0) {
+            continue;
+        }
+        reporters::HistoryStrip& strip = strips[history.test];
+        for (const TestHistoryEntry& entry : history.runs) {
+            strip.states.push_back(entry.state);
+            strip.durations.push_back(entry.duration);
+        }
+        strip.flakyRate = flakyRate(history);
+    }
+    return strips;
+}
+
+}  // namespace
+
+RunHistory::RunHistory(std::string path, HistoryRun run)
+    : path_(std::move(path)),
+      run_(std::move(run)),
+      strips_(std::make_shared<reporters::HistoryStrips>()) {
+    struct stat status {};
+    if (::stat(path_.c_str(), &status) == 0 && status.st_size > 0) {
+        HistoryDatabase check(path_, HistoryDatabase::Mode::Read);  // throws when not ours
+    }
+}
+
+reporters::HistoryStrips RunHistory::earlierStrips() const {
+    try {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+        return readStrips(database, shownRuns - 1, nullptr);
+    } catch (const HistoryError&) {
+        return {};  // no file yet: nothing to show (a damaged one was refused at the start)
+    }
+}
+
+bool RunHistory::record(const TestResultCollector& collector, std::FILE* console) {
+    bool recorded = true;
+    try {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        RunAppender appender(database, run_);
+        appendCollectedRun(appender, collector);
+        appender.commit();
+    } catch (const HistoryError& e) {
+        std::fprintf(console,
+                     "%s: warning: this run is not in the history: %s (the outputs are still "
+                     "written)\n",
+                     programName, e.what());
+        recorded = false;
+    }
+    try {
+        std::set<std::string> ran;
+        for (const SuiteRecord& suite : collector.suites()) {
+            for (const TestRecord& test : suite.tests) {
+                ran.insert(historyTestId(suite, test));
+            }
+        }
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+        *strips_ = readStrips(database, shownRuns, &ran);
+    } catch (const HistoryError& e) {
+        if (recorded) {
+            std::fprintf(console, "%s: warning: cannot read the history back: %s\n", programName,
+                         e.what());
+        }
+        return false;
+    }
+    return recorded;
+}
+
+HistoryRun thisRun(int argc, const char* const* argv, bool sharded, unsigned int shardIndex,
+                   unsigned int shardCount) {
+    HistoryRun run;
+    run.runKey = historyRunKey();
+    run.started =
+        std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
+    char host[256] = {};
+    if (::gethostname(host, sizeof(host) - 1) == 0) {
+        run.host = host;
+    }
+    for (int i = 0; i < argc; ++i) {
+        const std::string word = argv[i];
+        const bool quote = word.empty() || word.find_first_of(" \t\"'\\$") != std::string::npos;
+        run.command += (i == 0 ? "" : " ") + (quote ? "'" + word + "'" : word);
+    }
+    run.sharded = sharded;
+    run.shardIndex = shardIndex;
+    run.shardCount = shardCount;
+    return run;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

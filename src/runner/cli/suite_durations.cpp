@@ -1,0 +1,34 @@
+#include "runner/cli/suite_durations.h"
+
+#include <stdexcept>
+
+#include "runner/history/history_database.h"
+#include "runner/history/history_error.h"
+#include "runner/history/history_queries.h"
+#include "runner/reports/report_reader.h"
+
+namespace robottestingframework {
+namespace runner {
+
+std::map<std::string, double> suiteDurations(const std::string& file) {
+    if (looksLikeHistoryFile(file)) {
+        try {
+            HistoryDatabase database(file, HistoryDatabase::Mode::Read);
+            return latestSuiteSeconds(database);
+        } catch (const HistoryError& e) {
+            // Its message names the file as --history does: say which option gave it.
+            const std::string what = e.what();
+            const std::string prefix = "--history ";
+            throw std::runtime_error(
+                "--durations " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what));
+        }
+    }
+    std::map<std::string, double> seconds;
+    for (const auto& suite : readReport("--durations", file).suites) {
+        seconds[suite.name] = suite.seconds;
+    }
+    return seconds;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

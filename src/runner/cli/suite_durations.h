@@ -1,0 +1,16 @@
+// Each suite's time from an earlier run, for --durations (shard balancing, the ETA): read from
+// a JUnit or JSON report of this runner, or from a --history file (each suite's latest run).
+#pragma once
+
+#include <map>
+#include <string>
+
+namespace robottestingframework {
+namespace runner {
+
+// Suite name -> seconds. Throws std::runtime_error "--durations FILE: ..." when the file cannot
+// be read.
+std::map<std::string, double> suiteDurations(const std::string& file);
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,159 @@
+#include "runner/history/history_database.h"
+
+#include <sqlite3.h>
+
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <thread>
+
+#include "runner/history/history_error.h"
+#include "runner/history/sqlite_statement.h"
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+const char* const schema = R"sql(
+CREATE TABLE IF NOT EXISTS runs(
+    id INTEGER PRIMARY KEY,
+    run_key TEXT NOT NULL,
+    started REAL NOT NULL,
+    host TEXT NOT NULL,
+    command TEXT NOT NULL,
+    shard_index INTEGER,
+    shard_count INTEGER,
+    source TEXT NOT NULL);
+CREATE INDEX IF NOT EXISTS runs_by_key ON runs(run_key);
+CREATE TABLE IF NOT EXISTS tests(
+    id INTEGER PRIMARY KEY,
+    name TEXT NOT NULL UNIQUE);
+CREATE TABLE IF NOT EXISTS results(
+    run INTEGER NOT NULL REFERENCES runs(id),
+    test INTEGER NOT NULL REFERENCES tests(id),
+    suite TEXT NOT NULL,
+    state TEXT NOT NULL,
+    duration REAL NOT NULL,
+    attempts INTEGER NOT NULL);
+-- Covering: a run's results are read from the index alone (--history-report, the pages).
+CREATE INDEX IF NOT EXISTS results_by_run ON results(run, test, state, duration, attempts);
+CREATE TABLE IF NOT EXISTS suites(
+    run INTEGER NOT NULL REFERENCES runs(id),
+    name TEXT NOT NULL,
+    duration REAL NOT NULL);
+CREATE INDEX IF NOT EXISTS suites_by_name ON suites(name, run);
+CREATE TABLE IF NOT EXISTS measurements(
+    run INTEGER NOT NULL REFERENCES runs(id),
+    test INTEGER NOT NULL REFERENCES tests(id),
+    name TEXT NOT NULL,
+    value REAL NOT NULL,
+    unit TEXT NOT NULL,
+    low REAL,
+    high REAL);
+CREATE INDEX IF NOT EXISTS measurements_by_run ON measurements(run);
+)sql";
+
+std::int64_t pragmaNumber(sqlite3* db, const char* pragma, const std::string& file) {
+    SqliteStatement statement(db, std::string("PRAGMA ") + pragma, file);
+    return statement.step() ? statement.integer(0) : 0;
+}
+
+}  // namespace
+
+HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(path) {
+    const int flags =
+        mode == Mode::Read ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+    if (sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
+        const std::string why = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
+        sqlite3_close(db_);
+        db_ = nullptr;
+        throw HistoryError("--history " + path + ": cannot open the history file (" + why + ")");
+    }
+    sqlite3_busy_timeout(db_, busyTimeoutMilliseconds);
+    try {
+        checkOrCreateSchema(mode);
+    } catch (...) {
+        sqlite3_close(db_);
+        db_ = nullptr;
+        throw;
+    }
+}
+
+HistoryDatabase::~HistoryDatabase() {
+    sqlite3_close(db_);
+}
+
+void HistoryDatabase::checkOrCreateSchema(Mode mode) {
+    std::int64_t application = 0;
+    std::int64_t tables = 0;
+    std::int64_t version = 0;
+    try {
+        application = pragmaNumber(db_, "application_id", path_);
+        version = pragmaNumber(db_, "user_version", path_);
+        SqliteStatement count(db_, "SELECT count(*) FROM sqlite_master", path_);
+        tables = count.step() ? count.integer(0) : 0;
+    } catch (const HistoryError&) {
+        // SQLite says "file is not a database": say what the user gave us instead.
+        throw HistoryError("--history " + path_ +
+                           ": not a history file (not an SQLite database, or a damaged one)");
+    }
+    const bool fresh = application == 0 && tables == 0;
+    if (!fresh && application != applicationId) {
+        throw HistoryError("--history " + path_ +
+                           ": an SQLite database of another program, not a history file of "
+                           "this runner (its application_id is " +
+                           std::to_string(application) + ")");
+    }
+    if (!fresh && version > schemaVersion) {
+        throw HistoryError("--history " + path_ + ": written by a newer runner (schema " +
+                           std::to_string(version) + "; this runner reads up to " +
+                           std::to_string(schemaVersion) + ")");
+    }
+    if (mode == Mode::Read) {
+        if (fresh) {
+            throw HistoryError("--history " + path_ + ": an empty file, no run recorded yet");
+        }
+        return;
+    }
+    // WAL: readers never wait for the shard that writes. Changing the journal mode takes a
+    // lock that the busy timeout does not wait for, so a shard that meets another one doing
+    // it retries for a while.
+    const auto giveUp =
+        std::chrono::steady_clock::now() + std::chrono::milliseconds(busyTimeoutMilliseconds);
+    for (;;) {
+        const int status = sqlite3_exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, nullptr);
+        if (status == SQLITE_OK) {
+            break;
+        }
+        if ((status != SQLITE_BUSY && status != SQLITE_LOCKED) ||
+            std::chrono::steady_clock::now() > giveUp) {
+            throw HistoryError("--history " + path_ + ": " + sqlite3_errmsg(db_));
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    if (fresh || version < schemaVersion) {
+        runSql(db_, "BEGIN IMMEDIATE", path_);
+        try {
+            runSql(db_, schema, path_);
+            runSql(db_,
+                   "PRAGMA application_id=" + std::to_string(applicationId) +
+                       "; PRAGMA user_version=" + std::to_string(schemaVersion),
+                   path_);
+            runSql(db_, "COMMIT", path_);
+        } catch (...) {
+            sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+            throw;
+        }
+    }
+}
+
+bool looksLikeHistoryFile(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[16] = {};
+    in.read(magic, sizeof(magic));
+    return in.gcount() == sizeof(magic) && std::memcmp(magic, "SQLite format 3", 16) == 0;
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,56 @@
+// The --history file: one SQLite database a CI job can carry as an artifact. Opening it checks
+// it is this runner's (SQLite's application_id "RTFH") and of a schema version this runner
+// reads, and makes the tables when the file is new. WAL and a busy timeout let the shards of
+// one run (separate processes) append at once.
+//
+// Tables (schema version 1):
+//   runs(id, run_key, started, host, command, shard_index, shard_count, source)
+//     one row per process that appended (a run's shards share run_key) or per imported report
+//   tests(id, name)            the test ids (README "Test ids"), each once
+//   results(run, test, suite, state, duration, attempts)
+//   suites(run, name, duration)                       fixtures included: for --durations
+//   measurements(run, test, name, value, unit, low, high)
+#pragma once
+
+#include <string>
+
+struct sqlite3;
+
+namespace robottestingframework {
+namespace runner {
+
+class HistoryDatabase {
+public:
+    enum class Mode {
+        Read,    // the file must exist; nothing is written
+        Append,  // made when missing; a read-only file fails on the first write
+    };
+    // Throws HistoryError naming `path` when it cannot be opened, is not an SQLite database,
+    // is another program's database or is of a newer schema.
+    HistoryDatabase(const std::string& path, Mode mode);
+    ~HistoryDatabase();
+    HistoryDatabase(const HistoryDatabase&) = delete;
+    HistoryDatabase& operator=(const HistoryDatabase&) = delete;
+
+    sqlite3* handle() const { return db_; }
+    const std::string& path() const { return path_; }
+
+    // "RTFH", SQLite's PRAGMA application_id of a history file.
+    static constexpr int applicationId = 0x52544648;
+    static constexpr int schemaVersion = 1;
+    // How long a writer waits for another shard's transaction before giving up.
+    static constexpr int busyTimeoutMilliseconds = 30000;
+
+private:
+    void checkOrCreateSchema(Mode mode);
+
+    sqlite3* db_ = nullptr;
+    std::string path_;
+};
+
+// True when the file at `path` starts as an SQLite database does ("SQLite format 3"): how
+// --durations tells a history file from a report.
+bool looksLikeHistoryFile(const std::string& path);
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,265 @@
+// The --history file (src/runner/history): its schema and checks, appending runs, reading
+// each test's recent runs back, flaky rates and slowdowns.
+#include <gtest/gtest.h>
+
+#include <sqlite3.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "runner/history/history_database.h"
+#include "runner/history/history_error.h"
+#include "runner/history/history_queries.h"
+#include "runner/history/history_trends.h"
+#include "runner/history/run_appender.h"
+
+using namespace robottestingframework::runner;
+namespace fs = std::filesystem;
+
+namespace {
+
+class History : public ::testing::Test {
+protected:
+    void SetUp() override {
+        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("history_" + std::to_string(::getpid()));
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+        path_ = (dir_ / "history.db").string();
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+
+    // Appends a run of `key` started at `started` with the tests (id, state, seconds).
+    void append(const std::string& key, double started,
+                const std::vector<HistoryTestResult>& tests) {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        HistoryRun run;
+        run.runKey = key;
+        run.started = started;
+        RunAppender appender(database, run);
+        for (const HistoryTestResult& test : tests) {
+            appender.addTest(test);
+        }
+        appender.commit();
+    }
+
+    std::string message(HistoryDatabase::Mode mode) {
+        try {
+            HistoryDatabase database(path_, mode);
+        } catch (const HistoryError& e) {
+            return e.what();
+        }
+        return "";
+    }
+
+    fs::path dir_;
+    std::string path_;
+};
+
+HistoryTestResult result(const std::string& test, const std::string& state, double seconds = 1) {
+    return {test, "s", state, seconds, 1};
+}
+
+TestHistory historyOf(const std::vector<std::string>& states,
+                      const std::vector<double>& seconds = {}) {
+    TestHistory history{"s/t", {}};
+    for (std::size_t i = 0; i < states.size(); ++i) {
+        history.runs.push_back({states[i], i < seconds.size() ? seconds[i] : 1.0, 1});
+    }
+    return history;
+}
+
+TEST_F(History, ANewFileGetsTheSchemaAndReadsBack) {
+    append("a", 1, {result("s/t", "passed")});
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    const auto histories = recentHistories(database, 30);
+    ASSERT_EQ(histories.size(), 1u);
+    EXPECT_EQ(histories[0].test, "s/t");
+    ASSERT_EQ(histories[0].runs.size(), 1u);
+    EXPECT_EQ(histories[0].runs[0].state, "passed");
+    EXPECT_EQ(countRuns(database), 1u);
+}
+
+TEST_F(History, AFileThatIsNoDatabaseIsAnErrorNamingIt) {
+    std::ofstream(path_) << "this is a text file, long enough to be read as a header......";
+    const std::string error = message(HistoryDatabase::Mode::Append);
+    EXPECT_NE(error.find(path_), std::string::npos) << error;
+    EXPECT_NE(error.find("not a history file"), std::string::npos) << error;
+}
+
+TEST_F(History, AnotherProgramsDatabaseIsRefused) {
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db, "CREATE TABLE notes(text TEXT)", nullptr, nullptr, nullptr),
+              SQLITE_OK);
+    sqlite3_close(db);
+    const std::string error = message(HistoryDatabase::Mode::Append);
+    EXPECT_NE(error.find("another program"), std::string::npos) << error;
+    EXPECT_NE(error.find(path_), std::string::npos) << error;
+}
+
+TEST_F(History, ANewerSchemaIsRefused) {
+    append("a", 1, {});
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+    ASSERT_EQ(sqlite3_exec(db, "PRAGMA user_version=99", nullptr, nullptr, nullptr), SQLITE_OK);
+    sqlite3_close(db);
+    const std::string error = message(HistoryDatabase::Mode::Read);
+    EXPECT_NE(error.find("newer"), std::string::npos) << error;
+}
+
+TEST_F(History, ReadingAMissingFileIsAnErrorAndMakesNoFile) {
+    EXPECT_NE(message(HistoryDatabase::Mode::Read).find(path_), std::string::npos);
+    EXPECT_FALSE(fs::exists(path_));
+}
+
+TEST_F(History, RunsComeBackOldestFirstAndOnlyTheLastN) {
+    append("r1", 100, {result("s/t", "passed", 1)});
+    append("r3", 300, {result("s/t", "failed", 3)});
+    append("r2", 200, {result("s/t", "flaky", 2), result("s/u", "passed")});
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    auto histories = recentHistories(database, 30);
+    ASSERT_EQ(histories.size(), 2u);
+    ASSERT_EQ(histories[0].runs.size(), 3u);
+    EXPECT_EQ(histories[0].runs[0].state, "passed");
+    EXPECT_EQ(histories[0].runs[1].state, "flaky");
+    EXPECT_EQ(histories[0].runs[2].state, "failed");
+    histories = recentHistories(database, 1);
+    ASSERT_EQ(histories.size(), 1u);
+    EXPECT_EQ(histories[0].runs.size(), 1u);
+    EXPECT_DOUBLE_EQ(histories[0].runs[0].duration, 3);
+}
+
+TEST_F(History, TheShardsOfOneRunAreOneRun) {
+    append("ci-7", 100, {result("s/a", "passed")});
+    append("ci-7", 101, {result("s/b", "passed")});
+    append("ci-8", 200, {result("s/a", "failed")});
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    EXPECT_EQ(countRuns(database), 2u);
+    const auto histories = recentHistories(database, 2);
+    ASSERT_EQ(histories.size(), 2u);
+    EXPECT_EQ(histories[0].runs.size(), 2u);  // s/a in both runs
+    EXPECT_EQ(histories[1].runs.size(), 1u);  // s/b in the first
+}
+
+TEST_F(History, AnUncommittedRunLeavesNothing) {
+    append("first", 1, {result("s/t", "passed")});
+    {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        HistoryRun run;
+        run.runKey = "lost";
+        RunAppender appender(database, run);
+        appender.addTest(result("s/t", "failed"));
+    }
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    EXPECT_EQ(countRuns(database), 1u);
+}
+
+TEST_F(History, MeasurementsAreStoredWithTheirLimits) {
+    {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        HistoryRun run;
+        run.runKey = "m";
+        RunAppender appender(database, run);
+        HistoryMeasurement within{"s/t", "latency", 0.5, "s", true, 0, true, 1};
+        HistoryMeasurement open{"s/t", "rate", 99, "Hz", false, 0, false, 0};
+        appender.addMeasurement(within);
+        appender.addMeasurement(open);
+        appender.commit();
+    }
+    sqlite3* db = nullptr;
+    ASSERT_EQ(sqlite3_open(path_.c_str(), &db), SQLITE_OK);
+    sqlite3_stmt* statement = nullptr;
+    ASSERT_EQ(sqlite3_prepare_v2(db,
+                                 "SELECT m.name, m.value, m.unit, m.low IS NULL, m.high "
+                                 "FROM measurements m JOIN tests t ON t.id = m.test "
+                                 "WHERE t.name = 's/t' ORDER BY m.rowid",
+                                 -1, &statement, nullptr),
+              SQLITE_OK);
+    ASSERT_EQ(sqlite3_step(statement), SQLITE_ROW);
+    EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(statement, 0)), "latency");
+    EXPECT_DOUBLE_EQ(sqlite3_column_double(statement, 4), 1);
+    ASSERT_EQ(sqlite3_step(statement), SQLITE_ROW);
+    EXPECT_STREQ(reinterpret_cast<const char*>(sqlite3_column_text(statement, 2)), "Hz");
+    EXPECT_EQ(sqlite3_column_int(statement, 3), 1);
+    EXPECT_EQ(sqlite3_step(statement), SQLITE_DONE);
+    sqlite3_finalize(statement);
+    sqlite3_close(db);
+}
+
+TEST_F(History, EachSuitesLatestTimeIsKept) {
+    for (const auto& [key, started, seconds] :
+         {std::make_tuple("old", 1.0, 5.0), std::make_tuple("new", 2.0, 7.0)}) {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        HistoryRun run;
+        run.runKey = key;
+        run.started = started;
+        RunAppender appender(database, run);
+        appender.addSuite({"arm", seconds});
+        appender.commit();
+    }
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    EXPECT_DOUBLE_EQ(latestSuiteSeconds(database).at("arm"), 7.0);
+}
+
+TEST_F(History, SeveralWritersAppendAtOnce) {
+    append("setup", 0, {});  // the schema, as the first shard of a CI run would make it
+    std::vector<std::thread> shards;
+    for (int shard = 0; shard < 4; ++shard) {
+        shards.emplace_back([this, shard] {
+            std::vector<HistoryTestResult> tests;
+            for (int i = 0; i < 200; ++i) {
+                tests.push_back(
+                    result("s" + std::to_string(shard) + "/" + std::to_string(i), "passed"));
+            }
+            append("run", 1 + shard, tests);
+        });
+    }
+    for (auto& shard : shards) {
+        shard.join();
+    }
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    EXPECT_EQ(recentHistories(database, 30).size(), 800u);
+}
+
+TEST(HistoryTrends, AFlakyRunOrAChangeOfOutcomeCountsAsFlaky) {
+    EXPECT_DOUBLE_EQ(flakyRate(historyOf({"passed", "passed", "passed", "passed"})), 0);
+    EXPECT_DOUBLE_EQ(flakyRate(historyOf({"passed", "flaky", "passed", "passed"})), 0.25);
+    EXPECT_DOUBLE_EQ(flakyRate(historyOf({"passed", "failed", "passed", "passed"})), 0.5);
+    EXPECT_DOUBLE_EQ(flakyRate(historyOf({"failed", "failed", "failed", "failed"})), 0);
+    // Skipped runs are not outcomes: passed, skipped, passed is no change.
+    EXPECT_DOUBLE_EQ(flakyRate(historyOf({"passed", "skipped", "passed"})), 0);
+}
+
+TEST(HistoryTrends, ASlowdownComparesTheNewestThirdWithTheOlderRuns) {
+    const Slowdown slowed = slowdownOf(historyOf(
+        {"passed", "passed", "passed", "passed", "passed", "passed"}, {1, 1, 1, 1, 3, 3}));
+    EXPECT_DOUBLE_EQ(slowed.before, 1);
+    EXPECT_DOUBLE_EQ(slowed.recent, 3);
+    EXPECT_DOUBLE_EQ(slowdownOf(historyOf({"passed", "passed"}, {1, 5})).ratio(), 0);
+}
+
+TEST(HistoryTrends, TheListsAreOrderedAndLeaveOutSteadyTests) {
+    std::vector<TestHistory> histories = {
+        historyOf({"passed", "failed", "passed"}, {1, 1, 1}),
+        historyOf({"passed", "passed", "passed"}, {1, 1, 1}),
+        historyOf({"passed", "flaky", "passed"}, {1, 1, 2}),
+        historyOf({"passed", "passed", "passed"}, {0.01, 0.01, 0.04}),  // 4 times, yet 30 ms
+    };
+    histories[0].test = "a";
+    histories[1].test = "b";
+    histories[2].test = "c";
+    histories[3].test = "d";
+    const auto flaky = flakiestTests(histories, 10);
+    ASSERT_EQ(flaky.size(), 2u);
+    EXPECT_EQ(flaky[0].history->test, "a");
+    EXPECT_EQ(flaky[1].history->test, "c");
+    const auto slowed = mostSlowedTests(histories, 10);
+    ASSERT_EQ(slowed.size(), 1u);
+    EXPECT_EQ(slowed[0].history->test, "c");
+}
+
+}  // namespace
