@@ -19,7 +19,7 @@ const char* const head = R"html(<!DOCTYPE html>
 <html lang="en">
 <head>
 <meta charset="utf-8">
-<meta http-equiv="Content-Security-Policy" content="default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; img-src data:">
+<meta http-equiv="Content-Security-Policy" content="default-src 'none'; style-src 'unsafe-inline'; script-src 'unsafe-inline'; img-src data: 'self' file:">
 <meta name="viewport" content="width=device-width, initial-scale=1">
 <title>Robot Testing Framework results</title>
 <style>
@@ -56,6 +56,9 @@ details.suite > summary { cursor: pointer; padding: .4rem .6rem; font-weight: 60
 .time { margin-left: auto; }
 .detail { padding: .2rem 1rem .6rem 2.2rem; }
 .detail div { white-space: pre-wrap; word-break: break-word; }
+.measures { border-collapse: collapse; margin: .3rem 0; }
+.measures td, .measures th { padding: .1rem .6rem; text-align: left; }
+.attached img { max-width: 32rem; max-height: 20rem; display: block; }
 pre { background: var(--panel); border: 1px solid var(--line); border-radius: 6px; padding: .5rem;
   white-space: pre-wrap; word-break: break-word; margin: .3rem 0; }
 #slowest li { margin: .1rem 0; }
@@ -138,6 +141,34 @@ const char* const tail = R"html(</script>
       const line = el("div", m.problem ? "failing" : "");
       line.textContent = m.label + ": " + m.text + (m.at ? "  [" + m.at + "]" : "");
       detail.appendChild(line);
+    }
+    if (t.measurements && t.measurements.length) {
+      const table = el("table", "measures");
+      const head = el("tr");
+      for (const h of ["measurement", "value", "unit", "limits", ""]) head.appendChild(el("th", "", h));
+      table.appendChild(head);
+      for (const m of t.measurements) {
+        const row = el("tr", m.passed ? "" : "failing");
+        const limits = m.low !== undefined && m.high !== undefined ? "[" + m.low + ", " + m.high + "]"
+            : m.low !== undefined ? ">= " + m.low : m.high !== undefined ? "<= " + m.high : "";
+        for (const v of [m.name + (m.rep ? " #" + m.rep : ""), String(m.value), m.unit, limits,
+                         m.passed ? "ok" : "outside"]) row.appendChild(el("td", "", v));
+        table.appendChild(row);
+      }
+      detail.appendChild(table);
+    }
+    for (const a of t.attachments || []) {
+      const box = el("div", "attached");
+      const link = el("a", "", a.name + (a.description ? " \u2014 " + a.description : ""));
+      link.href = a.path;
+      box.appendChild(link);
+      if (/\.(png|jpe?g|svg)$/i.test(a.path)) {
+        const img = el("img");
+        img.src = a.path;
+        img.alt = a.description || a.name;
+        box.appendChild(img);
+      }
+      detail.appendChild(box);
     }
     if (t.output) {
       detail.appendChild(el("div", "note", "output:"));
@@ -272,6 +303,41 @@ std::string messageData(const ResultEvent& event) {
     return out + "}";
 }
 
+// A test's measurements (a table on the page) and attachments (links; images inline).
+void appendMeasurementsAndAttachments(std::string& out, const std::vector<ResultEvent>& events) {
+    std::string measurements;
+    std::string attachments;
+    for (const ResultEvent& event : events) {
+        if (event.kind == Kind::Measurement && event.measurement) {
+            const Measurement& m = *event.measurement;
+            measurements +=
+                std::string(measurements.empty() ? "" : ",") + "{\"name\":" + jsonString(m.name) +
+                ",\"value\":" + formatNumber(m.value) + ",\"unit\":" + jsonString(m.unit);
+            if (m.low) {
+                measurements += ",\"low\":" + formatNumber(*m.low);
+            }
+            if (m.high) {
+                measurements += ",\"high\":" + formatNumber(*m.high);
+            }
+            measurements += std::string(",\"passed\":") + (event.passed ? "true" : "false") +
+                            ",\"rep\":" + std::to_string(event.repetition) + "}";
+        } else if (event.kind == Kind::Attachment && event.attachment) {
+            const Attachment& a = *event.attachment;
+            attachments += std::string(attachments.empty() ? "" : ",") +
+                           "{\"name\":" + jsonString(a.originalName) +
+                           ",\"path\":" + jsonString(a.path) +
+                           ",\"description\":" + jsonString(a.description) +
+                           ",\"size\":" + std::to_string(a.size) + "}";
+        }
+    }
+    if (!measurements.empty()) {
+        out += ",\"measurements\":[" + measurements + "]";
+    }
+    if (!attachments.empty()) {
+        out += ",\"attachments\":[" + attachments + "]";
+    }
+}
+
 // Cut on a character boundary, never inside a UTF-8 sequence.
 std::string capped(const std::string& text, std::size_t& cut) {
     const std::string valid = validUtf8(text);
@@ -341,6 +407,9 @@ std::string HtmlReporter::document() {
             out += ",\"messages\":[";
             bool firstMessage = true;
             for (const ResultEvent& event : test.events) {
+                if (event.kind == Kind::Measurement || event.kind == Kind::Attachment) {
+                    continue;  // in their own table and links below
+                }
                 if (!settings_.verbose &&
                     (event.kind == Kind::Report || event.kind == Kind::Check) &&
                     !(event.kind == Kind::Check && !event.passed)) {
@@ -350,6 +419,7 @@ std::string HtmlReporter::document() {
                 firstMessage = false;
             }
             out += "]";
+            appendMeasurementsAndAttachments(out, test.events);
             if (!test.output.empty()) {
                 out += ",\"output\":" + jsonString(capped(test.output, cut));
                 if (cut > 0) {
