@@ -132,7 +132,7 @@ bool WebServer::start(const std::string& host, unsigned int port, std::string& e
         if (view_.attachment(std::stoul(req.matches[1].str()), attachment)) {
             file.open(attachment.absolutePath, std::ios::binary);
         }
-        if (!file) {
+        if (!file.is_open()) {
             res.status = 404;
             res.set_content("no such attachment\n", "text/plain");
             return;
