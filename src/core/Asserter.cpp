@@ -32,12 +32,6 @@ TestMessage at(const TestMessage& where, const std::string& text) {
                        where.getSourceLineNumber());
 }
 
-// An error that does not stop the test (a measurement or attachment it could not record).
-void testError(TestCase* test, TestResult* result, TestMessage msg) {
-    result->addError(test, std::move(msg));
-    test->failed();
-}
-
 }  // namespace
 
 std::string Asserter::format(const char* fmt, ...) {
@@ -148,7 +142,9 @@ void Asserter::testMeasure(const Measurement& measurement, TestMessage where, Te
     }
     const std::string problem = measurementProblem(measurement);
     if (!problem.empty()) {
-        testError(test, result, at(where, problem));
+        result->addError(test, at(where, problem));
+        test->failureReported_ = true;  // the error says why: no "marked itself failed"
+        test->failed();
         return;
     }
     const bool passed = measurement.withinLimits();
@@ -171,7 +167,9 @@ void Asserter::testAttach(const std::string& path, const std::string& descriptio
     Attachment attachment;
     std::string error;
     if (!storeAttachment(path, description, attachment, error)) {
-        testError(test, result, at(where, error));
+        result->addError(test, at(where, error));
+        test->failureReported_ = true;
+        test->failed();
         return;
     }
     result->addAttachment(test, attachment);
