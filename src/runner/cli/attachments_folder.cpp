@@ -38,21 +38,24 @@ bool prepareAttachmentsFolder(const Options& options, std::string& error) {
     }
     const fs::path folder = reportsFolder(options) / "rtf-attachments";
     std::error_code failed;
-    if (fs::is_symlink(fs::symlink_status(folder, failed))) {
+    const fs::file_status status = fs::symlink_status(folder, failed);
+    if (fs::is_symlink(status)) {
         error = "the attachments folder " + folder.string() + " is a symbolic link";
         return false;
     }
-    fs::create_directories(folder, failed);
-    if (failed) {
-        error = "cannot make the attachments folder " + folder.string() + ": " + failed.message();
-        return false;
-    }
-    // The last run's files go: what a report links is this run's. Only plain files, not
-    // what the user may have put there.
-    for (const auto& entry : fs::directory_iterator(folder, failed)) {
-        std::error_code ignored;
-        if (entry.is_regular_file(ignored) && !entry.is_symlink(ignored)) {
-            fs::remove(entry.path(), ignored);
+    // Made by the first attachment (a run without any writes nothing). The last run's files
+    // go: what a report links is this run's. Only plain files, not what the user put there.
+    if (fs::is_directory(status)) {
+        for (const auto& entry : fs::directory_iterator(folder, failed)) {
+            std::error_code ignored;
+            if (entry.is_regular_file(ignored) && !entry.is_symlink(ignored)) {
+                fs::remove(entry.path(), ignored);
+            }
+        }
+        if (failed) {
+            error =
+                "cannot empty the attachments folder " + folder.string() + ": " + failed.message();
+            return false;
         }
     }
     ::setenv(kVariable, folder.c_str(), 1);

@@ -1,7 +1,7 @@
 // The run's attachments folder (README: Attachments): rtf-attachments/ beside the first file
-// output (the current folder without one), emptied when a run starts, and named to the tests
-// through RTF_ATTACHMENTS_DIR, which the workers inherit. A folder the user named in
-// RTF_ATTACHMENTS_DIR is used as it is.
+// output (the current folder without one), made by the first attachment and emptied when a run
+// starts, and named to the tests through RTF_ATTACHMENTS_DIR, which the workers inherit. A folder
+// the user named in RTF_ATTACHMENTS_DIR is used as it is.
 #pragma once
 
 #include <string>
@@ -11,7 +11,7 @@
 namespace robottestingframework {
 namespace runner {
 
-// False with `error` naming the folder when it cannot be made or emptied.
+// False with `error` naming the folder when it is a symbolic link or cannot be emptied.
 bool prepareAttachmentsFolder(const Options& options, std::string& error);
 
 }  // namespace runner
