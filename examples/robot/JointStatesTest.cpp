@@ -7,6 +7,7 @@
 #include <sys/time.h>
 #include <unistd.h>
 
+#include <cstdlib>
 #include <string>
 
 #include <robottestingframework/Arguments.h>
@@ -48,10 +49,20 @@ public:
                 first.find('"' + std::string(joint) + '"') != std::string::npos,
                 std::string("the state names joint ") + joint);
         }
+        // The rate the robot sends its states at, from the times they carry (what the socket
+        // buffered meanwhile does not count): it promises 100 Hz.
         std::string later;
+        double firstTime = -1;
+        double lastTime = -1;
         for (int i = 0; i < 20; ++i) {
             later = readLine();
+            const double time = timeOf(later);
+            firstTime = firstTime < 0 ? time : firstTime;
+            lastTime = time;
         }
+        const double span = lastTime - firstTime;
+        ROBOTTESTINGFRAMEWORK_TEST_MEASURE_IN("message rate", span > 0 ? 19 / span : 0.0, "Hz", 20,
+                                              500);
         ROBOTTESTINGFRAMEWORK_TEST_CHECK(!later.empty() && later != first,
                                          "the joints move (a later state differs)");
     }
@@ -64,6 +75,12 @@ public:
     }
 
 private:
+    // The "time" a state line carries (seconds since the robot started); -1 without one.
+    static double timeOf(const std::string& line) {
+        const std::size_t at = line.find("\"time\": ");
+        return at == std::string::npos ? -1 : std::strtod(line.c_str() + at + 8, nullptr);
+    }
+
     std::string readLine() {
         std::string line;
         char c = 0;

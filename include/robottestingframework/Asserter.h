@@ -5,6 +5,7 @@
 
 // What RTF 2.x's Asserter.h (and so TestAssert.h) brought along; tests rely on them.
 #include <robottestingframework/Exception.h>
+#include <robottestingframework/Measurement.h>
 #include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestMessage.h>
 #include <robottestingframework/TestSuite.h>
@@ -40,6 +41,15 @@ public:
     // Marks the test failed (and goes on) when `condition` is false, as RTF 2.x's did: the
     // condition is what should hold.
     static void testFail(bool condition, TestMessage msg, TestCase* testcase = nullptr);
+    // Records a measurement. Outside its limits the test is marked failed (a failure naming
+    // value, limits and unit) and goes on; one that cannot be recorded (measurementProblem)
+    // is an error of the test, which goes on too. `where` gives the source file and line.
+    static void testMeasure(const Measurement& measurement, TestMessage where = TestMessage(),
+                            TestCase* testcase = nullptr);
+    // Copies the file at `path` into the run's attachments folder and records it; a file that
+    // cannot be attached (missing, over a limit) is an error of the test, which goes on.
+    static void testAttach(const std::string& path, const std::string& description,
+                           TestMessage where = TestMessage(), TestCase* testcase = nullptr);
 };
 
 }  // namespace robottestingframework

@@ -3,7 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <string>
+
+#include <robottestingframework/Attachment.h>
+#include <robottestingframework/Measurement.h>
 
 #include <robottestingframework/Test.h>  // as in RTF 2.x
 #include <robottestingframework/TestMessage.h>
@@ -28,9 +32,11 @@ struct ResultEvent {
         Timeout,
         Interrupted,
         Output,
-        Rename,      // the test now goes by `message`'s text (a script's setName)
-        Retry,       // the test just ended failing and runs again; `message` says which attempt
-        Repetition,  // repetition `repetition` of `repetitions` of the test starts
+        Rename,       // the test now goes by `message`'s text (a script's setName)
+        Retry,        // the test just ended failing and runs again; `message` says which attempt
+        Repetition,   // repetition `repetition` of `repetitions` of the test starts
+        Measurement,  // the test measured `measurement`; `passed`: within its limits
+        Attachment,   // the test attached `attachment` (already copied)
         // Reserved for the runner's own tests (tests/e2e/test_event_kinds.py): no product code
         // sends it. A kind with nothing but its rows in the tables (TestListener::addEvent
         // takes it): it fails its test, so every report shows whether it arrived.
@@ -49,6 +55,10 @@ struct ResultEvent {
     // 0 when the test runs once, and for runner and suite events.
     unsigned int repetition = 0;
     unsigned int repetitions = 0;  // for Repetition: how many times the test runs
+    // For Measurement and Attachment: what was measured or attached (shared, as events are
+    // copied to every record and relay; null for every other kind).
+    std::shared_ptr<const robottestingframework::Measurement> measurement = nullptr;
+    std::shared_ptr<const robottestingframework::Attachment> attachment = nullptr;
 };
 
 // The id of repetition `index` of the test `testId`: "<testId>#<index>". Given by the plan

@@ -24,6 +24,22 @@
     ::robottestingframework::Asserter::testCheck(            \
         static_cast<bool>(condition), ROBOTTESTINGFRAMEWORK_MESSAGE_(message, #condition))
 
+// Records a measurement (a number with its unit, "" for none); with limits, a value outside
+// [low, high] marks the test failed and the test goes on.
+#define ROBOTTESTINGFRAMEWORK_TEST_MEASURE(name, value, unit)                                     \
+    ::robottestingframework::Asserter::testMeasure(                                               \
+        ::robottestingframework::Measurement{(name), static_cast<double>(value), (unit), {}, {}}, \
+        ROBOTTESTINGFRAMEWORK_MESSAGE_("", ""))
+#define ROBOTTESTINGFRAMEWORK_TEST_MEASURE_IN(name, value, unit, low, high)                        \
+    ::robottestingframework::Asserter::testMeasure(                                                \
+        ::robottestingframework::Measurement{(name), static_cast<double>(value), (unit),           \
+                                             static_cast<double>(low), static_cast<double>(high)}, \
+        ROBOTTESTINGFRAMEWORK_MESSAGE_("", ""))
+// Copies a file (a plot, a log) into the run's attachments folder and records it with the test.
+#define ROBOTTESTINGFRAMEWORK_TEST_ATTACH(path, description)             \
+    ::robottestingframework::Asserter::testAttach((path), (description), \
+                                                  ROBOTTESTINGFRAMEWORK_MESSAGE_("", ""))
+
 // Marks the test failed (and goes on) when the condition is true / false.
 #define ROBOTTESTINGFRAMEWORK_TEST_FAIL_IF_TRUE(condition, message) \
     ::robottestingframework::Asserter::testFail(                    \

@@ -56,6 +56,12 @@ public:
     // its id is repetitionId(test->getId(), index). By default it is the report
     // "repetition index/count", as RTF 2.x's listeners saw it.
     virtual void startRepetition(const Test* test, unsigned int index, unsigned int count);
+    // The test measured something (Asserter::testMeasure); `passed`: within its limits. A
+    // measurement outside them is followed by the addFailure that says so.
+    virtual void addMeasurement(const Test* /*test*/, const Measurement& /*measurement*/,
+                                bool /*passed*/) {}
+    // The test attached a file, already copied into the run's attachments folder.
+    virtual void addAttachment(const Test* /*test*/, const Attachment& /*attachment*/) {}
     // An event of a kind with no handler of its own above (ResultEvent::Kind::Probe, and kinds
     // added later until they get one): its word is toString(event.kind), the state it gives
     // the test stateOf(event.kind).

@@ -45,6 +45,8 @@ public:
     void renameTest(const Test* test, const std::string& name);
     void retryTest(const Test* test, TestMessage msg);
     void startRepetition(const Test* test, unsigned int index, unsigned int count);
+    void addMeasurement(const Test* test, const Measurement& measurement, bool passed);
+    void addAttachment(const Test* test, const Attachment& attachment);
 
 private:
     std::vector<TestListener*> listeners_;

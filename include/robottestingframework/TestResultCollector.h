@@ -142,6 +142,8 @@ public:
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
+    void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
+    void addAttachment(const Test* test, const Attachment& attachment) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
 
 private:
@@ -157,7 +159,9 @@ private:
     static constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     double now() const;
-    void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true);
+    // `payload`: the measurement or attachment the event carries, if any.
+    void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true,
+                const ResultEvent* payload = nullptr);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
     // Cuts a test's output to its tail once the run's output budget is spent.

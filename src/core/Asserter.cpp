@@ -9,6 +9,8 @@
 #include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestResult.h>
 
+#include "attachment_store.h"
+
 namespace robottestingframework {
 
 namespace {
@@ -23,6 +25,11 @@ void printOrphan(const char* label, const TestMessage& msg) {
 
 TestCase* target(TestCase* testcase) {
     return testcase ? testcase : TestCase::current();
+}
+
+TestMessage at(const TestMessage& where, const std::string& text) {
+    return TestMessage(text, where.getDetail(), where.getSourceFileName(),
+                       where.getSourceLineNumber());
 }
 
 }  // namespace
@@ -124,6 +131,48 @@ void Asserter::testFail(bool condition, TestMessage msg, TestCase* testcase) {
     result->addFailure(test, msg);
     test->failureReported_ = true;
     test->failed();
+}
+
+void Asserter::testMeasure(const Measurement& measurement, TestMessage where, TestCase* testcase) {
+    TestCase* test = target(testcase);
+    TestResult* result = test ? test->getResult() : nullptr;
+    if (result == nullptr) {
+        printOrphan("measurement", at(where, measurement.name));
+        return;
+    }
+    const std::string problem = measurementProblem(measurement);
+    if (!problem.empty()) {
+        result->addError(test, at(where, problem));
+        test->failureReported_ = true;  // the error says why: no "marked itself failed"
+        test->failed();
+        return;
+    }
+    const bool passed = measurement.withinLimits();
+    result->addMeasurement(test, measurement, passed);
+    if (!passed) {
+        result->addFailure(test, at(where, outOfLimitsMessage(measurement)));
+        test->failureReported_ = true;
+        test->failed();
+    }
+}
+
+void Asserter::testAttach(const std::string& path, const std::string& description,
+                          TestMessage where, TestCase* testcase) {
+    TestCase* test = target(testcase);
+    TestResult* result = test ? test->getResult() : nullptr;
+    if (result == nullptr) {
+        printOrphan("attachment", at(where, path));
+        return;
+    }
+    Attachment attachment;
+    std::string error;
+    if (!storeAttachment(path, description, attachment, error)) {
+        result->addError(test, at(where, error));
+        test->failureReported_ = true;
+        test->failed();
+        return;
+    }
+    result->addAttachment(test, attachment);
 }
 
 }  // namespace robottestingframework

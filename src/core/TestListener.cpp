@@ -63,6 +63,21 @@ void TestListener::onEvent(const RunEvent& event) {
         case Kind::Repetition:
             startRepetition(test, data.repetition, data.repetitions);
             break;
+        // Without what it carries (a broken worker's record), it is an event like any other.
+        case Kind::Measurement:
+            if (data.measurement) {
+                addMeasurement(test, *data.measurement, data.passed);
+            } else {
+                addEvent(test, data);
+            }
+            break;
+        case Kind::Attachment:
+            if (data.attachment) {
+                addAttachment(test, *data.attachment);
+            } else {
+                addEvent(test, data);
+            }
+            break;
         case Kind::Probe:
             addEvent(test, data);
             break;

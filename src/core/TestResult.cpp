@@ -137,6 +137,20 @@ void TestResult::startRepetition(const Test* test, unsigned int index, unsigned 
     publish(event);
 }
 
+void TestResult::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {
+    RunEvent event =
+        eventOf(Kind::Measurement, test, TestMessage(describeMeasurement(measurement)));
+    event.data.passed = passed;
+    event.data.measurement = std::make_shared<const Measurement>(measurement);
+    publish(event);
+}
+
+void TestResult::addAttachment(const Test* test, const Attachment& attachment) {
+    RunEvent event = eventOf(Kind::Attachment, test, TestMessage(describeAttachment(attachment)));
+    event.data.attachment = std::make_shared<const Attachment>(attachment);
+    publish(event);
+}
+
 void TestResult::addInterrupted(const Test* test, TestMessage msg) {
     publish(eventOf(Kind::Interrupted, test, bounded(std::move(msg))));
 }

@@ -161,7 +161,8 @@ TestResultCollector::OpenTest* TestResultCollector::findOpen(const Test* test) {
     return nullptr;
 }
 
-void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed) {
+void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed,
+                                 const ResultEvent* payload) {
     // A test's own event goes to its record (and its repetition); anything else open (a
     // fixture's report from a watcher thread, a collapse) belongs to the suite.
     const OpenTest* open = findOpen(test);
@@ -172,6 +173,10 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
         return;
     }
     ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
+    if (payload != nullptr) {
+        event.measurement = payload->measurement;
+        event.attachment = payload->attachment;
+    }
     if (owner != nullptr) {
         event.repetition = open->repetition;
         if (kind == Kind::Output) {
@@ -237,7 +242,21 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
 }
 
 void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
-    record(event.kind, test, event.message, event.passed);
+    record(event.kind, test, event.message, event.passed, &event);
+}
+
+void TestResultCollector::addMeasurement(const Test* test, const Measurement& measurement,
+                                         bool passed) {
+    ResultEvent payload;
+    payload.measurement = std::make_shared<const Measurement>(measurement);
+    record(Kind::Measurement, test, TestMessage(describeMeasurement(measurement)), passed,
+           &payload);
+}
+
+void TestResultCollector::addAttachment(const Test* test, const Attachment& attachment) {
+    ResultEvent payload;
+    payload.attachment = std::make_shared<const Attachment>(attachment);
+    record(Kind::Attachment, test, TestMessage(describeAttachment(attachment)), true, &payload);
 }
 
 void TestResultCollector::renameTest(const Test* test, const std::string& name) {

@@ -76,6 +76,8 @@ constexpr KindRow kindRows[] = {
     {Kind::Rename, "rename", TestStatus::Passed, false},
     {Kind::Retry, "retry", TestStatus::Passed, false},
     {Kind::Repetition, "repetition", TestStatus::Passed, false},
+    {Kind::Measurement, "measurement", TestStatus::Passed, false},
+    {Kind::Attachment, "attachment", TestStatus::Passed, false},
     {Kind::Probe, "probe", TestStatus::Failed, false},
 };
 

@@ -1,6 +1,7 @@
 #include "isolation/wire_format.h"
 
 #include <cstring>
+#include <optional>
 
 namespace robottestingframework {
 namespace isolation {
@@ -27,6 +28,43 @@ void putI64(std::string& out, std::int64_t value) {
 void putString(std::string& out, const std::string& text) {
     putU32(out, static_cast<std::uint32_t>(text.size()));
     out.append(text);
+}
+
+void putDouble(std::string& out, double value) {
+    std::int64_t bits;
+    std::memcpy(&bits, &value, sizeof(bits));
+    putI64(out, bits);
+}
+
+void putLimit(std::string& out, const std::optional<double>& limit) {
+    out.push_back(limit ? 1 : 0);
+    if (limit) {
+        putDouble(out, *limit);
+    }
+}
+
+enum Payload : std::uint8_t { kNoPayload = 0, kMeasurement = 1, kAttachment = 2 };
+
+void putPayload(std::string& out, const WireRecord& record) {
+    if (record.measurement) {
+        const Measurement& measurement = *record.measurement;
+        out.push_back(static_cast<char>(kMeasurement));
+        putString(out, measurement.name);
+        putDouble(out, measurement.value);
+        putString(out, measurement.unit);
+        putLimit(out, measurement.low);
+        putLimit(out, measurement.high);
+    } else if (record.attachment) {
+        const Attachment& attachment = *record.attachment;
+        out.push_back(static_cast<char>(kAttachment));
+        putString(out, attachment.path);
+        putString(out, attachment.absolutePath);
+        putString(out, attachment.description);
+        putString(out, attachment.originalName);
+        putI64(out, static_cast<std::int64_t>(attachment.size));
+    } else {
+        out.push_back(static_cast<char>(kNoPayload));
+    }
 }
 
 // Reads fields from a body, refusing to run past its end.
@@ -70,6 +108,30 @@ public:
         at_ += length;
         return true;
     }
+    bool f64(double& value) {
+        std::int64_t bits;
+        if (!i64(bits)) {
+            return false;
+        }
+        std::memcpy(&value, &bits, sizeof(value));
+        return true;
+    }
+    bool limit(std::optional<double>& value) {
+        std::uint8_t present;
+        if (!u8(present) || present > 1) {
+            return false;
+        }
+        if (present == 0) {
+            value.reset();
+            return true;
+        }
+        double number;
+        if (!f64(number)) {
+            return false;
+        }
+        value = number;
+        return true;
+    }
     bool done() const { return at_ == size_; }
 
 private:
@@ -78,6 +140,38 @@ private:
     std::size_t at_ = 0;
 };
 
+bool decodePayload(Reader& in, WireRecord& record) {
+    std::uint8_t payload;
+    if (!in.u8(payload)) {
+        return false;
+    }
+    record.measurement.reset();
+    record.attachment.reset();
+    if (payload == kMeasurement) {
+        auto measurement = std::make_shared<Measurement>();
+        if (!in.string(measurement->name) || !in.f64(measurement->value) ||
+            !in.string(measurement->unit) || !in.limit(measurement->low) ||
+            !in.limit(measurement->high)) {
+            return false;
+        }
+        record.measurement = std::move(measurement);
+        return true;
+    }
+    if (payload == kAttachment) {
+        auto attachment = std::make_shared<Attachment>();
+        std::int64_t size;
+        if (!in.string(attachment->path) || !in.string(attachment->absolutePath) ||
+            !in.string(attachment->description) || !in.string(attachment->originalName) ||
+            !in.i64(size) || size < 0) {
+            return false;
+        }
+        attachment->size = static_cast<std::uint64_t>(size);
+        record.attachment = std::move(attachment);
+        return true;
+    }
+    return payload == kNoPayload;
+}
+
 bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     Reader in(data, size);
     std::uint8_t kind, event, flag;
@@ -85,7 +179,8 @@ bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     std::uint32_t line;
     if (!in.u8(kind) || !in.u8(event) || !in.u8(flag) || !in.i64(record.number) ||
         !in.string(record.name) || !in.string(message) || !in.string(detail) || !in.string(file) ||
-        !in.u32(line) || !in.u32(record.repetition) || !in.u32(record.repetitions) || !in.done()) {
+        !in.u32(line) || !in.u32(record.repetition) || !in.u32(record.repetitions) ||
+        !decodePayload(in, record) || !in.done()) {
         return false;
     }
     if (kind < 1 || kind > kLastKind || event > kLastEvent || flag > 1) {
@@ -109,6 +204,8 @@ WireRecord eventRecord(const ResultEvent& event, const std::string& name) {
     record.flag = event.passed;
     record.repetition = event.repetition;
     record.repetitions = event.repetitions;
+    record.measurement = event.measurement;
+    record.attachment = event.attachment;
     return record;
 }
 
@@ -120,6 +217,8 @@ ResultEvent eventOf(const WireRecord& record) {
     event.passed = record.flag;
     event.repetition = record.repetition;
     event.repetitions = record.repetitions;
+    event.measurement = record.measurement;
+    event.attachment = record.attachment;
     return event;
 }
 
@@ -137,6 +236,7 @@ void encode(const WireRecord& record, std::string& out) {
     putU32(out, record.message.getSourceLineNumber());
     putU32(out, record.repetition);
     putU32(out, record.repetitions);
+    putPayload(out, record);
     auto length = static_cast<std::uint32_t>(out.size() - start - 4);
     for (int i = 0; i < 4; ++i) {
         out[start + i] = static_cast<char>((length >> (8 * i)) & 0xff);

@@ -3,7 +3,11 @@
 //
 //   record  = u32 body-length, body                       (little-endian)
 //   body    = u8 kind, u8 event, u8 flag, i64 number, str name, str message, str detail,
-//             str file, u32 line, u32 repetition, u32 repetitions
+//             str file, u32 line, u32 repetition, u32 repetitions, payload
+//   payload = u8 0                                          (nothing)
+//           | u8 1, str name, f64 value, str unit, limit low, limit high   (a measurement)
+//           | u8 2, str path, str absolute-path, str description, str original-name, i64 size
+//   limit   = u8 0 | u8 1, f64                             (f64: the IEEE bits as an i64)
 //   str     = u32 length, bytes
 //
 // Requests to the fork server are single packets of their own layout (encodeRequest).
@@ -11,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -42,6 +47,9 @@ struct WireRecord {
     std::int64_t number = 0;
     std::uint32_t repetition = 0;   // an event's ResultEvent::repetition
     std::uint32_t repetitions = 0;  // an event's ResultEvent::repetitions
+    std::shared_ptr<const Measurement> measurement =
+        nullptr;                                             // an event's ResultEvent::measurement
+    std::shared_ptr<const Attachment> attachment = nullptr;  // an event's ResultEvent::attachment
 };
 
 // The Event record that carries `event` (about the test named `name`), field by field: what

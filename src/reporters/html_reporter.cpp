@@ -70,6 +70,41 @@ void fill(std::string& page, const std::string& name, const std::string& value) 
     }
 }
 
+// A test's measurements (a table on the page) and attachments (links; images inline).
+void appendMeasurementsAndAttachments(std::string& out, const std::vector<ResultEvent>& events) {
+    std::string measurements;
+    std::string attachments;
+    for (const ResultEvent& event : events) {
+        if (event.kind == Kind::Measurement && event.measurement) {
+            const Measurement& m = *event.measurement;
+            measurements +=
+                std::string(measurements.empty() ? "" : ",") + "{\"name\":" + jsonString(m.name) +
+                ",\"value\":" + formatNumber(m.value) + ",\"unit\":" + jsonString(m.unit);
+            if (m.low) {
+                measurements += ",\"low\":" + formatNumber(*m.low);
+            }
+            if (m.high) {
+                measurements += ",\"high\":" + formatNumber(*m.high);
+            }
+            measurements += std::string(",\"passed\":") + (event.passed ? "true" : "false") +
+                            ",\"rep\":" + std::to_string(event.repetition) + "}";
+        } else if (event.kind == Kind::Attachment && event.attachment) {
+            const Attachment& a = *event.attachment;
+            attachments += std::string(attachments.empty() ? "" : ",") +
+                           "{\"name\":" + jsonString(a.originalName) +
+                           ",\"path\":" + jsonString(a.path) +
+                           ",\"description\":" + jsonString(a.description) +
+                           ",\"size\":" + std::to_string(a.size) + "}";
+        }
+    }
+    if (!measurements.empty()) {
+        out += ",\"measurements\":[" + measurements + "]";
+    }
+    if (!attachments.empty()) {
+        out += ",\"attachments\":[" + attachments + "]";
+    }
+}
+
 }  // namespace
 
 // One test's data. The page's per-test sections (report.js: testSections) read it; a part of
@@ -127,10 +162,14 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
         if (!settings_.passedChecks && event.kind == Kind::Check && event.passed) {
             continue;
         }
+        if (event.kind == Kind::Measurement || event.kind == Kind::Attachment) {
+            continue;  // in their own table and links
+        }
         out += (firstMessage ? "" : ",") + messageData(event);
         firstMessage = false;
     }
     out += "]";
+    appendMeasurementsAndAttachments(out, test.events);
     if (!test.attempts.empty()) {
         out += ",\"attempts\":[";
         for (std::size_t i = 0; i < test.attempts.size(); ++i) {

@@ -82,6 +82,49 @@ std::string messageList(const std::vector<ResultEvent>& events, long long origin
     return "[" + out + "]";
 }
 
+// CTRF's own attachments of a test: name, contentType and path (relative to the report's
+// folder), the description in the extension.
+std::string attachmentsOf(const std::vector<ResultEvent>& events) {
+    std::string out;
+    for (const ResultEvent& event : events) {
+        if (event.kind != Kind::Attachment || !event.attachment) {
+            continue;
+        }
+        const Attachment& attachment = *event.attachment;
+        out += std::string(out.empty() ? "" : ",") +
+               "{\"name\":" + jsonString(attachment.originalName) +
+               ",\"contentType\":" + jsonString(attachment.contentType()) +
+               ",\"path\":" + jsonString(attachment.path) + ",\"extra\":{" + extension +
+               ":{\"description\":" + jsonString(attachment.description) +
+               ",\"size\":" + std::to_string(attachment.size) + "}}}";
+    }
+    return out;
+}
+
+// extra["robotology.rtf"].measurements: each measurement of a test in order, with its limits,
+// whether it passed them, and its repetition (0: the test runs once).
+std::string measurementsOf(const std::vector<ResultEvent>& events) {
+    std::string out;
+    for (const ResultEvent& event : events) {
+        if (event.kind != Kind::Measurement || !event.measurement) {
+            continue;
+        }
+        const Measurement& measurement = *event.measurement;
+        out += std::string(out.empty() ? "" : ",") + "{\"name\":" + jsonString(measurement.name) +
+               ",\"value\":" + formatNumber(measurement.value) +
+               ",\"unit\":" + jsonString(measurement.unit);
+        if (measurement.low) {
+            out += ",\"low\":" + formatNumber(*measurement.low);
+        }
+        if (measurement.high) {
+            out += ",\"high\":" + formatNumber(*measurement.high);
+        }
+        out += std::string(",\"passed\":") + (event.passed ? "true" : "false") +
+               ",\"repetition\":" + std::to_string(event.repetition) + "}";
+    }
+    return out;
+}
+
 // `testId` is the test's place in the run ("suite.test", from 1): the same in every run of
 // the same suites, and apart for two tests of one name. `executionId` is the id its events
 // carried in this run.
@@ -136,6 +179,10 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
         }
         out += "]";
     }
+    const std::string attachments = attachmentsOf(test.events);
+    if (!attachments.empty()) {
+        out += ",\"attachments\":[" + attachments + "]";
+    }
     out += std::string(",\"flaky\":") + (test.status == TestStatus::Flaky ? "true" : "false");
     out += ",\"extra\":{" + std::string(extension) +
            ":{\"state\":" + jsonString(toString(test.status));
@@ -183,6 +230,10 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
         } else if (test.status == TestStatus::TimedOut) {
             out += ",\"timeout\":" + jsonString(reason->message.toString());
         }
+    }
+    const std::string measurements = measurementsOf(test.events);
+    if (!measurements.empty()) {
+        out += ",\"measurements\":[" + measurements + "]";
     }
     // Every report and check, whatever -v said, each with its time (ms since the epoch).
     out += ",\"reports\":" + messageList(test.events, origin, passedChecks, false);

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <ctime>
 
@@ -124,12 +125,33 @@ std::string problems(const std::vector<ResultEvent>& events) {
     return text;
 }
 
+// A measurement as Jenkins reads one from <system-out> (each on its own line): the words,
+// then "[[PROPERTY|name=value]]". junit-10.xsd allows no <properties> in a <testcase>.
+std::string measurementLines(const Measurement& measurement) {
+    std::string name = measurement.name;  // one line, whatever the test called it
+    std::replace(name.begin(), name.end(), '\n', ' ');
+    std::replace(name.begin(), name.end(), '\r', ' ');
+    return "measurement: " + describeMeasurement(measurement) + "\n[[PROPERTY|" + name + "=" +
+           formatNumber(measurement.value) + "]]\n";
+}
+
+// An attachment as Jenkins' junit-attachments plug-in reads one: "[[ATTACHMENT|path]]" alone
+// on its line, the path absolute.
+std::string attachmentLines(const Attachment& attachment) {
+    return "attachment: " + describeAttachment(attachment) + "\n[[ATTACHMENT|" +
+           attachment.absolutePath + "]]\n";
+}
+
 std::string systemOut(const std::vector<ResultEvent>& events, const std::string& output,
                       bool passedChecks) {
     std::string text;
     for (const ResultEvent& event : events) {
         if (event.kind == Kind::Report || (passedChecks && event.kind == Kind::Check)) {
             text += eventLabel(event.kind, event.passed) + ": " + messageText(event.message) + "\n";
+        } else if (event.kind == Kind::Measurement && event.measurement) {
+            text += measurementLines(*event.measurement);
+        } else if (event.kind == Kind::Attachment && event.attachment) {
+            text += attachmentLines(*event.attachment);
         }
     }
     return text + output;

@@ -20,6 +20,9 @@ std::string eventLabel(ResultEvent::Kind kind, bool passed) {
     if (kind == ResultEvent::Kind::Check) {
         return passed ? "check ok" : "check FAILED";
     }
+    if (kind == ResultEvent::Kind::Measurement && !passed) {
+        return "measurement OUTSIDE LIMITS";
+    }
     return toString(kind);
 }
 

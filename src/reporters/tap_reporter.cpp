@@ -74,8 +74,14 @@ std::string messageLines(const std::vector<std::string>& messages) {
 }
 
 // YAML diagnostics for a failed point; strings as JSON literals, which YAML reads as they are.
+// The measurements and attachments of a test as YAML (empty without any).
+std::string records(const std::string& measurements, const std::string& attachments) {
+    return (measurements.empty() ? std::string() : "  measurements:\n" + measurements) +
+           (attachments.empty() ? std::string() : "  attachments:\n" + attachments);
+}
+
 std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output,
-                        const std::vector<std::string>& messages = {}) {
+                        const std::string& extra = std::string()) {
     std::string text = "  ---\n";
     text += "  message: " + jsonString(reason.getMessage()) + "\n";
     text += std::string("  severity: ") + severity(status) + "\n";
@@ -89,7 +95,7 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     if (!output.empty()) {
         text += "  output: " + jsonString(output) + "\n";
     }
-    text += messageLines(messages);
+    text += extra;
     text += "  ...\n";
     return text;
 }
@@ -113,11 +119,13 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
     Block& block = blocks.back();
     const std::string number = std::to_string(++block.points);
     const std::string name = description(test.name.empty() ? "unnamed test" : test.name);
+    const std::string extra =
+        messageLines(test.messages) + records(test.measurements, test.attachments);
     if (test.status == TestStatus::Passed && test.retries > 0) {
         // Flaky: passed on a later attempt. TAP has no such directive; the YAML says it.
         block.body += "ok " + number + " - " + name +
                       "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) + "\n" +
-                      messageLines(test.messages) + "  ...\n";
+                      extra + "  ...\n";
         return;
     }
     if (!isFailure(test.status)) {
@@ -126,14 +134,14 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
             block.body += " # SKIP " + oneLine(test.reason.toString());
         }
         block.body += "\n";
-        if (!test.messages.empty()) {
-            block.body += "  ---\n" + messageLines(test.messages) + "  ...\n";
+        if (!extra.empty()) {
+            block.body += "  ---\n" + extra + "  ...\n";
         }
         return;
     }
     block.failed = true;
     block.body += "not ok " + number + " - " + name + "\n" +
-                  diagnostics(test.status, test.reason, test.output, test.messages);
+                  diagnostics(test.status, test.reason, test.output, extra);
 }
 
 void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts) {
@@ -210,7 +218,7 @@ void TapReporter::startTest(const Test* test) {
     const std::string name = test == nullptr          ? ""
                              : test->getKey().empty() ? test->getName()
                                                       : test->getKey();
-    OpenTest open{idOf(test), name, TestStatus::Passed, {}, {}, 0, {}};
+    OpenTest open{idOf(test), name, TestStatus::Passed, {}, {}, 0, {}, {}, {}};
     if (test != nullptr && retrying_ != 0 && idOf(test) == retrying_) {
         open.retries = retryCount_;
     }
@@ -307,6 +315,44 @@ void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
     retrying_ = last_.id;
     retryCount_ = last_.retries + 1;
     last_ = LastPoint();
+}
+
+TapReporter::OpenTest* TapReporter::openTest(const Test* test) {
+    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+        if (it->id == idOf(test)) {
+            return &*it;
+        }
+    }
+    return nullptr;
+}
+
+void TapReporter::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {
+    OpenTest* open = openTest(test);
+    if (open == nullptr) {
+        return;
+    }
+    open->measurements += "    - name: " + jsonString(measurement.name) +
+                          "\n      value: " + formatNumber(measurement.value) +
+                          "\n      unit: " + jsonString(measurement.unit) + "\n";
+    if (measurement.low) {
+        open->measurements += "      low: " + formatNumber(*measurement.low) + "\n";
+    }
+    if (measurement.high) {
+        open->measurements += "      high: " + formatNumber(*measurement.high) + "\n";
+    }
+    open->measurements += std::string("      passed: ") + (passed ? "true" : "false") + "\n";
+}
+
+void TapReporter::addAttachment(const Test* test, const Attachment& attachment) {
+    OpenTest* open = openTest(test);
+    if (open == nullptr) {
+        return;
+    }
+    open->attachments += "    - name: " + jsonString(attachment.originalName) +
+                         "\n      path: " + jsonString(attachment.path) +
+                         "\n      description: " + jsonString(attachment.description) +
+                         "\n      contentType: " + jsonString(attachment.contentType()) +
+                         "\n      size: " + std::to_string(attachment.size) + "\n";
 }
 
 void TapReporter::addOutput(const Test* test, const std::string& text) {

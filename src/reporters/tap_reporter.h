@@ -36,6 +36,8 @@ public:
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
+    void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
+    void addAttachment(const Test* test, const Attachment& attachment) override;
 
 private:
     // A suite being written: its test points so far (unindented; indented when it closes).
@@ -55,7 +57,11 @@ private:
         std::string output;
         std::size_t retries = 0;            // earlier failed attempts (--retries)
         std::vector<std::string> messages;  // its reports and checks, "[time] kind: text"
+        // The YAML list items of its measurements and attachments, written with its point.
+        std::string measurements;
+        std::string attachments;
     };
+    OpenTest* openTest(const Test* test);
     // The point last written, so that a retry can take it back: one point per test.
     struct LastPoint {
         std::uint64_t id = 0;  // the test's id; 0 for none

@@ -350,6 +350,30 @@ void RunView::close() {
     changed_.notify_all();
 }
 
+void RunView::addAttachment(std::uint64_t id, AttachmentView attachment) {
+    // The run's attachments folder bounds their bytes; this bounds the page's list.
+    constexpr std::size_t maxAttachments = 10000;
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t suite = none;
+    std::size_t test = none;
+    if (findOpen(id, suite, test)) {
+        attachment.test = suites_[suite].tests[test].name;
+    }
+    log("[attachment] " + attachment.test + ": " + attachment.name);
+    if (attachments_.size() < maxAttachments) {
+        attachments_.push_back(std::move(attachment));
+    }
+}
+
+bool RunView::attachment(std::size_t index, AttachmentView& found) const {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (index >= attachments_.size()) {
+        return false;
+    }
+    found = attachments_[index];
+    return true;
+}
+
 std::string RunView::runJson() const {
     std::size_t planned = 0;
     for (const auto& suite : suites_) {
@@ -363,6 +387,19 @@ std::string RunView::runJson() const {
                 {"duration", runState_ == "finished"  ? runDuration_
                              : runState_ == "running" ? secondsSince(runStarted_)
                                                       : 0.0}};
+    if (runState_ == "finished" && !attachments_.empty()) {
+        // Links at the end: a file is complete once its test has ended, and the list is
+        // sent once instead of with every change.
+        Json list = Json::array();
+        for (std::size_t i = 0; i < attachments_.size(); ++i) {
+            const AttachmentView& attachment = attachments_[i];
+            list.push_back({{"test", attachment.test},
+                            {"name", attachment.name},
+                            {"description", attachment.description},
+                            {"url", "/attachments/" + std::to_string(i)}});
+        }
+        run["attachments"] = std::move(list);
+    }
     return dump(run);
 }
 

@@ -49,6 +49,19 @@ public:
     // The recent runs of the test "SUITE/TEST" (JSON, --history): shown with it once its suite
     // starts.
     void setTestHistory(const std::string& testId, const std::string& json);
+    // The test `id` attached a file (already copied): listed, with a link served from
+    // /attachments/N, once the run has ended.
+    struct AttachmentView {
+        std::string test;  // the name the test is shown by
+        std::string name;  // the file's own name
+        std::string description;
+        std::string absolutePath;  // the copy the link serves
+        std::string contentType;
+    };
+    void addAttachment(std::uint64_t id, AttachmentView attachment);
+    // The attachment numbered `index` (from 0), if there is one.
+    bool attachment(std::size_t index, AttachmentView& found) const;
+
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -126,8 +139,9 @@ private:
     double runDuration_ = 0;
     std::size_t counts_[3] = {};  // passed, failed, skipped
     std::vector<SuiteView> suites_;
-    std::vector<std::size_t> openSuites_;  // innermost last
-    std::size_t openSuite_ = none;         // where tests go: the innermost open suite
+    std::vector<AttachmentView> attachments_;  // at most maxAttachments
+    std::vector<std::size_t> openSuites_;      // innermost last
+    std::size_t openSuite_ = none;             // where tests go: the innermost open suite
     struct OpenTest {
         std::uint64_t id;
         std::size_t suite;

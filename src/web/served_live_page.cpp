@@ -55,6 +55,8 @@ public:
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
+    void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
+    void addAttachment(const Test* test, const Attachment& attachment) override;
 
 private:
     // A message of `kind`: shown under its word, giving the test its state (the tables).
@@ -118,6 +120,21 @@ void ServedLivePage::addInterrupted(const Test* test, TestMessage msg) {
 
 void ServedLivePage::addEvent(const Test* test, const ResultEvent& event) {
     said(event.kind, test, event.message);
+}
+
+void ServedLivePage::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {
+    // Shown as it comes; one outside its limits is followed by the failure that says so.
+    view.addMessage(idOf(test), passed ? "measurement" : "measurement outside limits",
+                    TestMessage(describeMeasurement(measurement)), TestStatus::Passed);
+}
+
+void ServedLivePage::addAttachment(const Test* test, const Attachment& attachment) {
+    RunView::AttachmentView shown;
+    shown.name = attachment.originalName;
+    shown.description = attachment.description;
+    shown.absolutePath = attachment.absolutePath;
+    shown.contentType = attachment.contentType();
+    view.addAttachment(idOf(test), std::move(shown));
 }
 
 void ServedLivePage::addOutput(const Test* test, const std::string& text) {

@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <chrono>
 #include <cstring>
+#include <fstream>
+#include <sstream>
 
 #include <httplib.h>
 
@@ -121,6 +123,25 @@ bool WebServer::start(const std::string& host, unsigned int port, std::string& e
     asset("/page.css", pageCss(), "text/css; charset=utf-8");
     server.Get("/snapshot", [this](const httplib::Request&, httplib::Response& res) {
         res.set_content(view_.snapshotJson(), "application/json");
+    });
+    // Only the files the run attached, by their number: no path from the request is opened.
+    server.Get(R"(/attachments/(\d{1,9}))", [this](const httplib::Request& req,
+                                                   httplib::Response& res) {
+        RunView::AttachmentView attachment;
+        std::ifstream file;
+        if (view_.attachment(std::stoul(req.matches[1].str()), attachment)) {
+            file.open(attachment.absolutePath, std::ios::binary);
+        }
+        if (!file.is_open()) {
+            res.status = 404;
+            res.set_content("no such attachment\n", "text/plain");
+            return;
+        }
+        std::ostringstream bytes;
+        bytes << file.rdbuf();
+        res.set_header("Content-Disposition",
+                       attachment.contentType.rfind("image/", 0) == 0 ? "inline" : "attachment");
+        res.set_content(bytes.str(), attachment.contentType.c_str());
     });
     server.Get("/status", [this](const httplib::Request&, httplib::Response& res) {
         res.set_content(view_.statusJson(), "application/json");

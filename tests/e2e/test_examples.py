@@ -125,6 +125,13 @@ def test_the_robot_example_takes_its_ports_from_variables(tmp_path, mark, isolat
     assert f"TCP port 127.0.0.1:{robot}" in run.output, run
     assert f"TCP port 127.0.0.1:{broker}" in run.output, run
     assert "not used" not in run.stderr, run
+    # Its real measurements, with limits, and the plot it attaches (issue 22).
+    xml = junit.read_text()
+    assert "[[PROPERTY|joint tracking error=" in xml, xml
+    assert "[[PROPERTY|joint state rate=" in xml and "[[PROPERTY|message rate=" in xml, xml
+    plots = list((tmp_path / "rtf-attachments").glob("*-elbow-tracking.svg"))
+    assert len(plots) == 1 and "<polyline" in plots[0].read_text(), plots
+    assert f"[[ATTACHMENT|{plots[0]}]]" in xml, xml
 
 
 def test_the_quick_start_example_run(tmp_path, mark):

@@ -58,6 +58,12 @@ public:
     void startRepetition(const Test*, unsigned int index, unsigned int count) override {
         said("startRepetition " + std::to_string(index) + "/" + std::to_string(count));
     }
+    void addMeasurement(const Test*, const Measurement& m, bool passed) override {
+        said("addMeasurement " + m.name + (passed ? " ok" : " outside"));
+    }
+    void addAttachment(const Test*, const Attachment& a) override {
+        said("addAttachment " + a.path);
+    }
     void addEvent(const Test*, const ResultEvent& event) override {
         said(std::string("addEvent ") + toString(event.kind));
     }
@@ -138,6 +144,18 @@ TEST(EventKinds, TheNamedSendersReachTheNamedHandlersAsInRtf2) {
                   "addReport r", "addCheck failed c", "addFailure f", "addError e", "addSkipped s",
                   "addCrash c", "addTimeout t", "addInterrupted i", "addOutput o", "renameTest n",
                   "endTest", "retryTest again", "endTestSuite", "endTestRunner"}));
+}
+
+TEST(EventKinds, AMeasurementAndAnAttachmentReachTheirHandlersWithWhatTheyCarry) {
+    TestResult result;
+    Named2x listener;
+    result.addListener(&listener);
+    Named test("t");
+    result.addMeasurement(&test, Measurement{"rate", 9, "Hz", 10.0, {}}, false);
+    result.addAttachment(&test,
+                         Attachment{"rtf-attachments/1-a.log", "/x/1-a.log", "", "a.log", 3});
+    EXPECT_EQ(listener.lines, (std::vector<std::string>{"addMeasurement rate outside",
+                                                        "addAttachment rtf-attachments/1-a.log"}));
 }
 
 TEST(EventKinds, ARepetitionIsAReportForAListenerThatDoesNotKnowIt) {

@@ -219,3 +219,53 @@ TEST(EventRelay, ANameDescribedAfterTheStartIsARenameEvent) {
     relay.end("");
     EXPECT_EQ(collector.suites().at(0).tests.at(0).name, "the plug-in's own name");
 }
+
+TEST(WireFormat, AMeasurementTravelsWithItsLimitsExactly) {
+    robottestingframework::ResultEvent event;
+    event.kind = ResultEvent::Kind::Measurement;
+    event.passed = false;
+    event.measurement = std::make_shared<const robottestingframework::Measurement>(
+        robottestingframework::Measurement{"loop rate", 0.1 + 0.2, "Hz", 95.5, std::nullopt});
+    WireDecoder decoder;
+    decoder.feed(encode(eventRecord(event, "arm")));
+    WireRecord record;
+    ASSERT_EQ(decoder.next(record), WireDecoder::Status::Record);
+    const ResultEvent back = eventOf(record);
+    ASSERT_TRUE(back.measurement);
+    EXPECT_EQ(back.measurement->name, "loop rate");
+    EXPECT_EQ(back.measurement->value, 0.1 + 0.2);  // bit for bit
+    EXPECT_EQ(back.measurement->unit, "Hz");
+    EXPECT_EQ(back.measurement->low, 95.5);
+    EXPECT_FALSE(back.measurement->high);
+    EXPECT_FALSE(back.passed);
+    EXPECT_FALSE(back.attachment);
+}
+
+TEST(WireFormat, AnAttachmentTravelsWhole) {
+    robottestingframework::ResultEvent event;
+    event.kind = ResultEvent::Kind::Attachment;
+    event.attachment =
+        std::make_shared<const robottestingframework::Attachment>(robottestingframework::Attachment{
+            "rtf-attachments/1-plot.svg", "/r/rtf-attachments/1-plot.svg", "tracking", "plot.svg",
+            1234567890123ULL});
+    WireDecoder decoder;
+    decoder.feed(encode(eventRecord(event, "arm")));
+    WireRecord record;
+    ASSERT_EQ(decoder.next(record), WireDecoder::Status::Record);
+    const ResultEvent back = eventOf(record);
+    ASSERT_TRUE(back.attachment);
+    EXPECT_EQ(back.attachment->path, "rtf-attachments/1-plot.svg");
+    EXPECT_EQ(back.attachment->absolutePath, "/r/rtf-attachments/1-plot.svg");
+    EXPECT_EQ(back.attachment->description, "tracking");
+    EXPECT_EQ(back.attachment->originalName, "plot.svg");
+    EXPECT_EQ(back.attachment->size, 1234567890123ULL);
+}
+
+TEST(WireFormat, AnUnknownPayloadIsCorrupt) {
+    std::string bytes = encode(sample());
+    bytes.back() = 7;  // the payload tag: neither none, a measurement nor an attachment
+    WireDecoder decoder;
+    decoder.feed(bytes);
+    WireRecord record;
+    EXPECT_EQ(decoder.next(record), WireDecoder::Status::Corrupt);
+}

@@ -10,6 +10,7 @@
 
 #include "languages/exec/exec_process.h"
 #include "languages/exec/tap_parser.h"
+#include "languages/exec/tap_records.h"
 #include "languages/language_loaders.h"
 #include "languages/output_tail.h"
 #include "platform/signal_name.h"
@@ -58,6 +59,7 @@ public:
         : test_(test), path_(path), output_(output) {}
 
     void point(const TapPoint& point) override {
+        record(point);
         bool failed = point.failed();
         if (failed ? failedShown_ >= kMaxShown : shown_ >= kMaxShown) {
             ++(failed ? failedHidden_ : hidden_);
@@ -115,6 +117,28 @@ public:
     }
 
 private:
+    // The point's measurements and attachments (YAML `measurements:`, `attachments:`), each
+    // recorded as the other languages record theirs.
+    void record(const TapPoint& point) {
+        if (point.diagnostics.find("measurements:") == std::string::npos &&
+            point.diagnostics.find("attachments:") == std::string::npos) {
+            return;
+        }
+        const TestMessage where("", "", path_, point.line);
+        const TapRecords records = readTapRecords(point.diagnostics);
+        for (const std::string& problem : records.problems) {
+            // The error gives the test its state; no failed(), which would add a failure.
+            test_->getResult()->addError(test_,
+                                         TestMessage("TAP: " + problem, "", path_, point.line));
+        }
+        for (const Measurement& measurement : records.measurements) {
+            Asserter::testMeasure(measurement, where, test_);
+        }
+        for (const TapAttachment& attachment : records.attachments) {
+            Asserter::testAttach(attachment.path, attachment.description, where, test_);
+        }
+    }
+
     // Points (passed and failed counted apart), comments and problems listed in the report.
     static constexpr std::size_t kMaxShown = 10000;
 

@@ -48,6 +48,10 @@ TestMessage messageHere(lua_State* L, int argument) {
     return message;
 }
 
+void measure(lua_State* L, const char* name, double value, const char* unit, bool hasLow,
+             double low, bool hasHigh, double high);
+void attach(lua_State* L, const char* path, const char* description);
+
 class LuaTestCase : public TestCase {
 public:
     explicit LuaTestCase(const std::string& path) : TestCase(path), path_(path) {
@@ -162,6 +166,27 @@ private:
             {"testFail",
              [](lua_State* L) {
                  Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
+                 return 0;
+             }},
+            // testMeasure(name, value [, unit [, low [, high]]]): arguments are checked before
+            // any C++ object exists (a Lua error unwinds by longjmp).
+            {"testMeasure",
+             [](lua_State* L) {
+                 const char* name = luaL_checkstring(L, 1);
+                 const double value = luaL_checknumber(L, 2);
+                 const char* unit = luaL_optstring(L, 3, "");
+                 const bool hasLow = !lua_isnoneornil(L, 4);
+                 const double low = hasLow ? luaL_checknumber(L, 4) : 0;
+                 const bool hasHigh = !lua_isnoneornil(L, 5);
+                 const double high = hasHigh ? luaL_checknumber(L, 5) : 0;
+                 measure(L, name, value, unit, hasLow, low, hasHigh, high);
+                 return 0;
+             }},
+            {"testAttach",
+             [](lua_State* L) {
+                 const char* path = luaL_checkstring(L, 1);
+                 const char* description = luaL_optstring(L, 2, "");
+                 attach(L, path, description);
                  return 0;
              }},
             {"assertFail", [](lua_State* L) { return raise(L, Stop::Failure); }},
@@ -284,6 +309,29 @@ public:
 private:
     std::unique_ptr<LuaTestCase> test_;
 };
+
+void measure(lua_State* L, const char* name, double value, const char* unit, bool hasLow,
+             double low, bool hasHigh, double high) {
+    Measurement measurement;
+    measurement.name = name;
+    measurement.value = value;
+    measurement.unit = unit;
+    if (hasLow) {
+        measurement.low = low;
+    }
+    if (hasHigh) {
+        measurement.high = high;
+    }
+    TestMessage where;
+    luaLocation(L, 1, where);
+    Asserter::testMeasure(measurement, where, owner(L));
+}
+
+void attach(lua_State* L, const char* path, const char* description) {
+    TestMessage where;
+    luaLocation(L, 1, where);
+    Asserter::testAttach(path, description, where, owner(L));
+}
 
 }  // namespace
 

@@ -43,6 +43,15 @@ TestMessage messageHere(const std::string& text, const std::string& detail = "")
     return message;
 }
 
+// A Python number (int, float, numpy scalar) as a double; a TypeError for anything else.
+double number(const py::object& value) {
+    const double result = PyFloat_AsDouble(value.ptr());
+    if (result == -1.0 && PyErr_Occurred() != nullptr) {
+        throw py::error_already_set();
+    }
+    return result;
+}
+
 TestCase* currentTest() {
     return g_caller.test != nullptr ? g_caller.test : TestCase::current();
 }
@@ -243,6 +252,44 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
         }
         Asserter::testFail(passed, messageHere(py::str(text)), currentTest());
     });
+    // A number with its unit and optional limits (README: Measurements); outside them the test
+    // fails and goes on.
+    m.def(
+        "testMeasure",
+        [](const py::object& name, const py::object& value, const py::object& unit,
+           const py::object& low, const py::object& high) {
+            Measurement measurement;
+            measurement.name = py::str(name);
+            measurement.value = number(value);
+            measurement.unit = unit.is_none() ? std::string() : std::string(py::str(unit));
+            if (!low.is_none()) {
+                measurement.low = number(low);
+            }
+            if (!high.is_none()) {
+                measurement.high = number(high);
+            }
+            if (g_caller.fixture != nullptr) {
+                report(messageHere(describeMeasurement(measurement), "measurement"));
+                return;
+            }
+            Asserter::testMeasure(measurement, messageHere(""), currentTest());
+        },
+        py::arg("name"), py::arg("value"), py::arg("unit") = py::none(),
+        py::arg("low") = py::none(), py::arg("high") = py::none());
+    // Copies a file into the run's attachments folder (README: Attachments).
+    m.def(
+        "testAttach",
+        [](const py::object& path, const py::object& description) {
+            const std::string file = py::str(path);
+            const std::string text =
+                description.is_none() ? std::string() : std::string(py::str(description));
+            if (g_caller.fixture != nullptr) {
+                report(messageHere("attachment " + file + " (a fixture attaches nothing)"));
+                return;
+            }
+            Asserter::testAttach(file, text, messageHere(""), currentTest());
+        },
+        py::arg("path"), py::arg("description") = py::none());
     m.def("assertFail", [](const py::object& text) { raise(g_failure, text); });
     m.def("assertError", [](const py::object& text) { raise(g_error, text); });
     m.def("assertCritical", [](const py::object& text) { raise(g_critical, text); });

@@ -269,6 +269,41 @@ VALUE testFailIf(VALUE, VALUE condition, VALUE text) {
     return Qnil;
 }
 
+// testMeasure(name, value, unit = nil, low = nil, high = nil). Ruby raises by longjmp: every
+// argument is converted before a C++ object with a destructor exists.
+VALUE testMeasure(int argc, VALUE* argv, VALUE) {
+    VALUE name, value, unit, low, high;
+    rb_scan_args(argc, argv, "23", &name, &value, &unit, &low, &high);
+    VALUE nameText = rb_obj_as_string(name);
+    const double number = NUM2DBL(value);
+    VALUE unitText = NIL_P(unit) ? rb_str_new_cstr("") : rb_obj_as_string(unit);
+    const double lowNumber = NIL_P(low) ? 0 : NUM2DBL(low);
+    const double highNumber = NIL_P(high) ? 0 : NUM2DBL(high);
+    Measurement measurement;
+    measurement.name = toString(nameText);
+    measurement.value = number;
+    measurement.unit = toString(unitText);
+    if (!NIL_P(low)) {
+        measurement.low = lowNumber;
+    }
+    if (!NIL_P(high)) {
+        measurement.high = highNumber;
+    }
+    Asserter::testMeasure(measurement, messageHere(""), activeTest());
+    return Qnil;
+}
+
+VALUE testAttach(int argc, VALUE* argv, VALUE) {
+    VALUE path, description;
+    rb_scan_args(argc, argv, "11", &path, &description);
+    VALUE pathText = rb_obj_as_string(path);
+    VALUE descriptionText =
+        NIL_P(description) ? rb_str_new_cstr("") : rb_obj_as_string(description);
+    Asserter::testAttach(toString(pathText), toString(descriptionText), messageHere(""),
+                         activeTest());
+    return Qnil;
+}
+
 VALUE assertFail(VALUE, VALUE text) {
     return raise(g_failure, text, Stop::Failure);
 }
@@ -314,6 +349,8 @@ void defineRubyModule() {
     rb_define_module_function(module, "testReport", reinterpret_cast<Function>(testReport), 1);
     rb_define_module_function(module, "testCheck", reinterpret_cast<Function>(testCheck), 2);
     rb_define_module_function(module, "testFailIf", reinterpret_cast<Function>(testFailIf), 2);
+    rb_define_module_function(module, "testMeasure", reinterpret_cast<Function>(testMeasure), -1);
+    rb_define_module_function(module, "testAttach", reinterpret_cast<Function>(testAttach), -1);
     rb_define_module_function(module, "assertFail", reinterpret_cast<Function>(assertFail), 1);
     rb_define_module_function(module, "assertError", reinterpret_cast<Function>(assertError), 1);
     rb_define_module_function(module, "assertCritical", reinterpret_cast<Function>(assertCritical),

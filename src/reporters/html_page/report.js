@@ -111,6 +111,40 @@
       for (const m of t.messages) box.appendChild(messageLine(m));
       return box;
     } },
+    { name: "measurements", render: (t) => {
+      if (!t.measurements || !t.measurements.length) return null;
+      const table = el("table", "measures");
+      const head = el("tr");
+      for (const h of ["measurement", "value", "unit", "limits", ""]) head.appendChild(el("th", "", h));
+      table.appendChild(head);
+      for (const m of t.measurements) {
+        const row = el("tr", m.passed ? "" : "failing");
+        const limits = m.low !== undefined && m.high !== undefined ? "[" + m.low + ", " + m.high + "]"
+            : m.low !== undefined ? ">= " + m.low : m.high !== undefined ? "<= " + m.high : "";
+        for (const v of [m.name + (m.rep ? " #" + m.rep : ""), String(m.value), m.unit, limits,
+                         m.passed ? "ok" : "outside"]) row.appendChild(el("td", "", v));
+        table.appendChild(row);
+      }
+      return table;
+    } },
+    { name: "attachments", render: (t) => {
+      if (!t.attachments || !t.attachments.length) return null;
+      const box = el("div");
+      for (const a of t.attachments) {
+        const one = el("div", "attached");
+        const link = el("a", "", a.name + (a.description ? " \u2014 " + a.description : ""));
+        link.href = a.path;
+        one.appendChild(link);
+        if (/\.(png|jpe?g|svg)$/i.test(a.path)) {
+          const img = el("img");
+          img.src = a.path;
+          img.alt = a.description || a.name;
+          one.appendChild(img);
+        }
+        box.appendChild(one);
+      }
+      return box;
+    } },
     { name: "attempts", render: (t) => {
       if (!t.attempts || !t.attempts.length) return null;
       const box = el("div");

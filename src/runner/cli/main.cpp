@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "platform/process_tree.h"
+#include "runner/cli/attachments_folder.h"
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/history_import_command.h"
@@ -92,8 +93,12 @@ int main(int argc, char** argv) {
         planned.reportSettings.history = history->strips();
     }
 
-    // On the main thread, which lives for the whole run (executor_choice.h).
     std::string error;
+    if (!prepareAttachmentsFolder(options, error)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+        return configurationError;
+    }
+    // On the main thread, which lives for the whole run (executor_choice.h).
     const std::unique_ptr<TestExecutor> executor = chooseExecutor(options, error);
     if (!executor) {
         std::fprintf(stderr, "%s: cannot start process isolation: %s\n", programName,

@@ -119,6 +119,28 @@ function suiteSection(suite) {
   return section;
 }
 
+// The run's attachments, linked once it has ended (README: Attachments).
+function drawAttachments() {
+  const old = document.getElementById("attachments");
+  if (old) old.remove();
+  if (!run.attachments || run.attachments.length === 0) return;
+  const box = element("section", "attachments");
+  box.id = "attachments";
+  box.appendChild(element("h2", "", "Attachments"));
+  const list = element("ul");
+  for (const attachment of run.attachments) {
+    const item = element("li");
+    const link = element("a", "", attachment.name);
+    link.href = attachment.url;
+    item.appendChild(link);
+    item.appendChild(element("span", "where", " " + attachment.test +
+        (attachment.description ? " \u2014 " + attachment.description : "")));
+    list.appendChild(item);
+  }
+  box.appendChild(list);
+  document.querySelector("header").appendChild(box);
+}
+
 function drawSummary() {
   const summary = document.getElementById("summary");
   const counts = run.passed + " passed, " + run.failed + " failed, " + run.skipped +
@@ -133,6 +155,7 @@ function drawSummary() {
     summary.textContent = "Waiting for the run…";
     summary.className = "summary waiting";
   }
+  drawAttachments();
   const total = Math.max(run.tests, 1);
   document.getElementById("bar-passed").style.width = (100 * run.passed / total) + "%";
   document.getElementById("bar-failed").style.width = (100 * run.failed / total) + "%";

@@ -1,0 +1,55 @@
+// The measurements and attachments an exec test gives in its TAP YAML diagnostics.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "languages/exec/tap_records.h"
+
+using robottestingframework::languages::readTapRecords;
+
+TEST(TapRecords, ReadsMeasurementsWithAndWithoutLimits) {
+    const auto records = readTapRecords(
+        "  message: \"fine\"\n"
+        "  measurements:\n"
+        "    - name: tracking error\n"
+        "      value: 0.012\n"
+        "      unit: rad\n"
+        "      low: 0\n"
+        "      high: 0.05\n"
+        "    - name: \"loop rate # hz\"\n"
+        "      value: 99.5 # a comment\n"
+        "  other: 1\n");
+    ASSERT_EQ(records.measurements.size(), 2u);
+    EXPECT_EQ(records.measurements[0].name, "tracking error");
+    EXPECT_EQ(records.measurements[0].value, 0.012);
+    EXPECT_EQ(records.measurements[0].unit, "rad");
+    EXPECT_EQ(records.measurements[0].low, 0.0);
+    EXPECT_EQ(records.measurements[0].high, 0.05);
+    EXPECT_EQ(records.measurements[1].name, "loop rate # hz");
+    EXPECT_EQ(records.measurements[1].value, 99.5);
+    EXPECT_FALSE(records.measurements[1].low);
+    EXPECT_TRUE(records.problems.empty());
+}
+
+TEST(TapRecords, ReadsAttachmentsAtTheBlocksOwnIndent) {
+    const auto records = readTapRecords(
+        "attachments:\n"
+        "- path: 'it''s.log'\n"
+        "  description: the log\n");
+    ASSERT_EQ(records.attachments.size(), 1u);
+    EXPECT_EQ(records.attachments[0].path, "it's.log");
+    EXPECT_EQ(records.attachments[0].description, "the log");
+}
+
+TEST(TapRecords, ANonNumberIsAProblemNamingTheItem) {
+    const auto records = readTapRecords("measurements:\n  - name: x\n    value: fast\n");
+    EXPECT_TRUE(records.measurements.empty());
+    ASSERT_EQ(records.problems.size(), 1u);
+    EXPECT_EQ(records.problems[0], "measurements item 1: value 'fast' is not a number");
+}
+
+TEST(TapRecords, YamlInfinityIsKeptToBeRefusedByName) {
+    const auto records = readTapRecords("measurements:\n  - name: x\n    value: .inf\n");
+    ASSERT_EQ(records.measurements.size(), 1u);
+    EXPECT_TRUE(std::isinf(records.measurements[0].value));
+}
