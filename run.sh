@@ -142,14 +142,16 @@ sanitizer_job() {
 # no prctl, memfd_create, eventfd, pipe2, close_range, SOCK_SEQPACKET, pidfd). Runs the unit
 # tests and the end-to-end tests of isolation, interrupts, fixtures and hostile input, so the
 # macOS code paths run on every `./run.sh test`. Only the platform files differ from the main
-# build, so with ccache the build is mostly cache hits.
+# build, so with ccache (CCACHE_NOHASHDIR, below) the build is mostly cache hits.
 portable_job() {
     local launcher=()
     if command -v ccache >/dev/null; then
         launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
     fi
     configure build-portable -DRTF_PORTABLE_POSIX=ON -DRTF_BUILD_BENCH=OFF "${launcher[@]}"
-    if ! build build-portable; then
+    # ccache keys an object built with -g by its build folder too: without this, nothing the
+    # main build made would be reused here.
+    if ! CCACHE_NOHASHDIR=1 build build-portable; then
         echo "run.sh: building build-portable failed" >&2
         failed_total=$((failed_total + 1))
         return 1
