@@ -1,7 +1,5 @@
 #include <robottestingframework/TestCase.h>
 
-#include <cxxabi.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <exception>
@@ -14,6 +12,8 @@
 #include <robottestingframework/Arguments.h>
 #include <robottestingframework/Exception.h>
 #include <robottestingframework/TestResult.h>
+
+#include "type_name.h"
 
 namespace robottestingframework {
 
@@ -38,13 +38,6 @@ void stopRunning(TestCase* test) {
     if (found != runningTests.rend()) {
         runningTests.erase(std::next(found).base());
     }
-}
-
-std::string typeName(const std::type_info& type) {
-    int status = 0;
-    std::unique_ptr<char, void (*)(void*)> name(
-        abi::__cxa_demangle(type.name(), nullptr, nullptr, &status), std::free);
-    return (status == 0 && name) ? std::string(name.get()) : std::string(type.name());
 }
 
 }  // namespace

@@ -1,12 +1,12 @@
 #include "dll/shared_library.h"
 
 #include <dlfcn.h>
-#include <glob.h>
 
 #include <cstdlib>
-#include <fstream>
 #include <set>
 #include <sstream>
+
+#include "dll/library_naming.h"
 
 namespace robottestingframework {
 namespace plugin {
@@ -24,33 +24,6 @@ void splitInto(const std::string& text, char separator, std::vector<std::string>
     while (std::getline(stream, item, separator)) {
         if (!item.empty()) {
             out.push_back(item);
-        }
-    }
-}
-
-// Folders listed in ld.so.conf (the loader's cache is built from them), following `include`.
-void readLoaderConfig(const std::string& file, std::vector<std::string>& out, int depth) {
-    std::ifstream in(file);
-    std::string line;
-    while (depth < 8 && std::getline(in, line)) {
-        line = line.substr(0, line.find('#'));
-        std::stringstream words(line);
-        std::string word;
-        if (!(words >> word)) {
-            continue;
-        }
-        if (word == "include") {
-            while (words >> word) {
-                glob_t found{};
-                if (::glob(word.c_str(), 0, nullptr, &found) == 0) {
-                    for (std::size_t i = 0; i < found.gl_pathc; ++i) {
-                        readLoaderConfig(found.gl_pathv[i], out, depth + 1);
-                    }
-                }
-                ::globfree(&found);
-            }
-        } else if (word[0] == '/') {
-            out.push_back(word);
         }
     }
 }
@@ -104,29 +77,18 @@ void* SharedLibrary::symbol(const char* name) {
     return address;
 }
 
-const char* SharedLibrary::prefix() {
-    return "lib";
-}
-const char* SharedLibrary::suffix() {
-    return ".so";
-}
-
 std::vector<std::string> SharedLibrary::searchPath() {
     std::vector<std::string> folders;
-    if (const char* env = std::getenv("LD_LIBRARY_PATH")) {
+    if (const char* env = std::getenv(libraryPathVariable())) {
         splitInto(env, ':', folders);
     }
     std::string own = ownFolder();
     if (!own.empty()) {
         folders.push_back(own);
     }
-    readLoaderConfig("/etc/ld.so.conf", folders, 0);
-#ifdef RTF_LIBRARY_ARCHITECTURE
-    folders.push_back("/lib/" RTF_LIBRARY_ARCHITECTURE);
-    folders.push_back("/usr/lib/" RTF_LIBRARY_ARCHITECTURE);
-#endif
-    folders.push_back("/lib");
-    folders.push_back("/usr/lib");
+    for (const std::string& folder : systemLibraryFolders()) {
+        folders.push_back(folder);
+    }
 
     // Each folder once, first place kept.
     std::vector<std::string> unique;

@@ -76,7 +76,8 @@ void prepareChild(pid_t server) {
     ::dup2(null, 0);
     ::dup2(out, 1);
     ::dup2(out, 2);
-    ::dup3(high, 3, O_CLOEXEC);  // a program the test runs must not write on our channel
+    ::dup2(high, 3);
+    platform::setCloseOnExec(3);  // a program the test runs must not write on our channel
     if (g_runtimeDescriptors.empty()) {
         platform::closeDescriptorsFrom(4);
     } else {
@@ -304,6 +305,9 @@ int serve(int control, const std::string& language, bool verbose) {
     // Also covered by the control socket's end of file; this catches a runner whose socket
     // leaked into another process.
     platform::setParentDeathSignal(SIGTERM);
+
+    // The workers, spares and language servers forked from here die with us.
+    platform::prepareChildrenParentDeath();
 
     pid_t self = ::getpid();
     std::map<pid_t, FileDescriptor> statusOf;  // live workers -> where their status goes

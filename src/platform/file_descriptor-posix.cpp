@@ -5,11 +5,6 @@
 #include <poll.h>
 #include <sys/socket.h>
 #include <unistd.h>
-#if defined(__linux__)
-#include <sys/syscall.h>
-#endif
-
-#include <climits>
 
 namespace robottestingframework {
 namespace platform {
@@ -32,39 +27,6 @@ void FileDescriptor::reset(int fd) {
         ::close(fd_);
     }
     fd_ = fd;
-}
-
-bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd) {
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC) != 0) {
-        return false;
-    }
-    readEnd.reset(fds[0]);
-    writeEnd.reset(fds[1]);
-    return true;
-}
-
-bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets) {
-    int fds[2];
-    int type = (packets ? SOCK_SEQPACKET : SOCK_STREAM) | SOCK_CLOEXEC;
-    if (::socketpair(AF_UNIX, type, 0, fds) != 0) {
-        return false;
-    }
-    first.reset(fds[0]);
-    second.reset(fds[1]);
-    return true;
-}
-
-void closeDescriptorsFrom(int first) {
-#if defined(__linux__) && defined(SYS_close_range)
-    if (::syscall(SYS_close_range, first, UINT_MAX, 0) == 0) {
-        return;
-    }
-#endif
-    long max = ::sysconf(_SC_OPEN_MAX);
-    for (long fd = first; fd < (max > 0 ? max : 1024); ++fd) {
-        ::close(static_cast<int>(fd));
-    }
 }
 
 void setNonBlocking(int fd, bool on) {
@@ -113,7 +75,7 @@ bool writeAll(int fd, const void* data, std::size_t size) {
 
 bool sendAll(int socket, const std::string& data) {
     return putAll(socket, data.data(), data.size(), [](int to, const char* p, std::size_t n) {
-        return ::send(to, p, n, MSG_NOSIGNAL);
+        return ::send(to, p, n, kNoSigpipeSendFlags);
     });
 }
 

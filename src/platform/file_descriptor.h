@@ -30,11 +30,17 @@ private:
 
 // Both ends close-on-exec. False (errno set) on failure.
 bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd);
-// A connected pair of local sockets; `packets` keeps message boundaries (SOCK_SEQPACKET).
+// A connected pair of local sockets; `packets`: for sendWithFds/receiveWithFds, which keep
+// message boundaries (SOCK_SEQPACKET on Linux; a stream they frame in the portable build).
 bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets);
 
-// Closes every descriptor numbered `first` or above (in a child before it runs other code).
+// Closes every descriptor numbered `first` or above (in a child before it runs other code:
+// async-signal-safe).
 void closeDescriptorsFrom(int first);
+
+// The flags for send() and sendmsg() that keep SIGPIPE away when the peer is gone
+// (MSG_NOSIGNAL); 0 where the system has none, and the caller ignores SIGPIPE.
+extern const int kNoSigpipeSendFlags;
 
 void setNonBlocking(int fd, bool on = true);
 void setCloseOnExec(int fd, bool on = true);

@@ -6,12 +6,8 @@
 #include <poll.h>
 #include <signal.h>
 #include <string.h>
-#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
-#if defined(__linux__)
-#include <sys/prctl.h>
-#endif
 
 #include <algorithm>
 #include <climits>
@@ -23,6 +19,7 @@
 
 #include "platform/clock.h"
 #include "platform/file_descriptor.h"
+#include "platform/process_lifetime.h"
 #include "platform/signal_name.h"
 
 extern char** environ;
@@ -120,6 +117,9 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNu
         error = std::string("pipe: ") + ::strerror(errno);
         return -1;
     }
+    if (options.parentDeathSignal != 0) {
+        prepareChildrenParentDeath();
+    }
     pid_t parent = ::getpid();
     pid_t pid = ::fork();
     if (pid < 0) {
@@ -131,16 +131,6 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNu
         if (options.newProcessGroup) {
             ::setpgid(0, 0);
         }
-#if defined(__linux__)
-        if (options.parentDeathSignal != 0) {
-            ::prctl(PR_SET_PDEATHSIG, options.parentDeathSignal);
-            if (::getppid() != parent) {
-                ::_exit(127);  // the parent died before the signal was armed
-            }
-        }
-#else
-        (void)parent;
-#endif
         // Signals this process ignores or handles start at their defaults in the program.
         for (int number = 1; number < NSIG; ++number) {
             if (number != SIGKILL && number != SIGSTOP) {
@@ -150,6 +140,10 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNu
         sigset_t none;
         sigemptyset(&none);
         ::sigprocmask(SIG_SETMASK, &none, nullptr);
+        if (options.parentDeathSignal != 0 &&
+            !armParentDeathSignalInChild(options.parentDeathSignal, parent)) {
+            ::_exit(127);  // the parent died before the signal was armed
+        }
         // Move the report pipe and the sources above every target, then place them.
         int base = highest + 1 + static_cast<int>(options.fds.size()) + 1;
         report = ::fcntl(report, F_DUPFD_CLOEXEC, base);
@@ -197,7 +191,7 @@ pid_t spawnProcess(const SpawnOptions& options, std::string& error, int* errorNu
         if (envp.empty()) {
             ::execvp(program, argv.data());
         } else {
-            ::execvpe(program, argv.data(), envp.data());
+            execSearchingPath(program, argv.data(), envp.data());
         }
         failChild(report, "exec");
     }
@@ -253,27 +247,12 @@ std::string ExitStatus::toString() const {
     return "exited with status " + std::to_string(code);
 }
 
-namespace {
-
-// A descriptor that becomes readable when `pid` ends (Linux 5.3's pidfd_open); -1 where the
-// kernel has none. Close-on-exec, as pidfd_open makes it.
-int openPidFd(pid_t pid) {
-#if defined(__linux__) && defined(SYS_pidfd_open)
-    return static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));
-#else
-    (void)pid;
-    return -1;
-#endif
-}
-
-}  // namespace
-
 bool waitChild(pid_t pid, double timeoutSeconds, int& status) {
     Deadline deadline(timeoutSeconds);
     int pause = 1;
     // With a pidfd the wait ends as the child does; without, polling with growing pauses
     // notices it up to a pause late (up to 20 ms: most of a short run's shutdown).
-    const FileDescriptor ended(timeoutSeconds > 0 ? openPidFd(pid) : -1);
+    const FileDescriptor ended(timeoutSeconds > 0 ? openExitNotifier(pid) : -1);
     for (;;) {
         pid_t done = ::waitpid(pid, &status, timeoutSeconds < 0 ? 0 : WNOHANG);
         if (done == pid) {
@@ -296,23 +275,6 @@ bool waitChild(pid_t pid, double timeoutSeconds, int& status) {
             }
         }
     }
-}
-
-bool becomeSubreaper() {
-#if defined(__linux__)
-    return ::prctl(PR_SET_CHILD_SUBREAPER, 1) == 0;
-#else
-    return false;
-#endif
-}
-
-bool setParentDeathSignal(int signal) {
-#if defined(__linux__)
-    return ::prctl(PR_SET_PDEATHSIG, signal) == 0;
-#else
-    (void)signal;
-    return false;
-#endif
 }
 
 std::size_t threadCount() {

@@ -18,7 +18,7 @@ struct SpawnOptions {
     std::string workingDirectory;          // the child's; ours when empty
     std::vector<std::pair<int, int>> fds;  // {descriptor in the child, ours}; others closed
     bool newProcessGroup = true;           // the child leads a group of its own
-    int parentDeathSignal = 0;             // sent to the child when we die (Linux); 0: none
+    int parentDeathSignal = 0;             // sent to the child when we die; 0: none
     bool nullStdin = true;                 // stdin is /dev/null unless `fds` maps 0
     // Set in (or added to) the child's environment, which is ours otherwise.
     std::vector<std::pair<std::string, std::string>> environment;
@@ -42,13 +42,24 @@ struct ExitStatus {
     bool success() const { return !signaled && code == 0; }
 };
 
+// A descriptor that becomes readable when our child `pid` ends (close-on-exec; a pidfd on
+// Linux); -1 where the system has none: then the caller polls.
+int openExitNotifier(pid_t pid);
+
 // Waits up to `timeoutSeconds` (<0: forever) for our child `pid`; false while it still runs.
 bool waitChild(pid_t pid, double timeoutSeconds, int& status);
 
-// Orphaned descendants are re-parented to us instead of init (Linux; false elsewhere).
+// Orphaned descendants are re-parented to us instead of init (Linux; false in the portable
+// build, where our children's process groups are how we reach their descendants).
 bool becomeSubreaper();
-// `signal` is delivered to us when the thread that forked us ends (Linux; false elsewhere).
+// `signal` is delivered to us when our parent ends: on Linux when the thread that forked us
+// ends (any process); in the portable build only in a process forked (not exec'd) from one that
+// called prepareChildrenParentDeath() first, false otherwise. Call it between fork and other
+// work: the portable build forks a guard (process_lifetime-portable.cpp).
 bool setParentDeathSignal(int signal);
+// Lets children forked from now on use setParentDeathSignal (the portable build's lifeline
+// pipe; nothing on Linux). spawnProcess does it itself.
+void prepareChildrenParentDeath();
 
 // How many threads this process has (/proc/self/task); 0 when unknown. A fork keeps only the
 // calling one.

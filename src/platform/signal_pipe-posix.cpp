@@ -8,6 +8,8 @@
 
 #include <stdexcept>
 
+#include "platform/file_descriptor.h"
+
 namespace robottestingframework {
 namespace platform {
 
@@ -36,12 +38,14 @@ SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals) {
     if (readFd >= 0) {
         throw std::logic_error("only one SignalPipe per process");
     }
-    int fds[2];
-    if (::pipe2(fds, O_CLOEXEC | O_NONBLOCK) != 0) {
+    FileDescriptor readEnd, writeEnd;
+    if (!makePipe(readEnd, writeEnd)) {
         throw std::runtime_error("cannot create the signal pipe");
     }
-    readFd = fds[0];
-    writeFd = fds[1];
+    setNonBlocking(readEnd.get());
+    setNonBlocking(writeEnd.get());
+    readFd = readEnd.release();
+    writeFd = writeEnd.release();
     installedCount = 0;
     for (int signal : signals_) {
         struct sigaction action {};

@@ -237,6 +237,71 @@ TEST(ProcessTree, KillDescendantsReachesProcessesThatLeftTheGroup) {
     EXPECT_TRUE(waitUntilGone(grandchild, 5));
 }
 
+// The pid a forked helper wrote on `readEnd` before it ended (then reaped).
+pid_t pidFromHelper(pid_t helper, FileDescriptor& readEnd) {
+    std::string text;
+    while (readSome(readEnd.get(), text) > 0) {
+    }
+    int status;
+    EXPECT_TRUE(waitChild(helper, 5, status));
+    return text.empty() ? -1 : static_cast<pid_t>(std::stol(text));
+}
+
+// A program started with a parent-death signal ends when the process that started it ends,
+// even by SIGKILL: prctl on Linux, a guard on a lifeline pipe in the portable build.
+TEST(SpawnProcess, ParentDeathSignalEndsTheChildWhenItsParentIsKilled) {
+    FileDescriptor readEnd, writeEnd;
+    ASSERT_TRUE(makePipe(readEnd, writeEnd));
+    const pid_t parent = ::fork();
+    ASSERT_GE(parent, 0);
+    if (parent == 0) {
+        SpawnOptions options;
+        options.argv = {"/bin/sleep", "30"};
+        options.parentDeathSignal = SIGKILL;
+        std::string error;
+        const pid_t child = spawnProcess(options, error);
+        const std::string text = std::to_string(child);
+        writeAll(writeEnd.get(), text);
+        writeEnd.reset();
+        ::kill(::getpid(), SIGKILL);
+    }
+    writeEnd.reset();
+    const pid_t child = pidFromHelper(parent, readEnd);
+    ASSERT_GT(child, 0);
+    EXPECT_TRUE(waitUntilGone(child, 5)) << "the program outlived the process that started it";
+    ::kill(child, SIGKILL);
+}
+
+// The fork server's workers: forked, not exec'd, they ask for the signal themselves.
+TEST(SetParentDeathSignal, AForkedChildEndsWithItsParent) {
+    FileDescriptor readEnd, writeEnd;
+    ASSERT_TRUE(makePipe(readEnd, writeEnd));
+    const pid_t parent = ::fork();
+    ASSERT_GE(parent, 0);
+    if (parent == 0) {
+        prepareChildrenParentDeath();
+        const pid_t child = ::fork();
+        if (child == 0) {
+            readEnd.reset();
+            writeEnd.reset();
+            const bool armed = setParentDeathSignal(SIGKILL);
+            for (int i = 0; armed && i < 300; ++i) {
+                ::usleep(100000);
+            }
+            ::_exit(0);
+        }
+        writeAll(writeEnd.get(), std::to_string(child));
+        writeEnd.reset();
+        ::usleep(200000);  // time for the child to arm the signal
+        ::kill(::getpid(), SIGKILL);
+    }
+    writeEnd.reset();
+    const pid_t child = pidFromHelper(parent, readEnd);
+    ASSERT_GT(child, 0);
+    EXPECT_TRUE(waitUntilGone(child, 5)) << "the forked child outlived its parent";
+    ::kill(child, SIGKILL);
+}
+
 TEST(FdPassing, DescriptorsArriveWithTheMessage) {
     FileDescriptor a, b, readEnd, writeEnd;
     ASSERT_TRUE(makeSocketPair(a, b, true));

@@ -1,13 +1,11 @@
 #include "runner/console/progress_line.h"
 
-#include <sys/ioctl.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 
 #include <robottestingframework/TestSuite.h>
 
+#include "platform/terminal_width.h"
 #include "reporters/summary.h"
 
 namespace robottestingframework {
@@ -41,11 +39,7 @@ std::string duration(double seconds, bool tenths) {
 
 // The terminal's width; 80 when it cannot be told.
 std::size_t widthOf(std::FILE* stream) {
-    struct winsize size {};
-    if (::ioctl(::fileno(stream), TIOCGWINSZ, &size) == 0 && size.ws_col > 0) {
-        return size.ws_col;
-    }
-    return 80;
+    return platform::terminalWidth(stream, 80);
 }
 
 }  // namespace

@@ -1,14 +1,15 @@
+// Linux: one SOCK_SEQPACKET packet per message, its descriptors received close-on-exec in the
+// same call (MSG_CMSG_CLOEXEC).
 #include "platform/fd_passing.h"
 
 #include <errno.h>
-#include <sys/mman.h>
 #include <sys/socket.h>
-#include <sys/stat.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <cstring>
+
+#include "platform/anonymous_file.h"
 
 namespace robottestingframework {
 namespace platform {
@@ -19,25 +20,6 @@ namespace {
 // passed as the packet's last descriptor (a message longer than a packet can be).
 constexpr char kInline = 'i';
 constexpr char kInFile = 'f';
-
-// An unlinked file holding `data`, read from its start by the receiver.
-FileDescriptor fileHolding(const std::string& data) {
-#ifdef __linux__
-    FileDescriptor file(::memfd_create("rtf-message", MFD_CLOEXEC));
-#else
-    std::string path = (std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
-    path += "/rtf-message-XXXXXX";
-    FileDescriptor file(::mkstemp(&path[0]));
-    if (file.valid()) {
-        ::unlink(path.c_str());
-        setCloseOnExec(file.get());
-    }
-#endif
-    if (!file.valid() || !writeAll(file.get(), data)) {
-        return FileDescriptor();
-    }
-    return file;
-}
 
 bool sendPacket(int socket, const std::string& packet, const std::vector<int>& fds) {
     iovec iov{};
@@ -59,7 +41,7 @@ bool sendPacket(int socket, const std::string& packet, const std::vector<int>& f
         std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
     }
     for (;;) {
-        ssize_t n = ::sendmsg(socket, &msg, MSG_NOSIGNAL);
+        ssize_t n = ::sendmsg(socket, &msg, kNoSigpipeSendFlags);
         if (n >= 0) {
             return true;
         }
@@ -67,27 +49,6 @@ bool sendPacket(int socket, const std::string& packet, const std::vector<int>& f
             return false;
         }
     }
-}
-
-// The whole content of `file`, from its start.
-bool readFile(int file, std::string& data) {
-    struct stat info {};
-    if (::fstat(file, &info) != 0) {
-        return false;
-    }
-    data.resize(static_cast<std::size_t>(info.st_size));
-    std::size_t done = 0;
-    while (done < data.size()) {
-        ssize_t n = ::pread(file, &data[done], data.size() - done, static_cast<off_t>(done));
-        if (n < 0 && errno == EINTR) {
-            continue;
-        }
-        if (n <= 0) {
-            return false;
-        }
-        done += static_cast<std::size_t>(n);
-    }
-    return true;
 }
 
 }  // namespace
@@ -100,7 +61,7 @@ bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fd
     if (data.size() < kMaxPacket) {
         return sendPacket(socket, kInline + data, fds);
     }
-    FileDescriptor file = fileHolding(data);
+    FileDescriptor file = anonymousFileHolding(data);
     if (!file.valid()) {
         return false;
     }
@@ -178,7 +139,7 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     }
     FileDescriptor file = std::move(fds.back());
     fds.pop_back();
-    if (!readFile(file.get(), data)) {
+    if (!readAnonymousFile(file.get(), data)) {
         errno = EMSGSIZE;
         return false;
     }

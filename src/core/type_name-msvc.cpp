@@ -1,0 +1,11 @@
+// MSVC: type_info::name() is readable already ("class std::out_of_range"). Not verified here
+// (no MSVC on these machines); README.md, Platforms.
+#include "type_name.h"
+
+namespace robottestingframework {
+
+std::string typeName(const std::type_info& type) {
+    return type.name();
+}
+
+}  // namespace robottestingframework

@@ -1,0 +1,161 @@
+// Portable POSIX: macOS has neither SOCK_SEQPACKET for local sockets nor MSG_CMSG_CLOEXEC. A
+// message is framed on a stream socket (makeSocketPair gives one): a kind byte and a 4-byte
+// length, then the bytes; its descriptors travel with the frame's first byte and are made
+// close-on-exec once received.
+#include "platform/fd_passing.h"
+
+#include <errno.h>
+#include <sys/socket.h>
+#include <sys/uio.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstring>
+
+#include "platform/anonymous_file.h"
+
+namespace robottestingframework {
+namespace platform {
+
+namespace {
+
+// The message follows in the frame, or it is in the file passed as the frame's last
+// descriptor (as in the Linux version, so a long message costs the same on both).
+constexpr char kInline = 'i';
+constexpr char kInFile = 'f';
+constexpr std::size_t kHeader = 1 + sizeof(std::uint32_t);
+
+bool sendFrame(int socket, char kind, const std::string& body, const std::vector<int>& fds) {
+    std::string frame(1, kind);
+    const std::uint32_t length = static_cast<std::uint32_t>(body.size());
+    frame.append(reinterpret_cast<const char*>(&length), sizeof(length));
+    frame += body;
+    iovec iov{};
+    iov.iov_base = &frame[0];
+    iov.iov_len = frame.size();
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    if (!fds.empty()) {
+        std::memset(control, 0, sizeof(control));
+        msg.msg_control = control;
+        msg.msg_controllen = CMSG_SPACE(sizeof(int) * fds.size());
+        cmsghdr* header = CMSG_FIRSTHDR(&msg);
+        header->cmsg_level = SOL_SOCKET;
+        header->cmsg_type = SCM_RIGHTS;
+        header->cmsg_len = CMSG_LEN(sizeof(int) * fds.size());
+        std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
+    }
+    ssize_t n;
+    do {
+        n = ::sendmsg(socket, &msg, kNoSigpipeSendFlags);
+    } while (n < 0 && errno == EINTR);
+    if (n < 0) {
+        return false;
+    }
+    // A stream takes what fits: the rest follows without descriptors.
+    return sendAll(socket, frame.substr(static_cast<std::size_t>(n)));
+}
+
+// Reads exactly `size` bytes into `out`; false at end of stream or on error.
+bool readExactly(int socket, char* out, std::size_t size) {
+    while (size > 0) {
+        ssize_t n = ::read(socket, out, size);
+        if (n < 0 && errno == EINTR) {
+            continue;
+        }
+        if (n <= 0) {
+            return false;
+        }
+        out += n;
+        size -= static_cast<std::size_t>(n);
+    }
+    return true;
+}
+
+}  // namespace
+
+bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
+    if (fds.size() > kMaxPassedFds) {
+        errno = EMSGSIZE;
+        return false;
+    }
+    if (data.size() < kMaxPacket) {
+        return sendFrame(socket, kInline, data, fds);
+    }
+    FileDescriptor file = anonymousFileHolding(data);
+    if (!file.valid()) {
+        return false;
+    }
+    std::vector<int> withFile = fds;
+    withFile.push_back(file.get());
+    return sendFrame(socket, kInFile, {}, withFile);
+}
+
+bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds) {
+    fds.clear();
+    data.clear();
+    // The header alone, so that the descriptors of the next frame stay with it.
+    char header[kHeader];
+    iovec iov{};
+    iov.iov_base = header;
+    iov.iov_len = sizeof(header);
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
+    msghdr msg{};
+    msg.msg_iov = &iov;
+    msg.msg_iovlen = 1;
+    msg.msg_control = control;
+    msg.msg_controllen = sizeof(control);
+    ssize_t n;
+    do {
+        n = ::recvmsg(socket, &msg, MSG_WAITALL);
+    } while (n < 0 && errno == EINTR);
+    if (n > 0 && msg.msg_controllen > 0) {
+        for (cmsghdr* entry = CMSG_FIRSTHDR(&msg); entry != nullptr;
+             entry = CMSG_NXTHDR(&msg, entry)) {
+            if (entry->cmsg_level == SOL_SOCKET && entry->cmsg_type == SCM_RIGHTS) {
+                std::size_t count = (entry->cmsg_len - CMSG_LEN(0)) / sizeof(int);
+                for (std::size_t i = 0; i < count; ++i) {
+                    int fd;
+                    std::memcpy(&fd, CMSG_DATA(entry) + i * sizeof(int), sizeof(int));
+                    setCloseOnExec(fd);
+                    fds.emplace_back(fd);
+                }
+            }
+        }
+    }
+    if (n <= 0) {
+        return false;
+    }
+    if (static_cast<std::size_t>(n) < kHeader &&
+        !readExactly(socket, header + n, kHeader - static_cast<std::size_t>(n))) {
+        return false;
+    }
+    std::uint32_t length = 0;
+    std::memcpy(&length, header + 1, sizeof(length));
+    const char kind = header[0];
+    if ((msg.msg_flags & MSG_CTRUNC) != 0 || (kind != kInline && kind != kInFile) ||
+        (kind == kInFile && fds.empty()) || length >= kMaxPacket) {
+        errno = EMSGSIZE;
+        return false;
+    }
+    data.resize(length);
+    if (length > 0 && !readExactly(socket, &data[0], length)) {
+        data.clear();
+        return false;
+    }
+    if (kind == kInline) {
+        return true;
+    }
+    FileDescriptor file = std::move(fds.back());
+    fds.pop_back();
+    if (!readAnonymousFile(file.get(), data)) {
+        errno = EMSGSIZE;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace platform
+}  // namespace robottestingframework
