@@ -290,7 +290,9 @@ def test_a_test_failing_thousands_of_checks_costs_the_page_little(tmp_path):
         run.wait_for_line("final page stays", timeout=60)
         with open(f"/proc/{run.proc.pid}/status") as status:
             peak = next(int(line.split()[1]) for line in status if line.startswith("VmHWM:"))
-        assert peak < 100 * 1024, f"runner peak {peak} KiB"
+        # The reports keep every check too (issue 22): the 15 MB of failed checks are held as
+        # checks and as failures, and the text report is built whole; the page adds little.
+        assert peak < 128 * 1024, f"runner peak {peak} KiB"
         snapshot = json.loads(request(run.port, "/snapshot")[2])
         [failing] = snapshot["suites"][0]["tests"]
         assert failing["state"] == "failed"
