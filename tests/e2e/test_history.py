@@ -334,3 +334,31 @@ def test_history_commands_need_a_history_file(tmp_path):
     r = run_runner("--history", "h.db", "--history-report", cwd=tmp_path)
     assert r.returncode == 2 and "h.db" in r.stderr, r
     assert not (tmp_path / "h.db").exists()
+
+
+MEASURING = """class TestCase:
+    def run(self):
+        robottestingframework.testMeasure("tracking error", 0.012, "rad", 0, 0.05)
+        robottestingframework.testMeasure("rate", 100.0, "Hz")
+"""
+
+
+@pytest.mark.parametrize("isolation", ["none", "process"])
+def test_each_runs_measurements_are_kept_with_its_results(tmp_path, isolation):
+    (tmp_path / "arm.py").write_text(MEASURING)
+    (tmp_path / "m.xml").write_text('<suite name="m">\n  <test name="arm">arm.py</test>\n'
+                                    '</suite>\n')
+    for _ in range(2):
+        r = run_runner("--isolation", isolation, "--suite", "m.xml", "--history", "h.db",
+                       "--no-output", cwd=tmp_path)
+        assert r.returncode == 0, r
+    with sqlite3.connect(tmp_path / "h.db") as db:
+        rows = db.execute(
+            "SELECT m.run, t.name, m.name, m.value, m.unit, m.low, m.high FROM measurements m "
+            "JOIN tests t ON t.id = m.test ORDER BY m.run, m.rowid").fetchall()
+    runs = sorted({row[0] for row in rows})
+    assert len(runs) == 2, rows
+    for run in runs:
+        assert [row[1:] for row in rows if row[0] == run] == [
+            ("m/arm", "tracking error", 0.012, "rad", 0.0, 0.05),
+            ("m/arm", "rate", 100.0, "Hz", None, None)], rows

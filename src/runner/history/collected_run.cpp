@@ -1,5 +1,7 @@
 #include "runner/history/collected_run.h"
 
+#include <robottestingframework/Measurement.h>
+
 namespace robottestingframework {
 namespace runner {
 
@@ -19,8 +21,16 @@ void appendCollectedRun(RunAppender& appender, const TestResultCollector& collec
             result.duration = test.duration;
             result.attempts = static_cast<unsigned int>(test.attempts.size() + 1);
             appender.addTest(result);
-            // Measurements (issue 22 item 2) go here: for each of test.events that is a
-            // measurement, appender.addMeasurement({result.test, name, value, unit, limits}).
+            for (const ResultEvent& event : test.events) {
+                if (event.kind != ResultEvent::Kind::Measurement || !event.measurement) {
+                    continue;
+                }
+                const Measurement& measured = *event.measurement;
+                appender.addMeasurement({result.test, measured.name, measured.value,
+                                         measured.unit, measured.low.has_value(),
+                                         measured.low.value_or(0), measured.high.has_value(),
+                                         measured.high.value_or(0)});
+            }
         }
     }
 }
