@@ -26,10 +26,9 @@ void appendCollectedRun(RunAppender& appender, const TestResultCollector& collec
                     continue;
                 }
                 const Measurement& measured = *event.measurement;
-                appender.addMeasurement({result.test, measured.name, measured.value,
-                                         measured.unit, measured.low.has_value(),
-                                         measured.low.value_or(0), measured.high.has_value(),
-                                         measured.high.value_or(0)});
+                appender.addMeasurement({result.test, measured.name, measured.value, measured.unit,
+                                         measured.low.has_value(), measured.low.value_or(0),
+                                         measured.high.has_value(), measured.high.value_or(0)});
             }
         }
     }
