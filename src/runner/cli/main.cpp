@@ -3,6 +3,7 @@
 // (exit_status.h).
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
@@ -108,9 +109,16 @@ int main(int argc, char** argv) {
     RunPlan plan(*executor);
     plan.gate().setFailFast(options.failFast);
     plan.setRetries(options.retries);
+    // Each test's param, tags and type: only the HTML report shows them (10 000 tests' facts
+    // are a map of 10 000 entries).
+    const bool factsShown =
+        std::any_of(options.outputs.begin(), options.outputs.end(),
+                    [](const OutputRequest& output) { return output.type == "html"; });
     for (auto& suite : planned.suites) {
         applyOverrides(suite, inputs.overrides);
-        addTestFacts(suite, planned.reportSettings.testFacts);
+        if (factsShown) {
+            addTestFacts(suite, planned.reportSettings.testFacts);
+        }
         plan.addSuite(std::move(suite));
     }
     planned.suites.clear();
