@@ -28,18 +28,13 @@ def write_suite(folder, plugin, count):
 
 
 def page_timings(page, rounds):
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
+    # The e2e tests' Chromium (tests/e2e/browser.py): its files in a folder of its own.
+    sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "tests",
+                                    "e2e"))
+    from browser import start_chromium
 
     profile = tempfile.mkdtemp(prefix="rtf-html-bench-chromium-")
-    options = webdriver.ChromeOptions()
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1200,900", f"--user-data-dir={profile}"):
-        options.add_argument(arg)
-    service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
-    driver = webdriver.Chrome(service=service, options=options)
-    driver.set_page_load_timeout(120)
+    driver = start_chromium(profile, page_load_timeout=120)
     best = {}
     try:
         for _ in range(rounds):

@@ -3,17 +3,15 @@ the shards of one run appending at once, --history-report, --history-import of J
 (this runner's and other tools'), --durations from the history, the HTML report's strips, a
 damaged or foreign file, and a history that cannot be written (the reports still are)."""
 import json
-import shutil
 import sqlite3
 import subprocess
 import xml.etree.ElementTree as ET
 
 import pytest
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
+from browser import chromium
 from conftest import RUNNER, empty_environment, run_runner
 from web_run import WebRun, request
 
@@ -231,18 +229,8 @@ def test_the_html_report_shows_each_tests_last_runs(tmp_path):
 
 @pytest.fixture
 def browser(tmp_path):
-    options = webdriver.ChromeOptions()
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1200,900", f"--user-data-dir={tmp_path / 'chromium-profile'}"):
-        options.add_argument(arg)
-    service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
-    driver = webdriver.Chrome(service=service, options=options)
-    driver.set_page_load_timeout(60)
-    try:
+    with chromium(tmp_path) as driver:
         yield driver
-    finally:
-        driver.quit()
 
 
 def test_the_strips_are_drawn_in_a_browser(tmp_path, browser):

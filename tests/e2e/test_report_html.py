@@ -1,19 +1,17 @@
 """--output html:FILE: one self-contained page, checked in headless Chromium (Debian's chromium,
 chromium-driver and python3-selenium) opened from file://."""
 import os
-import shutil
 import subprocess
 import time
 from pathlib import Path
 
 import pytest
-from selenium import webdriver
 from selenium.common.exceptions import NoAlertPresentException
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 from selenium.webdriver.support.ui import Select, WebDriverWait
 
+from browser import chromium
 from conftest import BUILD_DIR, plugin, run_runner
 
 ARTIFACTS = BUILD_DIR / "test-artifacts"
@@ -23,18 +21,8 @@ SCRIPT_END = "end </script><script>alert(2)</script> end"
 
 @pytest.fixture
 def browser(tmp_path):
-    options = webdriver.ChromeOptions()
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1200,900", f"--user-data-dir={tmp_path / 'chromium-profile'}"):
-        options.add_argument(arg)
-    service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
-    driver = webdriver.Chrome(service=service, options=options)
-    driver.set_page_load_timeout(60)
-    try:
+    with chromium(tmp_path) as driver:
         yield driver
-    finally:
-        driver.quit()
 
 
 def shown_rows(driver):

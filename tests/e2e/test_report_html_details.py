@@ -6,14 +6,12 @@ and chromedriver) with no console errors, in both isolation modes and under -j 2
 screenshot of the -j 2 run, in build/test-artifacts/, is docs/html-report.png."""
 import json
 import re
-import shutil
 
 import pytest
-from selenium import webdriver
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
+from browser import chromium
 from conftest import BUILD_DIR, run_runner
 
 ARTIFACTS = BUILD_DIR / "test-artifacts"
@@ -21,19 +19,8 @@ ARTIFACTS = BUILD_DIR / "test-artifacts"
 
 @pytest.fixture
 def browser(tmp_path):
-    options = webdriver.ChromeOptions()
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    for arg in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                "--window-size=1200,1000", f"--user-data-dir={tmp_path / 'chromium-profile'}"):
-        options.add_argument(arg)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    service = Service(shutil.which("chromedriver") or "/usr/bin/chromedriver")
-    driver = webdriver.Chrome(service=service, options=options)
-    driver.set_page_load_timeout(60)
-    try:
+    with chromium(tmp_path, window="1200,1000", console_log=True) as driver:
         yield driver
-    finally:
-        driver.quit()
 
 
 def console_errors(driver):

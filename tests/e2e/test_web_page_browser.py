@@ -2,45 +2,27 @@
 moves from running to passed without a reload, the final summary shows, and test names and
 messages that look like HTML stay text."""
 import os
-import shutil
 import signal
 from xml.sax.saxutils import escape
 
 import pytest
-from selenium import webdriver
 from selenium.common.exceptions import NoAlertPresentException
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
+from browser import chromium
 from conftest import BUILD_DIR
 from web_run import WebRun, quick_test, waiting_test
 
 ARTIFACTS = BUILD_DIR / "tests" / "e2e" / "artifacts"
-CHROMEDRIVER = shutil.which("chromedriver") or "/usr/bin/chromedriver"
 PROBE_NAME = "<img src=x onerror=alert(1)>"
 PROBE_SUITE = "arm </script><img src=x onerror=alert(3)>"
 
 
 @pytest.fixture
 def browser(tmp_path):
-    options = webdriver.ChromeOptions()
-    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage",
-                     "--window-size=1100,760", f"--user-data-dir={tmp_path / 'chromium'}",
-                     "--no-first-run", "--disable-extensions", "--disable-crash-reporter",
-                     "--disable-breakpad"):
-        options.add_argument(argument)
-    options.binary_location = shutil.which("chromium") or "/usr/bin/chromium"
-    # Chromium's profile, caches and crash reports stay in the test's folder, not in ~.
-    home = tmp_path / "home"
-    home.mkdir()
-    env = dict(os.environ, HOME=str(home), XDG_CONFIG_HOME=str(home / ".config"),
-               XDG_CACHE_HOME=str(home / ".cache"))
-    service = Service(executable_path=CHROMEDRIVER, log_path=os.devnull, env=env)
-    driver = webdriver.Chrome(service=service, options=options)
-    driver.set_page_load_timeout(30)
-    yield driver
-    driver.quit()
+    with chromium(tmp_path, window="1100,760", page_load_timeout=30) as driver:
+        yield driver
 
 
 def row_state(driver, name_part):
