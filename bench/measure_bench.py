@@ -12,42 +12,24 @@ measured by rtf-bench-measure (wall time, the runner's own ru_maxrss). A benchma
 non-zero only when a run failed, never on a figure."""
 import argparse
 import os
-import statistics
-import subprocess
 import sys
 import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import perf_bench  # noqa: E402  (its measured runs and suite writer)
 
 TIME_TARGET = 1.10
 MEMORY_TARGET = 1.20
 
 
-def spawn(measure, argv, cwd):
-    proc = subprocess.run([measure, *argv], cwd=cwd, stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, text=True, timeout=1800)
-    try:
-        seconds, peak, code = proc.stdout.split()
-    except ValueError:
-        sys.exit(f"measure_bench: rtf-bench-measure failed: {proc.stderr.strip()}")
-    if code != "0":
-        sys.exit(f"measure_bench: {' '.join(argv[:3])} ... exited {code}")
-    return float(seconds), int(peak)
-
-
-def write_suite(folder, plugin, name, count):
-    path = os.path.join(folder, f"{name}.xml")
-    with open(path, "w") as f:
-        f.write(f'<suite name="{name}">\n')
-        f.writelines(f'  <test type="dll">{plugin}</test>\n' for _ in range(count))
-        f.write("</suite>\n")
-    return path
-
-
-def median_run(measure, runner, suite, rounds, folder):
+def median_run(runner, suite, rounds, folder):
+    """Median seconds and peak KiB of the runner on `suite` with every output written."""
     argv = [runner, "--suite", suite, "-o", "junit:r.xml", "-o", "json:r.json",
             "-o", "tap:r.tap", "-o", "html:r.html"]
-    spawn(measure, argv, folder)  # warm-up
-    runs = [spawn(measure, argv, folder) for _ in range(rounds)]
-    return statistics.median(s for s, _ in runs), statistics.median(k for _, k in runs)
+    try:
+        return perf_bench.median_run(argv, rounds, folder)
+    except perf_bench.Failed as e:
+        sys.exit(f"measure_bench: {e}")
 
 
 def main():
@@ -64,11 +46,12 @@ def main():
     for needed in (runner, measure, plain, measuring):
         if not os.path.exists(needed):
             sys.exit(f"measure_bench: {needed} is missing; build first (cmake --build {build})")
+    perf_bench.MEASURE = measure
     with tempfile.TemporaryDirectory(prefix="rtf-measure-bench-") as folder:
         figures = {}
         for name, plugin in (("without", plain), ("with", measuring)):
-            suite = write_suite(folder, plugin, name, args.count)
-            figures[name] = median_run(measure, runner, suite, args.rounds, folder)
+            suite = perf_bench.write_cpp_suite(folder, plugin, name, args.count)
+            figures[name] = median_run(runner, suite, args.rounds, folder)
     (t0, m0), (t1, m1) = figures["without"], figures["with"]
     print(f"{args.count} trivial isolated tests, every output written, median of {args.rounds}")
     print(f"{'':28}{'without':>10}{'with 3 each':>13}{'ratio':>8}{'target':>9}")
