@@ -12,7 +12,9 @@
 namespace robottestingframework {
 namespace platform {
 
-const int kNoSigpipeSendFlags = MSG_NOSIGNAL;
+int noSigpipeSendFlags() {
+    return MSG_NOSIGNAL;
+}
 
 bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd) {
     int fds[2];

@@ -11,7 +11,9 @@ namespace robottestingframework {
 namespace platform {
 
 // macOS has no MSG_NOSIGNAL (only the SO_NOSIGPIPE socket option): writers ignore SIGPIPE.
-const int kNoSigpipeSendFlags = 0;
+int noSigpipeSendFlags() {
+    return 0;
+}
 
 bool makePipe(FileDescriptor& readEnd, FileDescriptor& writeEnd) {
     int fds[2];

@@ -41,7 +41,7 @@ bool sendPacket(int socket, const std::string& packet, const std::vector<int>& f
         std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
     }
     for (;;) {
-        ssize_t n = ::sendmsg(socket, &msg, kNoSigpipeSendFlags);
+        ssize_t n = ::sendmsg(socket, &msg, noSigpipeSendFlags());
         if (n >= 0) {
             return true;
         }

@@ -49,7 +49,7 @@ bool sendFrame(int socket, char kind, const std::string& body, const std::vector
     }
     ssize_t n;
     do {
-        n = ::sendmsg(socket, &msg, kNoSigpipeSendFlags);
+        n = ::sendmsg(socket, &msg, noSigpipeSendFlags());
     } while (n < 0 && errno == EINTR);
     if (n < 0) {
         return false;

@@ -75,7 +75,7 @@ bool writeAll(int fd, const void* data, std::size_t size) {
 
 bool sendAll(int socket, const std::string& data) {
     return putAll(socket, data.data(), data.size(), [](int to, const char* p, std::size_t n) {
-        return ::send(to, p, n, kNoSigpipeSendFlags);
+        return ::send(to, p, n, noSigpipeSendFlags());
     });
 }
 

@@ -39,8 +39,10 @@ bool makeSocketPair(FileDescriptor& first, FileDescriptor& second, bool packets)
 void closeDescriptorsFrom(int first);
 
 // The flags for send() and sendmsg() that keep SIGPIPE away when the peer is gone
-// (MSG_NOSIGNAL); 0 where the system has none, and the caller ignores SIGPIPE.
-extern const int kNoSigpipeSendFlags;
+// (MSG_NOSIGNAL); 0 where the system has none, and the caller ignores SIGPIPE. A function, not
+// a global: the platform code is linked into several shared libraries of one process, and a
+// global defined in each is one name given twice (ASan's ODR check stops the program).
+int noSigpipeSendFlags();
 
 void setNonBlocking(int fd, bool on = true);
 void setCloseOnExec(int fd, bool on = true);
