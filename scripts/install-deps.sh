@@ -12,7 +12,7 @@ packages=(
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
     python3-yaml libsqlite3-dev
-    gcovr
+    gcovr tini
     clang libclang-rt-14-dev
 )
 

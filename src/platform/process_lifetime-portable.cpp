@@ -51,6 +51,9 @@ bool startGuard(int signal, pid_t child, pid_t parent) {
         if (::fork() != 0) {
             ::_exit(0);  // the guard is orphaned at once: nobody of ours must reap it
         }
+        // Its own session: a Ctrl-C on the terminal or a kill of the child's process group is
+        // meant for the child, not for the one process that must outlive it to signal it.
+        ::setsid();
         ::dup2(watched, 0);
         closeDescriptorsFrom(1);
         for (;;) {
