@@ -269,7 +269,7 @@ TEST_F(Isolation, ChildLeftBehindByAPassingTestIsGoneAtItsEnd) {
     }
     ASSERT_GT(child, 0) << recorder.dump();
     auto alive = [&] {
-        const std::vector<pid_t> marked = markedProcesses(marker);
+        const std::vector<pid_t> marked = markedProcesses(marker, Guards::Counted);
         return std::find(marked.begin(), marked.end(), child) != marked.end();
     };
     platform::Deadline deadline(2.0);
