@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "platform/anonymous_file.h"
+#include "platform/scm_rights.h"
 
 namespace robottestingframework {
 namespace platform {
@@ -22,33 +23,7 @@ constexpr char kInline = 'i';
 constexpr char kInFile = 'f';
 
 bool sendPacket(int socket, const std::string& packet, const std::vector<int>& fds) {
-    iovec iov{};
-    iov.iov_base = const_cast<char*>(packet.data());
-    iov.iov_len = packet.size();
-
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
-    msghdr msg{};
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    if (!fds.empty()) {
-        std::memset(control, 0, sizeof(control));
-        msg.msg_control = control;
-        msg.msg_controllen = CMSG_SPACE(sizeof(int) * fds.size());
-        cmsghdr* header = CMSG_FIRSTHDR(&msg);
-        header->cmsg_level = SOL_SOCKET;
-        header->cmsg_type = SCM_RIGHTS;
-        header->cmsg_len = CMSG_LEN(sizeof(int) * fds.size());
-        std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
-    }
-    for (;;) {
-        ssize_t n = ::sendmsg(socket, &msg, noSigpipeSendFlags());
-        if (n >= 0) {
-            return true;
-        }
-        if (errno != EINTR) {
-            return false;
-        }
-    }
+    return sendWithRights(socket, packet.data(), packet.size(), fds) >= 0;
 }
 
 }  // namespace
@@ -96,40 +71,17 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     data.resize(length > 0 && static_cast<std::size_t>(length) < kMaxPacket
                     ? static_cast<std::size_t>(length)
                     : kMaxPacket);
-    iovec iov{};
-    iov.iov_base = &data[0];
-    iov.iov_len = data.size();
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
-    msghdr msg{};
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    msg.msg_control = control;
-    msg.msg_controllen = sizeof(control);
-    ssize_t n;
-    do {
-        n = ::recvmsg(socket, &msg, MSG_CMSG_CLOEXEC);
-    } while (n < 0 && errno == EINTR);
     fds.clear();
-    if (n > 0) {
-        for (cmsghdr* header = CMSG_FIRSTHDR(&msg); header != nullptr;
-             header = CMSG_NXTHDR(&msg, header)) {
-            if (header->cmsg_level == SOL_SOCKET && header->cmsg_type == SCM_RIGHTS) {
-                std::size_t count = (header->cmsg_len - CMSG_LEN(0)) / sizeof(int);
-                for (std::size_t i = 0; i < count; ++i) {
-                    int fd;
-                    std::memcpy(&fd, CMSG_DATA(header) + i * sizeof(int), sizeof(int));
-                    fds.emplace_back(fd);
-                }
-            }
-        }
-    }
+    int flags = 0;
+    const ssize_t n =
+        receiveWithRights(socket, &data[0], data.size(), MSG_CMSG_CLOEXEC, fds, flags);
     if (n <= 0) {
         data.clear();
         return false;
     }
     data.resize(static_cast<std::size_t>(n));
-    if ((msg.msg_flags & (MSG_TRUNC | MSG_CTRUNC)) != 0 ||
-        (data[0] != kInline && data[0] != kInFile) || (data[0] == kInFile && fds.empty())) {
+    if ((flags & (MSG_TRUNC | MSG_CTRUNC)) != 0 || (data[0] != kInline && data[0] != kInFile) ||
+        (data[0] == kInFile && fds.empty())) {
         errno = EMSGSIZE;
         return false;
     }

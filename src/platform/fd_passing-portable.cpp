@@ -13,6 +13,7 @@
 #include <cstring>
 
 #include "platform/anonymous_file.h"
+#include "platform/scm_rights.h"
 
 namespace robottestingframework {
 namespace platform {
@@ -30,27 +31,7 @@ bool sendFrame(int socket, char kind, const std::string& body, const std::vector
     const std::uint32_t length = static_cast<std::uint32_t>(body.size());
     frame.append(reinterpret_cast<const char*>(&length), sizeof(length));
     frame += body;
-    iovec iov{};
-    iov.iov_base = &frame[0];
-    iov.iov_len = frame.size();
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
-    msghdr msg{};
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    if (!fds.empty()) {
-        std::memset(control, 0, sizeof(control));
-        msg.msg_control = control;
-        msg.msg_controllen = CMSG_SPACE(sizeof(int) * fds.size());
-        cmsghdr* header = CMSG_FIRSTHDR(&msg);
-        header->cmsg_level = SOL_SOCKET;
-        header->cmsg_type = SCM_RIGHTS;
-        header->cmsg_len = CMSG_LEN(sizeof(int) * fds.size());
-        std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
-    }
-    ssize_t n;
-    do {
-        n = ::sendmsg(socket, &msg, noSigpipeSendFlags());
-    } while (n < 0 && errno == EINTR);
+    const ssize_t n = sendWithRights(socket, frame.data(), frame.size(), fds);
     if (n < 0) {
         return false;
     }
@@ -98,32 +79,10 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     data.clear();
     // The header alone, so that the descriptors of the next frame stay with it.
     char header[kHeader];
-    iovec iov{};
-    iov.iov_base = header;
-    iov.iov_len = sizeof(header);
-    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * (kMaxPassedFds + 1))];
-    msghdr msg{};
-    msg.msg_iov = &iov;
-    msg.msg_iovlen = 1;
-    msg.msg_control = control;
-    msg.msg_controllen = sizeof(control);
-    ssize_t n;
-    do {
-        n = ::recvmsg(socket, &msg, MSG_WAITALL);
-    } while (n < 0 && errno == EINTR);
-    if (n > 0 && msg.msg_controllen > 0) {
-        for (cmsghdr* entry = CMSG_FIRSTHDR(&msg); entry != nullptr;
-             entry = CMSG_NXTHDR(&msg, entry)) {
-            if (entry->cmsg_level == SOL_SOCKET && entry->cmsg_type == SCM_RIGHTS) {
-                std::size_t count = (entry->cmsg_len - CMSG_LEN(0)) / sizeof(int);
-                for (std::size_t i = 0; i < count; ++i) {
-                    int fd;
-                    std::memcpy(&fd, CMSG_DATA(entry) + i * sizeof(int), sizeof(int));
-                    setCloseOnExec(fd);
-                    fds.emplace_back(fd);
-                }
-            }
-        }
+    int flags = 0;
+    const ssize_t n = receiveWithRights(socket, header, sizeof(header), MSG_WAITALL, fds, flags);
+    for (const FileDescriptor& fd : fds) {
+        setCloseOnExec(fd.get());
     }
     if (n <= 0) {
         return false;
@@ -135,7 +94,7 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     std::uint32_t length = 0;
     std::memcpy(&length, header + 1, sizeof(length));
     const char kind = header[0];
-    if ((msg.msg_flags & MSG_CTRUNC) != 0 || (kind != kInline && kind != kInFile) ||
+    if ((flags & MSG_CTRUNC) != 0 || (kind != kInline && kind != kInFile) ||
         (kind == kInFile && fds.empty()) || length >= kMaxPacket) {
         errno = EMSGSIZE;
         return false;
