@@ -50,6 +50,11 @@ public:
     // cannot be attached (missing, over a limit) is an error of the test, which goes on.
     static void testAttach(const std::string& path, const std::string& description,
                            TestMessage where = TestMessage(), TestCase* testcase = nullptr);
+    // The same for a fixture: the file becomes an attachment of the suite it serves (a
+    // process's log). One that cannot be attached is a report of the suite, which goes on;
+    // false then.
+    static bool attach(const std::string& path, const std::string& description,
+                       FixtureManager* fixture);
 };
 
 }  // namespace robottestingframework

@@ -19,6 +19,8 @@ struct TestAttempt {
     TestMessage message;  // what decided its state, if anything did
     std::string output;   // what it printed
     double duration = 0;  // seconds
+    // Its measurement events: the HTML report plots a measurement across attempts.
+    std::vector<ResultEvent> measurements;
 };
 
 // One repetition of a test that runs several times (repetition="N"); its id is

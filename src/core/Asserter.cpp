@@ -175,4 +175,21 @@ void Asserter::testAttach(const std::string& path, const std::string& descriptio
     result->addAttachment(test, attachment);
 }
 
+bool Asserter::attach(const std::string& path, const std::string& description,
+                      FixtureManager* fixture) {
+    TestResult* result = fixture ? fixture->getResult() : nullptr;
+    if (result == nullptr) {
+        printOrphan("fixture attachment", TestMessage(path));
+        return false;
+    }
+    Attachment attachment;
+    std::string error;
+    if (!storeAttachment(path, description, attachment, error)) {
+        result->addReport(fixture->getOwner(), TestMessage("not attached: " + error));
+        return false;
+    }
+    result->addAttachment(fixture->getOwner(), attachment);
+    return true;
+}
+
 }  // namespace robottestingframework

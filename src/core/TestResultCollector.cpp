@@ -313,6 +313,11 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     }
     attempt.output = std::move(record.output);
     attempt.duration = record.duration;
+    for (ResultEvent& event : record.events) {
+        if (event.kind == Kind::Measurement) {
+            attempt.measurements.push_back(std::move(event));
+        }
+    }
     record.attempts.push_back(std::move(attempt));
     record.status = TestStatus::Passed;
     record.events.clear();

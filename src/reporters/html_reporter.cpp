@@ -70,24 +70,29 @@ void fill(std::string& page, const std::string& name, const std::string& value) 
     }
 }
 
-// A test's measurements (a table on the page) and attachments (links; images inline).
+// A measurement event as the page's table and plots read it.
+std::string measurementData(const ResultEvent& event) {
+    const Measurement& m = *event.measurement;
+    std::string out = "{\"name\":" + jsonString(m.name) + ",\"value\":" + formatNumber(m.value) +
+                      ",\"unit\":" + jsonString(m.unit);
+    if (m.low) {
+        out += ",\"low\":" + formatNumber(*m.low);
+    }
+    if (m.high) {
+        out += ",\"high\":" + formatNumber(*m.high);
+    }
+    return out + ",\"passed\":" + (event.passed ? "true" : "false") +
+           ",\"rep\":" + std::to_string(event.repetition) + "}";
+}
+
+// A test's (or a suite's) measurements (a table on the page, a plot per name) and attachments
+// (links; images inline).
 void appendMeasurementsAndAttachments(std::string& out, const std::vector<ResultEvent>& events) {
     std::string measurements;
     std::string attachments;
     for (const ResultEvent& event : events) {
         if (event.kind == Kind::Measurement && event.measurement) {
-            const Measurement& m = *event.measurement;
-            measurements +=
-                std::string(measurements.empty() ? "" : ",") + "{\"name\":" + jsonString(m.name) +
-                ",\"value\":" + formatNumber(m.value) + ",\"unit\":" + jsonString(m.unit);
-            if (m.low) {
-                measurements += ",\"low\":" + formatNumber(*m.low);
-            }
-            if (m.high) {
-                measurements += ",\"high\":" + formatNumber(*m.high);
-            }
-            measurements += std::string(",\"passed\":") + (event.passed ? "true" : "false") +
-                            ",\"rep\":" + std::to_string(event.repetition) + "}";
+            measurements += (measurements.empty() ? "" : ",") + measurementData(event);
         } else if (event.kind == Kind::Attachment && event.attachment) {
             const Attachment& a = *event.attachment;
             attachments += std::string(attachments.empty() ? "" : ",") +
@@ -177,7 +182,9 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
             out += std::string(i == 0 ? "" : ",") +
                    "{\"state\":" + jsonString(toString(attempt.status)) +
                    ",\"duration\":" + number(attempt.duration) +
-                   ",\"message\":" + jsonString(messageText(attempt.message)) + "}";
+                   ",\"message\":" + jsonString(messageText(attempt.message));
+            appendMeasurementsAndAttachments(out, attempt.measurements);
+            out += "}";
         }
         out += "]";
     }
@@ -214,10 +221,14 @@ std::string HtmlReporter::suiteData(const SuiteRecord& suite) const {
     out += ",\"messages\":[";
     bool firstMessage = true;
     for (const ResultEvent& event : suite.events) {
+        if (event.kind == Kind::Attachment) {
+            continue;  // linked apart (a process fixture's logs)
+        }
         out += (firstMessage ? "" : ",") + messageData(event);
         firstMessage = false;
     }
     out += "]";
+    appendMeasurementsAndAttachments(out, suite.events);
     if (!suite.output.empty()) {
         std::size_t cut = 0;
         out += ",\"output\":" + jsonString(capped(suite.output, cut));
@@ -269,8 +280,6 @@ std::string HtmlReporter::document() {
     std::string page = htmlReportPage();
     fill(page, "REPORT_CSS", htmlReportStyle());
     fill(page, "REPORT_JS", htmlReportScript());
-    // Parts the report shows only when asked for, each with its own style and script.
-    fill(page, "REPORT_EXTRAS", settings_.history ? historyStripScript() : "");
     fill(page, "REPORT_DATA", data);
     return page;
 }

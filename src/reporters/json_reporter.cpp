@@ -282,8 +282,13 @@ std::string JsonReporter::document() {
             std::string(suites.empty() ? "" : ",") + "{\"place\":" + std::to_string(suitePlace) +
             ",\"name\":" + jsonString(suite.name) +
             ",\"duration\":" + std::to_string(milliseconds(suite.duration)) +
-            ",\"messages\":" + messageList(suite.events, origin, settings_.passedChecks, true) +
-            "}";
+            ",\"messages\":" + messageList(suite.events, origin, settings_.passedChecks, true);
+        // Its fixtures' files (a process fixture's logs), as a test's attachments are.
+        const std::string attachments = attachmentsOf(suite.events);
+        if (!attachments.empty()) {
+            suites += ",\"attachments\":[" + attachments + "]";
+        }
+        suites += "}";
         std::size_t testPlace = 0;
         for (const TestRecord& test : suite.tests) {
             out += first ? "\n" : ",\n";

@@ -152,16 +152,22 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     parent.body += "# Subtest: " + name + "\n" + indented(suite.body) + "    1.." +
                    std::to_string(suite.points) + "\n";
     const std::string number = std::to_string(++parent.points);
+    const std::string extra = records("", suite.attachments);
     if (suite.fixtureProblems.empty() && !suite.failed) {
         parent.body += "ok " + number + " - " + name + "\n";
+        if (!extra.empty()) {
+            parent.body += "  ---\n" + extra + "  ...\n";
+        }
         return;
     }
     parent.failed = true;
     parent.body += "not ok " + number + " - " + name + "\n";
     if (!suite.fixtureProblems.empty()) {
         const TestMessage& first = suite.fixtureProblems.front();
-        parent.body += diagnostics(TestStatus::Error, first, "");
+        parent.body += diagnostics(TestStatus::Error, first, "", extra);
         bailOuts.push_back(oneLine("fixture of " + suite.name + " failed: " + first.toString()));
+    } else if (!extra.empty()) {
+        parent.body += "  ---\n" + extra + "  ...\n";
     }
 }
 
@@ -345,14 +351,16 @@ void TapReporter::addMeasurement(const Test* test, const Measurement& measuremen
 
 void TapReporter::addAttachment(const Test* test, const Attachment& attachment) {
     OpenTest* open = openTest(test);
-    if (open == nullptr) {
+    // Not a test's: a fixture's (a process's log), written with its suite's point.
+    if (open == nullptr && blocks_.size() <= 1) {
         return;
     }
-    open->attachments += "    - name: " + jsonString(attachment.originalName) +
-                         "\n      path: " + jsonString(attachment.path) +
-                         "\n      description: " + jsonString(attachment.description) +
-                         "\n      contentType: " + jsonString(attachment.contentType()) +
-                         "\n      size: " + std::to_string(attachment.size) + "\n";
+    std::string& items = open != nullptr ? open->attachments : blocks_.back().attachments;
+    items += "    - name: " + jsonString(attachment.originalName) +
+             "\n      path: " + jsonString(attachment.path) +
+             "\n      description: " + jsonString(attachment.description) +
+             "\n      contentType: " + jsonString(attachment.contentType()) +
+             "\n      size: " + std::to_string(attachment.size) + "\n";
 }
 
 void TapReporter::addOutput(const Test* test, const std::string& text) {

@@ -47,6 +47,7 @@ private:
         std::size_t points = 0;
         bool failed = false;
         std::vector<TestMessage> fixtureProblems;
+        std::string attachments;  // its fixtures' (YAML list items), with its point
     };
     // A test between its start and end, found by its id, not by order, pointer or name.
     struct OpenTest {

@@ -344,6 +344,21 @@ void RunView::addOutput(std::uint64_t id, const std::string& text) {
     publishTest(suiteIndex, index);
 }
 
+void RunView::addMeasurement(std::uint64_t id, MeasurementView measurement) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t suiteIndex = none;
+    std::size_t index = none;
+    if (!findOpen(id, suiteIndex, index)) {
+        return;
+    }
+    TestView& test = suites_[suiteIndex].tests[index];
+    // Capped as messages are: each change re-sends the test.
+    if (test.measurements.size() < maxMessages) {
+        test.measurements.push_back(std::move(measurement));
+        publishTest(suiteIndex, index);
+    }
+}
+
 void RunView::close() {
     std::lock_guard<std::mutex> lock(mutex_);
     closed_ = true;
@@ -358,6 +373,8 @@ void RunView::addAttachment(std::uint64_t id, AttachmentView attachment) {
     std::size_t test = none;
     if (findOpen(id, suite, test)) {
         attachment.test = suites_[suite].tests[test].name;
+    } else if (openSuite_ != none && attachment.test.empty()) {
+        attachment.test = suites_[openSuite_].name;  // a fixture's (a process's log)
     }
     log("[attachment] " + attachment.test + ": " + attachment.name);
     if (attachments_.size() < maxAttachments) {
@@ -433,6 +450,23 @@ Json toJson(const RunView::TestView& test) {
     }
     if (!test.history.empty()) {
         json["history"] = Json::parse(test.history, nullptr, false);
+    }
+    if (!test.measurements.empty()) {
+        Json list = Json::array();
+        for (const auto& measured : test.measurements) {
+            Json item = {{"name", measured.name},
+                         {"value", measured.value},
+                         {"unit", measured.unit},
+                         {"passed", measured.passed}};
+            if (measured.low) {
+                item["low"] = *measured.low;
+            }
+            if (measured.high) {
+                item["high"] = *measured.high;
+            }
+            list.push_back(std::move(item));
+        }
+        json["measurements"] = std::move(list);
     }
     return json;
 }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,16 @@ public:
     // The recent runs of the test "SUITE/TEST" (JSON, --history): shown with it once its suite
     // starts.
     void setTestHistory(const std::string& testId, const std::string& json);
+    // The running test `id` measured something: shown beside its trend from --history.
+    struct MeasurementView {
+        std::string name;
+        double value = 0;
+        std::string unit;
+        std::optional<double> low;
+        std::optional<double> high;
+        bool passed = true;
+    };
+    void addMeasurement(std::uint64_t id, MeasurementView measurement);
     // The test `id` attached a file (already copied): listed, with a link served from
     // /attachments/N, once the run has ended.
     struct AttachmentView {
@@ -96,6 +107,7 @@ public:
         std::size_t retries = 0;  // earlier failed attempts
         std::string repetition;   // the id of the repetition it is in; empty when it runs once
         std::string history;      // its recent runs (JSON), when --history gave them
+        std::vector<MeasurementView> measurements;  // in the order measured, capped
     };
 
 private:

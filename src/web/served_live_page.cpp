@@ -126,6 +126,8 @@ void ServedLivePage::addMeasurement(const Test* test, const Measurement& measure
     // Shown as it comes; one outside its limits is followed by the failure that says so.
     view.addMessage(idOf(test), passed ? "measurement" : "measurement outside limits",
                     TestMessage(describeMeasurement(measurement)), TestStatus::Passed);
+    view.addMeasurement(idOf(test), {measurement.name, measurement.value, measurement.unit,
+                                     measurement.low, measurement.high, passed});
 }
 
 void ServedLivePage::addAttachment(const Test* test, const Attachment& attachment) {

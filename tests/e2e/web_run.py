@@ -40,8 +40,8 @@ def quick_test(folder, name, body="exit 0\n"):
 class WebRun:
     """The runner started with the web page on a free port; its output read by a thread."""
 
-    def __init__(self, *args, cwd=None):
-        self.proc = start_runner("-w", "--web-port", "0", "--no-output", *args, cwd=cwd)
+    def __init__(self, *args, cwd=None, env=None):
+        self.proc = start_runner("-w", "--web-port", "0", "--no-output", *args, cwd=cwd, env=env)
         self.lines = queue.Queue()
         self.stdout = []
         self.stderr = []

@@ -7,6 +7,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 #include <thread>
 #include <vector>
@@ -263,3 +264,46 @@ TEST(HistoryTrends, TheListsAreOrderedAndLeaveOutSteadyTests) {
 }
 
 }  // namespace
+
+TEST_F(History, MeasurementsOfTheLastRunsAreReadPerTestWithTheirRunsPlace) {
+    // Three runs; the second of two shards (one key). "s/b" measured nothing.
+    const auto appendMeasured = [&](const std::string& key, double started, double value) {
+        HistoryDatabase database(path_, HistoryDatabase::Mode::Append);
+        HistoryRun run;
+        run.runKey = key;
+        run.started = started;
+        RunAppender appender(database, run);
+        appender.addTest(result("s/a", "passed"));
+        appender.addTest(result("s/b", "passed"));
+        appender.addMeasurement({"s/a", "error", value, "rad", true, 0, true, 0.05});
+        appender.addMeasurement({"s/a", "rate", 100, "Hz", false, 0, false, 0});
+        appender.commit();
+    };
+    appendMeasured("one", 1, 0.01);
+    appendMeasured("two", 2, 0.02);
+    appendMeasured("two", 2.5, 0.03);
+    appendMeasured("three", 3, 0.09);
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+
+    const RecentMeasurements all = recentMeasurements(database, 2, nullptr);
+    EXPECT_EQ(all.runs, 2u);
+    ASSERT_EQ(all.byTest.size(), 1u);
+    const std::vector<MeasuredValue>& a = all.byTest.at("s/a");
+    ASSERT_EQ(a.size(), 6u);
+    EXPECT_EQ(a[0].run, 0u);
+    EXPECT_EQ(a[0].name, "error");
+    EXPECT_DOUBLE_EQ(a[0].value, 0.02);
+    EXPECT_EQ(a[0].unit, "rad");
+    EXPECT_EQ(a[0].low, 0.0);
+    EXPECT_EQ(a[0].high, 0.05);
+    EXPECT_EQ(a[1].name, "rate");
+    EXPECT_FALSE(a[1].low.has_value());
+    EXPECT_FALSE(a[1].high.has_value());
+    EXPECT_EQ(a[2].run, 0u);  // the second shard of the same run
+    EXPECT_DOUBLE_EQ(a[2].value, 0.03);
+    EXPECT_EQ(a[4].run, 1u);
+    EXPECT_DOUBLE_EQ(a[4].value, 0.09);
+
+    const std::set<std::string> onlyB = {"s/b"};
+    EXPECT_TRUE(recentMeasurements(database, 30, &onlyB).byTest.empty());
+}

@@ -79,6 +79,88 @@
         (m.at ? "  [" + m.at + "]" : "")));
     return line;
   };
+  // A test's measurements: a row per name with its last value, its limits, a plot of its values
+  // in this run when it has several (repetitions, retries, the same name measured again) and a
+  // plot of its values in the last runs (--history). Built when the test opens.
+  const limitsText = (m) => m.low !== undefined && m.high !== undefined ?
+      "[" + m.low + ", " + m.high + "]" : m.low !== undefined ? ">= " + m.low :
+      m.high !== undefined ? "<= " + m.high : "";
+  const measurementTable = (t) => {
+    const series = new Map();  // name -> [[measurement, label], ...] in the order measured
+    const add = (m, label) => {
+      if (!series.has(m.name)) series.set(m.name, []);
+      series.get(m.name).push([m, label]);
+    };
+    const attempts = t.attempts || [];
+    attempts.forEach((a, i) => {
+      for (const m of a.measurements || []) {
+        add(m, "attempt " + (i + 1) + (m.rep ? ", repetition " + m.rep : ""));
+      }
+    });
+    for (const m of t.measurements || []) {
+      add(m, [attempts.length ? "attempt " + (attempts.length + 1) : "",
+               m.rep ? "repetition " + m.rep : ""].filter((x) => x).join(", "));
+    }
+    const past = (t.history && t.history.measurements) || [];
+    for (const h of past) if (!series.has(h.name)) series.set(h.name, []);
+    if (!series.size) return null;
+    const trends = window.rtfTrends;
+    const repeated = [...series.values()].some((values) => values.length > 1);
+    const table = el("table", "measures");
+    const head = el("tr");
+    const columns = ["measurement", "value", "unit", "limits", ""];
+    if (repeated) columns.push("this run");
+    if (past.length) columns.push("last runs");
+    for (const h of columns) head.appendChild(el("th", "", h));
+    table.appendChild(head);
+    for (const [name, values] of series) {
+      const last = values.length ? values[values.length - 1][0] : null;
+      const bad = values.filter(([m]) => !m.passed).length;
+      const row = el("tr", "measure" + (bad ? " failing" : ""));
+      row.dataset.name = name;
+      const fromHistory = trends.historySeries(t.history, name);
+      const unit = last ? last.unit : fromHistory.unit;
+      const cells = [name, last ? String(last.value) + (values.length > 1 ? "  (" + values.length +
+                     " values)" : "") : "not measured", unit, last ? limitsText(last) : "",
+                     !last ? "" : bad ? (values.length > 1 ? bad + " outside" : "outside") : "ok"];
+      for (const v of cells) row.appendChild(el("td", "", v));
+      if (repeated) {
+        const cell = el("td", "plot");
+        if (values.length > 1) {
+          cell.appendChild(trends.measurementPlot({ name: name, unit: unit, low: last.low,
+              high: last.high, points: values.map(([m, label]) => ({ value: m.value,
+                  label: label, outside: !m.passed })) }, "repetitions"));
+        }
+        row.appendChild(cell);
+      }
+      if (past.length) {
+        const cell = el("td", "plot");
+        if (fromHistory) cell.appendChild(trends.measurementPlot(fromHistory, "history"));
+        row.appendChild(cell);
+      }
+      table.appendChild(row);
+    }
+    return table;
+  };
+  // Attached files (a test's, or a suite's: its process fixture's logs): links, images inline.
+  const attachmentList = (attachments) => {
+    if (!attachments || !attachments.length) return null;
+    const box = el("div", "attachments");
+    for (const a of attachments) {
+      const one = el("div", "attached");
+      const link = el("a", "", a.name + (a.description ? " \u2014 " + a.description : ""));
+      link.href = a.path;
+      one.appendChild(link);
+      if (/\.(png|jpe?g|svg)$/i.test(a.path)) {
+        const img = el("img");
+        img.src = a.path;
+        img.alt = a.description || a.name;
+        one.appendChild(img);
+      }
+      box.appendChild(one);
+    }
+    return box;
+  };
   const testSections = [
     { name: "identity", render: (t) => {
       const table = el("table");
@@ -111,40 +193,8 @@
       for (const m of t.messages) box.appendChild(messageLine(m));
       return box;
     } },
-    { name: "measurements", render: (t) => {
-      if (!t.measurements || !t.measurements.length) return null;
-      const table = el("table", "measures");
-      const head = el("tr");
-      for (const h of ["measurement", "value", "unit", "limits", ""]) head.appendChild(el("th", "", h));
-      table.appendChild(head);
-      for (const m of t.measurements) {
-        const row = el("tr", m.passed ? "" : "failing");
-        const limits = m.low !== undefined && m.high !== undefined ? "[" + m.low + ", " + m.high + "]"
-            : m.low !== undefined ? ">= " + m.low : m.high !== undefined ? "<= " + m.high : "";
-        for (const v of [m.name + (m.rep ? " #" + m.rep : ""), String(m.value), m.unit, limits,
-                         m.passed ? "ok" : "outside"]) row.appendChild(el("td", "", v));
-        table.appendChild(row);
-      }
-      return table;
-    } },
-    { name: "attachments", render: (t) => {
-      if (!t.attachments || !t.attachments.length) return null;
-      const box = el("div");
-      for (const a of t.attachments) {
-        const one = el("div", "attached");
-        const link = el("a", "", a.name + (a.description ? " \u2014 " + a.description : ""));
-        link.href = a.path;
-        one.appendChild(link);
-        if (/\.(png|jpe?g|svg)$/i.test(a.path)) {
-          const img = el("img");
-          img.src = a.path;
-          img.alt = a.description || a.name;
-          one.appendChild(img);
-        }
-        box.appendChild(one);
-      }
-      return box;
-    } },
+    { name: "measurements", render: (t) => measurementTable(t) },
+    { name: "attachments", render: (t) => attachmentList(t.attachments) },
     { name: "attempts", render: (t) => {
       if (!t.attempts || !t.attempts.length) return null;
       const box = el("div");
@@ -184,7 +234,7 @@
     head.appendChild(el("span", "state " + colour(t.state), t.state));
     head.appendChild(el("span", "name", t.shown ? t.name + " (" + t.shown + ")" : t.name));
     for (const tag of t.tags || []) head.appendChild(el("span", "tag", tag));
-    if (t.history && window.rtfHistoryStrip) head.appendChild(window.rtfHistoryStrip(t.history));
+    if (t.history) head.appendChild(window.rtfTrends.historyStrip(t.history));
     head.appendChild(el("span", "time", secs(t.duration)));
     head.appendChild(el("span", "start", at(t.start)));
     // Why it failed, in the row itself: no click needed.
@@ -227,6 +277,11 @@
       list.appendChild(messages);
     }
     if (suite.output) list.appendChild(el("pre", "", suite.output));
+    const attached = attachmentList(suite.attachments);
+    if (attached) {
+      attached.classList.add("suite-attachments");
+      list.appendChild(attached);
+    }
     const shown = ordered(suite.tests.filter((t) => matches(suite, t)));
     let next = 0;
     const more = el("button", "", "");

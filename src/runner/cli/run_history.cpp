@@ -4,7 +4,10 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <map>
 #include <set>
+
+#include <robottestingframework/Measurement.h>
 
 #include "runner/cli/program_name.h"
 #include "runner/history/collected_run.h"
@@ -20,9 +23,36 @@ namespace runner {
 
 namespace {
 
-// The strips of the last `runs` runs, of the tests in `only` (of every test when null).
+// Each measurement of `values` (a test's, oldest run first) as a trend per name, in the order
+// first measured. `newest` runs ago is the newest run read.
+std::vector<reporters::MeasurementTrend> trendsOf(const std::vector<MeasuredValue>& values,
+                                                  std::size_t runs, unsigned int newest) {
+    std::vector<reporters::MeasurementTrend> trends;
+    std::map<std::string, std::size_t> places;
+    for (const MeasuredValue& value : values) {
+        const auto place = places.emplace(value.name, trends.size());
+        if (place.second) {
+            trends.emplace_back();
+            trends.back().name = value.name;
+        }
+        reporters::MeasurementTrend& trend = trends[place.first->second];
+        Measurement measured{value.name, value.value, value.unit, value.low, value.high};
+        if (!measured.withinLimits()) {
+            trend.outside.push_back(trend.values.size());
+        }
+        trend.values.push_back(value.value);
+        trend.runsAgo.push_back(static_cast<unsigned int>(runs - 1 - value.run) + newest);
+        trend.unit = value.unit;
+        trend.low = value.low;
+        trend.high = value.high;
+    }
+    return trends;
+}
+
+// The strips of the last `runs` runs, of the tests in `only` (of every test when null); the
+// newest run read is `newest` runs ago (0: this run).
 reporters::HistoryStrips readStrips(HistoryDatabase& database, unsigned int runs,
-                                    const std::set<std::string>* only) {
+                                    const std::set<std::string>* only, unsigned int newest) {
     reporters::HistoryStrips strips;
     for (const TestHistory& history : recentHistories(database, runs)) {
         if (only != nullptr && only->count(history.test) == 0) {
@@ -34,6 +64,11 @@ reporters::HistoryStrips readStrips(HistoryDatabase& database, unsigned int runs
             strip.durations.push_back(entry.duration);
         }
         strip.flakyRate = flakyRate(history);
+    }
+    // Only the tests that measured something get trends (10 000 tests without: no cost).
+    const RecentMeasurements measured = recentMeasurements(database, runs, only);
+    for (const auto& test : measured.byTest) {
+        strips[test.first].measurements = trendsOf(test.second, measured.runs, newest);
     }
     return strips;
 }
@@ -53,7 +88,7 @@ RunHistory::RunHistory(std::string path, HistoryRun run)
 reporters::HistoryStrips RunHistory::earlierStrips() const {
     try {
         HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
-        return readStrips(database, shownRuns - 1, nullptr);
+        return readStrips(database, shownRuns - 1, nullptr, 1);
     } catch (const HistoryError&) {
         return {};  // no file yet: nothing to show (a damaged one was refused at the start)
     }
@@ -81,7 +116,7 @@ bool RunHistory::record(const TestResultCollector& collector, std::FILE* console
             }
         }
         HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
-        *strips_ = readStrips(database, shownRuns, &ran);
+        *strips_ = readStrips(database, shownRuns, &ran, recorded ? 0 : 1);
     } catch (const HistoryError& e) {
         if (recorded) {
             std::fprintf(console, "%s: warning: cannot read the history back: %s\n", programName,

@@ -15,17 +15,42 @@ std::size_t countRuns(HistoryDatabase& database) {
     return count.step() ? static_cast<std::size_t>(count.integer(0)) : 0;
 }
 
-std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int runs) {
-    // A run is its key: the rows of its shards; runs are ordered by their first shard's start.
+namespace {
+
+struct RunRow {
+    std::int64_t row;   // runs.id
+    std::size_t place;  // the run's place among the runs read, from 0 (the oldest)
+};
+
+// The rows of the last `runs` runs, oldest run first. A run is its key: the rows of its
+// shards; runs are ordered by their first shard's start.
+std::vector<RunRow> recentRunRows(HistoryDatabase& database, unsigned int runs) {
     SqliteStatement recent(database.handle(),
-                           "SELECT u.id FROM (SELECT run_key, min(started) AS first FROM runs "
-                           "GROUP BY run_key ORDER BY first DESC, run_key LIMIT ?) k "
+                           "SELECT u.id, u.run_key FROM (SELECT run_key, min(started) AS first "
+                           "FROM runs GROUP BY run_key ORDER BY first DESC, run_key LIMIT ?) k "
                            "JOIN runs u ON u.run_key = k.run_key ORDER BY k.first, k.run_key, u.id",
                            database.path());
     recent.bind(1, static_cast<std::int64_t>(runs));
-    std::vector<std::int64_t> rows;
+    std::vector<RunRow> rows;
+    std::string previousKey;
+    std::size_t place = 0;
     while (recent.step()) {
-        rows.push_back(recent.integer(0));
+        const std::string key = recent.text(1);
+        if (!rows.empty() && key != previousKey) {
+            ++place;
+        }
+        previousKey = key;
+        rows.push_back({recent.integer(0), place});
+    }
+    return rows;
+}
+
+}  // namespace
+
+std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int runs) {
+    std::vector<std::int64_t> rows;
+    for (const RunRow& run : recentRunRows(database, runs)) {
+        rows.push_back(run.row);
     }
     // One run at a time, from the covering index: no sort of every row.
     SqliteStatement results(database.handle(),
@@ -51,6 +76,51 @@ std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int
     std::sort(histories.begin(), histories.end(),
               [](const TestHistory& a, const TestHistory& b) { return a.test < b.test; });
     return histories;
+}
+
+RecentMeasurements recentMeasurements(HistoryDatabase& database, unsigned int runs,
+                                      const std::set<std::string>* only) {
+    RecentMeasurements found;
+    const std::vector<RunRow> rows = recentRunRows(database, runs);
+    found.runs = rows.empty() ? 0 : rows.back().place + 1;
+    // One run at a time, from its index; each test's name looked up once.
+    SqliteStatement values(database.handle(),
+                           "SELECT test, name, value, unit, low, high FROM measurements "
+                           "WHERE run = ? ORDER BY rowid",
+                           database.path());
+    SqliteStatement name(database.handle(), "SELECT name FROM tests WHERE id = ?", database.path());
+    std::unordered_map<std::int64_t, std::vector<MeasuredValue>*> places;  // null: not wanted
+    for (const RunRow& run : rows) {
+        values.reset();
+        values.bind(1, run.row);
+        while (values.step()) {
+            auto place = places.find(values.integer(0));
+            if (place == places.end()) {
+                name.reset();
+                name.bind(1, values.integer(0));
+                const std::string test = name.step() ? name.text(0) : std::string();
+                const bool wanted = only == nullptr || only->count(test) > 0;
+                place =
+                    places.emplace(values.integer(0), wanted ? &found.byTest[test] : nullptr).first;
+            }
+            if (place->second == nullptr) {
+                continue;
+            }
+            MeasuredValue value;
+            value.run = run.place;
+            value.name = values.text(1);
+            value.value = values.real(2);
+            value.unit = values.text(3);
+            if (!values.isNull(4)) {
+                value.low = values.real(4);
+            }
+            if (!values.isNull(5)) {
+                value.high = values.real(5);
+            }
+            place->second->push_back(std::move(value));
+        }
+    }
+    return found;
 }
 
 std::map<std::string, double> latestSuiteSeconds(HistoryDatabase& database) {

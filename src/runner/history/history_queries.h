@@ -3,6 +3,8 @@
 #pragma once
 
 #include <map>
+#include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -22,12 +24,33 @@ struct TestHistory {
     std::vector<TestHistoryEntry> runs;  // oldest first
 };
 
+// A value a test measured in one of the runs read (recentMeasurements).
+struct MeasuredValue {
+    std::size_t run = 0;  // the run's place among the runs read, from 0 (the oldest)
+    std::string name;
+    double value = 0;
+    std::string unit;
+    std::optional<double> low;
+    std::optional<double> high;
+};
+
+struct RecentMeasurements {
+    std::size_t runs = 0;  // how many runs were read
+    // Test id -> its values, oldest run first, in the order measured within a run.
+    std::map<std::string, std::vector<MeasuredValue>> byTest;
+};
+
 // The number of runs the history holds (a run's shards count once).
 std::size_t countRuns(HistoryDatabase& database);
 
 // Every test of the last `runs` runs, each with its entries oldest first, in the order of the
 // tests' ids. Throws HistoryError.
 std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int runs);
+
+// The measurements of the last `runs` runs, of the tests in `only` (every test's when null):
+// only the tests that measured something have an entry. Throws HistoryError.
+RecentMeasurements recentMeasurements(HistoryDatabase& database, unsigned int runs,
+                                      const std::set<std::string>* only);
 
 // Each suite's time (seconds, fixtures included) in the latest run that has it.
 std::map<std::string, double> latestSuiteSeconds(HistoryDatabase& database);

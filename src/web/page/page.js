@@ -67,13 +67,53 @@ function messagesList(messages, hidden) {
   return list;
 }
 
+// Each measurement of the test: its latest value and a plot of its values in the last runs
+// (--history) followed by this run's, ringed. Only for tests that measured something, now or
+// in the history.
+function measurementsTable(test) {
+  const now = new Map();  // name -> this run's values, in the order measured
+  for (const m of test.measurements || []) {
+    if (!now.has(m.name)) now.set(m.name, []);
+    now.get(m.name).push(m);
+  }
+  const past = (test.history && test.history.measurements) || [];
+  for (const h of past) if (!now.has(h.name)) now.set(h.name, []);
+  if (!now.size) return null;
+  const trends = window.rtfTrends;
+  const table = element("table", "measures");
+  for (const [name, values] of now) {
+    const last = values[values.length - 1];
+    const history = trends.historySeries(test.history, name);
+    const row = element("tr", "measure" + (values.some((m) => !m.passed) ? " state-failed" : ""));
+    row.dataset.name = name;
+    const unit = last ? last.unit : history.unit;
+    row.appendChild(element("td", "measure-name", name));
+    row.appendChild(element("td", "measure-value", last ? last.value + (unit ? " " + unit : "")
+        : "not measured yet"));
+    const plot = element("td", "plot");
+    const points = (history ? history.points : []).concat(values.map((m) => ({
+      value: m.value, current: true, outside: !m.passed, label: "this run" })));
+    if (points.length > 1) {
+      plot.appendChild(trends.measurementPlot({ name: name, unit: unit,
+          low: last ? last.low : history.low, high: last ? last.high : history.high,
+          points: points }, "history"));
+    }
+    row.appendChild(plot);
+    table.appendChild(row);
+  }
+  return table;
+}
+
 function testRow(test) {
   const row = element("tr", "test");
   row.dataset.state = test.state;
   row.appendChild(element("td", stateClass(test.state), test.state));
   const name = element("td", "name");
   name.appendChild(element("span", "test-name", test.name));
-  if (test.history) name.appendChild(historyStrip(test.history));
+  // --history: its recent runs (trends.js, as the HTML report draws them).
+  if (test.history) name.appendChild(window.rtfTrends.historyStrip(test.history));
+  const measured = measurementsTable(test);
+  if (measured) name.appendChild(measured);
   if ((test.messages && test.messages.length) || test.hiddenReports > 0) {
     name.appendChild(messagesList(test.messages, test.hiddenReports));
   }
@@ -284,31 +324,3 @@ async function start() {
 }
 
 start();
-
-// --history: the test's recent runs as a strip of states, a sparkline of their times and its
-// flaky rate (the HTML report draws the same).
-function historyStrip(history) {
-  const box = element("span", "history");
-  box.title = "last " + history.states.length + " runs";
-  const cells = element("span", "cells");
-  history.states.forEach((state, i) => {
-    const cell = element("span", "cell " + stateClass(state));
-    cell.title = state + " (" + seconds(history.durations[i]) + ")";
-    cells.appendChild(cell);
-  });
-  box.appendChild(cells);
-  const times = history.durations;
-  if (times.length > 1) {
-    const ns = "http://www.w3.org/2000/svg";
-    const svg = document.createElementNS(ns, "svg");
-    svg.setAttribute("viewBox", "0 0 60 14");
-    const top = Math.max(...times) || 1;
-    const line = document.createElementNS(ns, "polyline");
-    line.setAttribute("points", times.map((t, i) =>
-      (60 * i / (times.length - 1)).toFixed(1) + "," + (13 - 12 * t / top).toFixed(1)).join(" "));
-    svg.appendChild(line);
-    box.appendChild(svg);
-  }
-  box.appendChild(element("span", "flaky-rate", "flaky " + Math.round(100 * history.flakyRate) + "%"));
-  return box;
-}
