@@ -101,10 +101,11 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
 }
 
 // `text` with each line indented, added to `out` (a suite's body, into its parent's: no copy
-// of its own, the body being most of the report).
-void appendIndented(std::string& out, const std::string& text) {
+// of its own, the body being most of the report), with room for `more` bytes after it: the
+// lines that close the suite must not make `out` grow again, which would copy it once more.
+void appendIndented(std::string& out, const std::string& text, std::size_t more) {
     const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-    out.reserve(out.size() + text.size() + 4 * (lines + 1));
+    out.reserve(out.size() + text.size() + 4 * (lines + 1) + more);
     std::size_t begin = 0;
     while (begin < text.size()) {
         std::size_t end = text.find('\n', begin);
@@ -152,7 +153,7 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     Block& parent = blocks.back();
     const std::string name = description(suite.name.empty() ? "unnamed suite" : suite.name);
     parent.body += "# Subtest: " + name + "\n";
-    appendIndented(parent.body, suite.body);
+    appendIndented(parent.body, suite.body, 2 * name.size() + 128);
     suite.body = std::string();
     parent.body += "    1.." + std::to_string(suite.points) + "\n";
     const std::string number = std::to_string(++parent.points);
