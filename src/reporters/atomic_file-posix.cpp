@@ -42,40 +42,6 @@ std::string followLinks(const std::string& path) {
     return target;
 }
 
-// A FIFO or a device (/dev/stdout, /dev/null) is written as it is, never replaced.
-bool writeThrough(const std::string& filename, const std::string& target,
-                  const std::string& content, std::string& error) {
-    // Without O_NONBLOCK, opening a FIFO nobody reads would wait for ever.
-    const int fd = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-    if (fd < 0) {
-        const int code = errno;
-        error = "cannot write " + filename + ": " +
-                (code == ENXIO ? std::string("no process reads this FIFO")
-                               : std::string(std::strerror(code)));
-        return false;
-    }
-    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
-    std::size_t done = 0;
-    while (done < content.size()) {
-        const ssize_t wrote = ::write(fd, content.data() + done, content.size() - done);
-        if (wrote < 0 && errno == EINTR) {
-            continue;
-        }
-        if (wrote <= 0) {
-            const int code = wrote < 0 ? errno : EIO;
-            ::close(fd);
-            error = "cannot write " + filename + ": " + std::strerror(code);
-            return false;
-        }
-        done += static_cast<std::size_t>(wrote);
-    }
-    if (::close(fd) != 0 && errno != EINTR) {
-        error = "cannot write " + filename + ": " + std::strerror(errno);
-        return false;
-    }
-    return true;
-}
-
 }  // namespace
 
 std::string notAnOutputFile(const std::string& filename) {
@@ -92,36 +58,117 @@ std::string notAnOutputFile(const std::string& filename) {
            "; an output is a file (or a FIFO or a character device, written through)";
 }
 
-bool writeFileAtomically(const std::string& filename, const std::string& content,
-                         std::string& error) {
+AtomicFile::~AtomicFile() {
+    discard();
+}
+
+void AtomicFile::discard() {
+    if (fd_ >= 0) {
+        ::close(fd_);
+        fd_ = -1;
+    }
+    if (!temporary_.empty()) {
+        std::remove(temporary_.c_str());
+        temporary_.clear();
+    }
+}
+
+bool AtomicFile::open(const std::string& filename, std::string& error) {
+    discard();
+    filename_ = filename;
+    writeErrno_ = 0;
     const std::string target = followLinks(filename);
     struct stat info {};
     if (::stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
-        if (S_ISFIFO(info.st_mode) || S_ISCHR(info.st_mode)) {
-            return writeThrough(filename, target, content, error);
+        if (!S_ISFIFO(info.st_mode) && !S_ISCHR(info.st_mode)) {
+            error = "cannot write " + notAnOutputFile(target);
+            return false;
         }
-        error = "cannot write " + notAnOutputFile(target);
+        // A FIFO or a device (/dev/stdout, /dev/null) is written as it is, never replaced.
+        // Without O_NONBLOCK, opening a FIFO nobody reads would wait for ever.
+        fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+        if (fd_ < 0) {
+            const int code = errno;
+            error = "cannot write " + filename + ": " +
+                    (code == ENXIO ? std::string("no process reads this FIFO")
+                                   : std::string(std::strerror(code)));
+            return false;
+        }
+        ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
+        return true;
+    }
+    target_ = target;
+    temporary_ = target + ".tmp." + std::to_string(::getpid());
+    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (fd_ < 0) {
+        const int code = errno;
+        temporary_.clear();  // not ours: nothing to remove
+        error = "cannot write " + filename + ": " + std::strerror(code);
         return false;
-    }
-    const std::string temporary = target + ".tmp." + std::to_string(::getpid());
-    auto fail = [&](const std::string& what, int code) {
-        error = "cannot " + what + " " + filename + ": " + std::strerror(code);
-        std::remove(temporary.c_str());
-        return false;
-    };
-    std::FILE* file = std::fopen(temporary.c_str(), "wb");
-    if (file == nullptr) {
-        return fail("write", errno);
-    }
-    const bool written = std::fwrite(content.data(), 1, content.size(), file) == content.size();
-    const int writeErrno = errno;
-    if (std::fclose(file) != 0 || !written) {
-        return fail("write", written ? errno : writeErrno);
-    }
-    if (std::rename(temporary.c_str(), target.c_str()) != 0) {
-        return fail("rename a temporary file to", errno);
     }
     return true;
+}
+
+bool AtomicFile::write(const char* data, std::size_t size) {
+    if (fd_ < 0 || writeErrno_ != 0) {
+        return false;
+    }
+    std::size_t done = 0;
+    while (done < size) {
+        const ssize_t wrote = ::write(fd_, data + done, size - done);
+        if (wrote < 0 && errno == EINTR) {
+            continue;
+        }
+        if (wrote <= 0) {
+            writeErrno_ = wrote < 0 ? errno : EIO;
+            return false;
+        }
+        done += static_cast<std::size_t>(wrote);
+    }
+    return true;
+}
+
+bool AtomicFile::commit(std::string& error) {
+    if (fd_ < 0) {
+        error = "cannot write " + filename_ + ": " + std::strerror(EBADF);
+        return false;
+    }
+    int code = writeErrno_;
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0 && errno != EINTR && code == 0) {
+        code = errno;
+    }
+    if (code != 0) {
+        error = "cannot write " + filename_ + ": " + std::strerror(code);
+        discard();
+        return false;
+    }
+    if (!temporary_.empty() && std::rename(temporary_.c_str(), target_.c_str()) != 0) {
+        error = "cannot rename a temporary file to " + filename_ + ": " + std::strerror(errno);
+        discard();
+        return false;
+    }
+    temporary_.clear();
+    return true;
+}
+
+bool writeFileAtomically(const std::string& filename, const std::string& content,
+                         std::string& error) {
+    AtomicFile file;
+    if (!file.open(filename, error)) {
+        return false;
+    }
+    file.write(content.data(), content.size());
+    return file.commit(error);
+}
+
+void reportWriteError(const std::string& why, TestMessage* error) {
+    if (error != nullptr) {
+        error->setMessage(why);
+    } else {
+        std::fprintf(stderr, "robottestingframework: %s\n", why.c_str());
+    }
 }
 
 bool writeReport(const std::string& filename, const std::string& content, TestMessage* error) {
@@ -129,11 +176,7 @@ bool writeReport(const std::string& filename, const std::string& content, TestMe
     if (writeFileAtomically(filename, content, why)) {
         return true;
     }
-    if (error != nullptr) {
-        error->setMessage(why);
-    } else {
-        std::fprintf(stderr, "robottestingframework: %s\n", why.c_str());
-    }
+    reportWriteError(why, error);
     return false;
 }
 

@@ -4,6 +4,7 @@
 // a regular file (a folder, a socket) is refused.
 #pragma once
 
+#include <cstddef>
 #include <string>
 
 #include <robottestingframework/TestMessage.h>
@@ -15,6 +16,32 @@ namespace reporters {
 // else "FILE is a folder; ..." for the runner to refuse before the run.
 std::string notAnOutputFile(const std::string& filename);
 
+// A file written a block at a time, whole or not at all: open() creates a temporary file
+// beside it (or opens the FIFO or device it is), write() adds to it, commit() renames the
+// temporary file into place. Dropped without commit(), it leaves nothing behind. Errors name
+// the file and give the system's reason.
+class AtomicFile {
+public:
+    AtomicFile() = default;
+    ~AtomicFile();
+    AtomicFile(const AtomicFile&) = delete;
+    AtomicFile& operator=(const AtomicFile&) = delete;
+
+    bool open(const std::string& filename, std::string& error);
+    // False once a write failed; commit() then says why.
+    bool write(const char* data, std::size_t size);
+    bool commit(std::string& error);
+
+private:
+    void discard();
+
+    std::string filename_;
+    std::string target_;     // the file the temporary one replaces
+    std::string temporary_;  // empty: a FIFO or a device, written through
+    int fd_ = -1;
+    int writeErrno_ = 0;
+};
+
 // On failure returns false, leaves no file behind and puts the file name and the system's
 // reason in `error`.
 bool writeFileAtomically(const std::string& filename, const std::string& content,
@@ -23,6 +50,9 @@ bool writeFileAtomically(const std::string& filename, const std::string& content
 // What the outputters' write() does: the same, with the reason in `error` when given, on
 // stderr otherwise.
 bool writeReport(const std::string& filename, const std::string& content, TestMessage* error);
+
+// How writeReport() tells `why` it could not write: into `error` when given, else on stderr.
+void reportWriteError(const std::string& why, TestMessage* error);
 
 }  // namespace reporters
 }  // namespace robottestingframework

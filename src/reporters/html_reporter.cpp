@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <string_view>
 
 #include "reporters/history_strip.h"
 #include "reporters/html_page_assets.h"
@@ -201,6 +202,12 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
 // One suite's data: its times (the fixture's setup runs from its start to its first test's,
 // its teardown from its last test's end to its own), its messages and its tests.
 std::string HtmlReporter::suiteData(const SuiteRecord& suite) const {
+    WholeReportText text;
+    writeSuiteData(text, suite);
+    return text.take();
+}
+
+void HtmlReporter::writeSuiteData(ReportText& text, const SuiteRecord& suite) const {
     double firstStart = suite.start + suite.duration;
     double lastEnd = suite.start;
     for (const TestRecord& test : suite.tests) {
@@ -234,16 +241,19 @@ std::string HtmlReporter::suiteData(const SuiteRecord& suite) const {
         out += ",\"output\":" + jsonString(capped(suite.output, cut));
     }
     out += ",\"tests\":[";
+    text += out;
     bool firstTest = true;
     for (const TestRecord& test : suite.tests) {
-        out += firstTest ? "\n" : ",\n";
+        text += firstTest ? "\n" : ",\n";
         firstTest = false;
-        out += testData(test, suite);
+        text += testData(test, suite);
     }
-    return out + "]}";
+    text += "]}";
 }
 
-std::string HtmlReporter::document() {
+// The page around the data, the data written into it a test at a time: the runner hands it on
+// to the file as it goes.
+void HtmlReporter::writeDocument(ReportText& out) {
     const std::time_t started = std::chrono::system_clock::to_time_t(collector_.startedAt());
     std::tm utc{};
     gmtime_r(&started, &utc);
@@ -268,20 +278,28 @@ std::string HtmlReporter::document() {
             "," + jsonString(toString(status)) + ":" + std::to_string(collector_.countOf(status));
     }
     data += "},\"suites\":[";
-    bool firstSuite = true;
-    for (const SuiteRecord& suite : collector_.suites()) {
-        data += firstSuite ? "\n" : ",\n";
-        firstSuite = false;
-        data += suiteData(suite);
-    }
-    data += "]}";
 
-    // The style and script first: the data, test text, may hold anything, "@REPORT_JS@" too.
+    // The style and script first; the data, test text that may hold anything ("@REPORT_JS@"
+    // too), goes where "@REPORT_DATA@" is and is never searched.
     std::string page = htmlReportPage();
     fill(page, "REPORT_CSS", htmlReportStyle());
     fill(page, "REPORT_JS", htmlReportScript());
-    fill(page, "REPORT_DATA", data);
-    return page;
+    const std::string mark = "@REPORT_DATA@";
+    const std::size_t at = page.find(mark);
+    if (at == std::string::npos) {
+        out += page;
+        return;
+    }
+    out += std::string_view(page).substr(0, at);
+    out += data;
+    bool firstSuite = true;
+    for (const SuiteRecord& suite : collector_.suites()) {
+        out += firstSuite ? "\n" : ",\n";
+        firstSuite = false;
+        writeSuiteData(out, suite);
+    }
+    out += "]}";
+    out += std::string_view(page).substr(at + mark.size());
 }
 
 }  // namespace reporters

@@ -18,10 +18,11 @@ namespace reporters {
 class HtmlReporter : public CumulativeReporter {
 public:
     using CumulativeReporter::CumulativeReporter;
-    std::string document() override;
+    void writeDocument(ReportText& out) override;
     // The JSON the page reads for one test and one suite (with its tests).
     std::string testData(const TestRecord& test, const SuiteRecord& suite) const;
     std::string suiteData(const SuiteRecord& suite) const;
+    void writeSuiteData(ReportText& out, const SuiteRecord& suite) const;
 
     // What a test printed is cut to this many bytes in the page, with a note saying so.
     static constexpr std::size_t outputCap = 64 * 1024;

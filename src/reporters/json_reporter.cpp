@@ -128,7 +128,7 @@ std::string measurementsOf(const std::vector<ResultEvent>& events) {
 // `testId` is the test's place in the run ("suite.test", from 1): the same in every run of
 // the same suites, and apart for two tests of one name. `executionId` is the id its events
 // carried in this run.
-void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& suite,
+void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suite,
                 const std::string& testId, long long origin, bool passedChecks) {
     const long long start = origin + milliseconds(test.start);
     out += "{\"testId\":\"" + testId + "\"";
@@ -242,14 +242,13 @@ void appendTest(std::string& out, const TestRecord& test, const SuiteRecord& sui
 
 }  // namespace
 
-// Written into one string, front to back: a run of 10 000 tests holds one copy of its report.
-std::string JsonReporter::document() {
+// Written front to back, a test at a time: the runner hands it on to the file as it goes.
+void JsonReporter::writeDocument(ReportText& out) {
     const long long origin = std::chrono::duration_cast<std::chrono::milliseconds>(
                                  collector_.startedAt().time_since_epoch())
                                  .count();
     const long long stop = origin + milliseconds(collector_.duration());
     const std::size_t other = collector_.countOf(TestStatus::Interrupted);
-    std::string out;
     out += "{\"reportFormat\":\"CTRF\",\"specVersion\":\"0.0.0\"";
     out += ",\"timestamp\":\"" + rfc3339(origin) + "\"";
     out += ",\"generatedBy\":\"robottestingframework-testrunner\"";
@@ -321,7 +320,6 @@ std::string JsonReporter::document() {
     }
     out += "}}";
     out += "}}\n";
-    return out;
 }
 
 }  // namespace reporters

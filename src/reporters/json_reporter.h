@@ -12,7 +12,7 @@ namespace reporters {
 class JsonReporter : public CumulativeReporter {
 public:
     using CumulativeReporter::CumulativeReporter;
-    std::string document() override;
+    void writeDocument(ReportText& out) override;
 };
 
 }  // namespace reporters

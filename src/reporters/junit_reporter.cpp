@@ -197,7 +197,7 @@ void appendAttempt(std::string& inner, const char* element, const TestAttempt& a
     inner += std::string("      </") + element + ">\n";
 }
 
-void appendTestCase(std::string& out, const TestRecord& test, const std::string& suiteName,
+void appendTestCase(ReportText& out, const TestRecord& test, const std::string& suiteName,
                     bool passedChecks) {
     out += "    <testcase";
     // classname/name is the test's id (README: "Test ids"), so CI history follows a test
@@ -280,24 +280,20 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
 
 }  // namespace
 
-// Written into one string, front to back (the counts are known before the elements they head):
-// a run of 10 000 tests must not hold several copies of its report at once.
-std::string JUnitReporter::document() {
+// Written front to back (the counts are known before the elements they head), a test at a time:
+// the runner hands it on to the file as it goes.
+void JUnitReporter::writeDocument(ReportText& out) {
     const bool passedChecks = settings_.passedChecks;
     const std::string host = hostname();
     Counts total;
     double totalTime = 0;
-    std::size_t testCount = 0;
     for (const SuiteRecord& suite : collector_.suites()) {
         const Counts counts = countsOf(suite);
         total.tests += counts.tests;
         total.failures += counts.failures;
         total.errors += counts.errors;
         totalTime += suite.duration;
-        testCount += suite.tests.size();
     }
-    std::string out;
-    out.reserve(512 + testCount * 160);  // a passing test's element is about that long
     out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites";
     out += attr("name", "RobotTestingFramework");
     out += attr("tests", std::to_string(total.tests));
@@ -358,7 +354,6 @@ std::string JUnitReporter::document() {
         out += "  </testsuite>\n";
     }
     out += "</testsuites>\n";
-    return out;
 }
 
 }  // namespace reporters

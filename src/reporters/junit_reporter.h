@@ -10,7 +10,7 @@ namespace reporters {
 class JUnitReporter : public CumulativeReporter {
 public:
     using CumulativeReporter::CumulativeReporter;
-    std::string document() override;
+    void writeDocument(ReportText& out) override;
 };
 
 }  // namespace reporters

@@ -1,13 +1,14 @@
 // The one interface every output format stands on. A reporter hears the run's events (it is a
-// TestListener) and, at the end, gives its whole file. Two bases, as Catch2 has them:
-// StreamingReporter builds its text as events arrive (TAP); CumulativeReporter writes from the
-// collector's finished records (text, JUnit, JSON, HTML).
+// TestListener) and, at the end, writes its whole file front to back. Two bases, as Catch2 has
+// them: StreamingReporter builds its text as events arrive (TAP); CumulativeReporter writes from
+// the collector's finished records (text, JUnit, JSON, HTML).
 #pragma once
 
 #include <cstddef>
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -58,12 +59,52 @@ struct ReporterSettings {
     std::shared_ptr<const HistoryStrips> history;
 };
 
+// A report's text as a reporter writes it, front to back: kept whole (Reporter::document()), or
+// handed on to its file a block at a time (Reporter::write()), so that the runner never holds a
+// whole report of 10 000 tests (several MiB, more with measurements) beside its records.
+class ReportText {
+public:
+    virtual ~ReportText() = default;
+    ReportText& operator+=(std::string_view text) {
+        if (text_.size() + text.size() < handOnAt_) {
+            text_.append(text.data(), text.size());
+        } else {
+            handOn(text);
+        }
+        return *this;
+    }
+    ReportText& operator+=(char c) { return *this += std::string_view(&c, 1); }
+
+protected:
+    explicit ReportText(std::size_t handOnAt) : handOnAt_(handOnAt) {}
+    // Passes on text_, then `more` (not copied into text_ when it is long), and empties text_.
+    virtual void handOn(std::string_view more) = 0;
+
+    std::string text_;
+
+private:
+    std::size_t handOnAt_;
+};
+
+// All of a report's text, kept in one string.
+class WholeReportText : public ReportText {
+public:
+    WholeReportText() : ReportText(static_cast<std::size_t>(-1)) {}
+    std::string take() { return std::move(text_); }
+
+protected:
+    void handOn(std::string_view more) override { text_.append(more.data(), more.size()); }
+};
+
 class Reporter : public TestListener {
 public:
-    // The file's whole content as things stand. Called once the run is over, or cut short (then
-    // with what is known: tests still open show as interrupted).
-    virtual std::string document() = 0;
-    // Writes document() whole or not at all; on failure false, with `error` naming the file.
+    // Writes the file's whole content, as things stand, into `out`. Called once the run is
+    // over, or cut short (then with what is known: tests still open show as interrupted).
+    virtual void writeDocument(ReportText& out) = 0;
+    // The file's whole content in one string.
+    std::string document();
+    // Writes the document whole or not at all, a block at a time; on failure false, with
+    // `error` naming the file.
     bool write(const std::string& filename, TestMessage* error);
 };
 

@@ -100,8 +100,12 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     return text;
 }
 
-std::string indented(const std::string& text) {
-    std::string out;
+// `text` with each line indented, added to `out` (a suite's body, into its parent's: no copy
+// of its own, the body being most of the report), with room for `more` bytes after it: the
+// lines that close the suite must not make `out` grow again, which would copy it once more.
+void appendIndented(std::string& out, const std::string& text, std::size_t more) {
+    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+    out.reserve(out.size() + text.size() + 4 * (lines + 1) + more);
     std::size_t begin = 0;
     while (begin < text.size()) {
         std::size_t end = text.find('\n', begin);
@@ -110,7 +114,6 @@ std::string indented(const std::string& text) {
         out.append(text, begin, end - begin);
         begin = end;
     }
-    return out;
 }
 
 }  // namespace
@@ -149,8 +152,10 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     blocks.pop_back();
     Block& parent = blocks.back();
     const std::string name = description(suite.name.empty() ? "unnamed suite" : suite.name);
-    parent.body += "# Subtest: " + name + "\n" + indented(suite.body) + "    1.." +
-                   std::to_string(suite.points) + "\n";
+    parent.body += "# Subtest: " + name + "\n";
+    appendIndented(parent.body, suite.body, 2 * name.size() + 128);
+    suite.body = std::string();
+    parent.body += "    1.." + std::to_string(suite.points) + "\n";
     const std::string number = std::to_string(++parent.points);
     const std::string extra = records("", suite.attachments);
     if (suite.fixtureProblems.empty() && !suite.failed) {
@@ -171,28 +176,36 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     }
 }
 
-std::string TapReporter::document() {
-    // Whatever is still open (a run cut short) is closed on copies: events may follow.
-    std::vector<Block> blocks = blocks_;
-    std::vector<std::string> bailOuts = bailOuts_;
-    for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
-        OpenTest test = *it;
-        if (!isFailure(test.status)) {
-            test.status = TestStatus::Interrupted;
-            test.reason = TestMessage("interrupted: the run ended before the test did");
+void TapReporter::writeDocument(ReportText& out) {
+    // Whatever is still open (a run cut short) is closed on copies: events may follow. A run
+    // that ended has nothing open, and its body is written as it is.
+    const std::vector<Block>* blocks = &blocks_;
+    const std::vector<std::string>* bailOuts = &bailOuts_;
+    std::vector<Block> closedBlocks;
+    std::vector<std::string> closedBailOuts;
+    if (!open_.empty() || blocks_.size() > 1) {
+        closedBlocks = blocks_;
+        closedBailOuts = bailOuts_;
+        for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
+            OpenTest test = *it;
+            if (!isFailure(test.status)) {
+                test.status = TestStatus::Interrupted;
+                test.reason = TestMessage("interrupted: the run ended before the test did");
+            }
+            closeTest(closedBlocks, test);
         }
-        closeTest(blocks, test);
+        while (closedBlocks.size() > 1) {
+            closeSuite(closedBlocks, closedBailOuts);
+        }
+        blocks = &closedBlocks;
+        bailOuts = &closedBailOuts;
     }
-    while (blocks.size() > 1) {
-        closeSuite(blocks, bailOuts);
-    }
-    std::string out = "TAP version 14\n1.." + std::to_string(blocks.front().points) + "\n";
-    out += blocks.front().body;
+    out += "TAP version 14\n1.." + std::to_string(blocks->front().points) + "\n";
+    out += blocks->front().body;
     // After every result, so none is lost: a consumer stops reading at a bail-out.
-    if (!bailOuts.empty()) {
-        out += "Bail out! " + bailOuts.front() + "\n";
+    if (!bailOuts->empty()) {
+        out += "Bail out! " + bailOuts->front() + "\n";
     }
-    return out;
 }
 
 void TapReporter::startTestSuite(const TestSuite* suite) {

@@ -18,7 +18,7 @@ public:
     // The collector's clock times the messages.
     TapReporter(const TestResultCollector& collector, ReporterSettings settings)
         : collector_(collector), settings_(settings) {}
-    std::string document() override;
+    void writeDocument(ReportText& out) override;
 
     void startTestSuite(const TestSuite* suite) override;
     void endTestSuite(const TestSuite* suite) override;

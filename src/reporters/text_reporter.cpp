@@ -55,7 +55,7 @@ void appendOutput(std::string& out, const std::string& output, const char* inden
 
 }  // namespace
 
-std::string TextReporter::document() {
+void TextReporter::writeDocument(ReportText& text) {
     const bool summary = settings_.summary;
     std::string out = "Robot Testing Framework results\n";
     for (const SuiteRecord& suite : collector_.suites()) {
@@ -92,7 +92,7 @@ std::string TextReporter::document() {
         out += closingLine(collector_) + "\n";
     }
     // What tests print and say is bytes; the report is a text file whatever they were.
-    return plainText(out);
+    text += plainText(out);
 }
 
 }  // namespace reporters

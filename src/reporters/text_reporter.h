@@ -9,7 +9,7 @@ namespace reporters {
 class TextReporter : public CumulativeReporter {
 public:
     using CumulativeReporter::CumulativeReporter;
-    std::string document() override;
+    void writeDocument(ReportText& out) override;
 };
 
 }  // namespace reporters

@@ -1,4 +1,9 @@
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
 #include <string>
 #include <thread>
 #include <vector>
@@ -205,4 +210,61 @@ TEST(HtmlReporter, ASuitesFixtureTimesAreBeforeItsFirstTestAndAfterItsLast) {
                     "\"fullId\":\"arm/a.py\",\"type\":\"python\",\"param\":\"--speed 30\","
                     "\"tags\":[\"slow\",\"arm\"]"))
         << test;
+}
+
+// write() hands the document on to its file 64 KiB at a time (the runner never holds a whole
+// report): every format's file is its document() byte for byte, pieces longer than a block
+// (a test's big output) included, and a file that cannot be written leaves nothing behind.
+TEST(Reporter, WritesTheSameTextAsItsDocumentABlockAtATime) {
+    TestResultCollector collector;
+    TestResult result;
+    result.addListener(&collector);
+    std::vector<std::unique_ptr<Reporter>> reporters;
+    for (const ReporterType& type : reporterTypes()) {
+        reporters.push_back(type.make(collector, ReporterSettings{}));
+        result.addListener(reporters.back().get());
+    }
+    std::vector<std::unique_ptr<LambdaTest>> tests;
+    for (int i = 0; i < 1500; ++i) {
+        tests.push_back(std::make_unique<LambdaTest>("test" + std::to_string(i), [] {
+            ROBOTTESTINGFRAMEWORK_TEST_CHECK(true, "nothing to do");
+            ROBOTTESTINGFRAMEWORK_TEST_MEASURE_IN("tracking error", 0.012, "rad", 0, 0.05);
+        }));
+    }
+    const std::string talk(200 * 1024, 'x');  // longer than a block, in one piece
+    tests[700]->body = [&result, &talk, test = tests[700].get()] { result.addOutput(test, talk); };
+    TestSuite suite("arm");
+    for (const auto& test : tests) {
+        suite.addTest(test.get());
+    }
+    result.startTestRunner();
+    suite.run(result);
+    result.endTestRunner();
+
+    const std::filesystem::path dir = scratchDir();
+    for (std::size_t i = 0; i < reporters.size(); ++i) {
+        const std::string name = reporterTypes()[i].name;
+        const std::string document = reporters[i]->document();
+        EXPECT_GT(document.size(), 3 * 64 * 1024u) << name;
+        const std::filesystem::path file = dir / ("report." + name);
+        TestMessage error;
+        ASSERT_TRUE(reporters[i]->write(file.string(), &error)) << error.toString();
+        std::ifstream in(file, std::ios::binary);
+        const std::string written((std::istreambuf_iterator<char>(in)),
+                                  std::istreambuf_iterator<char>());
+        EXPECT_EQ(written.size(), document.size()) << name;
+        EXPECT_TRUE(written == document) << name;
+
+        const std::filesystem::path nowhere = dir / "missing" / ("report." + name);
+        EXPECT_FALSE(reporters[i]->write(nowhere.string(), &error)) << name;
+        EXPECT_TRUE(has(error.getMessage(), "cannot write " + nowhere.string() + ": "))
+            << error.getMessage();
+    }
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        left.push_back(entry.path().filename().string());
+    }
+    std::sort(left.begin(), left.end());
+    EXPECT_EQ(left, (std::vector<std::string>{"report.html", "report.json", "report.junit",
+                                              "report.tap", "report.text"}));
 }

@@ -138,6 +138,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%s: %s\n", programName, warning.c_str());
     }
     RunListeners listeners(options, planned.reportSettings, web.get(), std::move(progress));
+    planned.reportSettings.testFacts.clear();  // the HTML output has its own copy
     const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);
     listeners.stopCapture();
     if (options.isolation == Isolation::None) {

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <map>
 #include <string>
 
 #include "reporters/reporter_registry.h"
@@ -80,7 +81,9 @@ RunListeners::RunListeners(const Options& options,
     // -v/-d say: those change only what the console prints.
     collector_.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
     collector_.setKeepEventLog(false);
-    collector_.setKeepChecks(true);
+    // Only the outputs read a passed check from the records (the console keeps its own, the
+    // history reads measurements): without one, 10 000 tests need not keep 10 000 of them.
+    collector_.setKeepChecks(!options.outputs.empty());
     ParallelConsoleSettings parallelSettings;
     parallelSettings.verbose = options.verbose;
     parallelSettings.colours = colours;
@@ -120,10 +123,18 @@ RunListeners::RunListeners(const Options& options,
     settings.passedChecks = true;
     settings.runFacts = runFacts(options);
     settings.summary = !options.noSummary;
+    // Only the HTML report reads each test's facts (10 000 tests: a map of 10 000 entries), so
+    // only it gets a copy of them.
+    std::map<std::string, reporters::TestFacts> facts;
+    facts.swap(settings.testFacts);
     for (const auto& request : options.outputs) {
         // The option parser let only the table's types through.
+        if (request.type == "html") {
+            settings.testFacts = facts;
+        }
         outputs_.push_back(
             {request, reporters::findReporterType(request.type)->make(collector_, settings)});
+        settings.testFacts.clear();
     }
     for (const auto& output : outputs_) {
         result_.addListener(output.reporter.get());
