@@ -124,18 +124,5 @@ bool writeFileAtomically(const std::string& filename, const std::string& content
     return true;
 }
 
-bool writeReport(const std::string& filename, const std::string& content, TestMessage* error) {
-    std::string why;
-    if (writeFileAtomically(filename, content, why)) {
-        return true;
-    }
-    if (error != nullptr) {
-        error->setMessage(why);
-    } else {
-        std::fprintf(stderr, "robottestingframework: %s\n", why.c_str());
-    }
-    return false;
-}
-
 }  // namespace reporters
 }  // namespace robottestingframework
