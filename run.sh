@@ -9,6 +9,12 @@
 #                       -DRTF_PORTABLE_POSIX=ON (the macOS code paths, on Linux) and runs the
 #                       unit tests and the isolation, interrupt, fixture and hostile-input
 #                       end-to-end tests with it
+#   ./run.sh windows    the Windows job (not part of test: the integrator decides): installs
+#                       MinGW-w64 and Wine if missing (scripts/install-deps.sh --windows),
+#                       fetches pugixml's and Lua's Debian sources into build-windows/deps/
+#                       (scripts/windows-deps.sh, a private apt configuration), cross-builds
+#                       build-windows/ (cmake/mingw-w64.cmake) and runs its tests under Wine
+#                       (tests/windows/; Wine's prefix is build-windows/wine/)
 #   ./run.sh sanitize   the sanitizer job alone: builds build-asan/ with -DRTF_SANITIZE=ON
 #                       (ASan+UBSan) and runs the unit tests, the isolation and hostile-input
 #                       end-to-end tests and the fuzz regression inputs under it
@@ -27,7 +33,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|sanitize|portable|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
+    echo "usage: $0 example|test|sanitize|portable|windows|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -174,6 +180,40 @@ portable_job() {
     return $status
 }
 
+# The Windows job: build-windows/ cross-built with MinGW-w64 (cmake/mingw-w64.cmake), its
+# dependencies from Debian (scripts/windows-deps.sh), its tests (tests/windows/) run by ctest
+# through Wine (the toolchain's CMAKE_CROSSCOMPILING_EMULATOR). Wine keeps its prefix in
+# build-windows/wine/ (made on the first start, about 10 s) and one wineserver for the whole
+# job, so each test's start is quick; the server is stopped at the end.
+windows_job() {
+    local out=build-windows
+    local launcher=()
+    if command -v ccache >/dev/null; then
+        launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+    fi
+    if ! scripts/windows-deps.sh "$out"; then
+        echo "run.sh: fetching the Windows build's dependencies failed" >&2
+        failed_total=$((failed_total + 1))
+        return 1
+    fi
+    configure "$out" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64.cmake" \
+        -DRTF_BUILD_BENCH=OFF -DRTF_BUILD_EXAMPLES=OFF "${launcher[@]}"
+    if ! build "$out"; then
+        echo "run.sh: building $out failed" >&2
+        failed_total=$((failed_total + 1))
+        return 1
+    fi
+    export WINEPREFIX=$root/$out/wine WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
+    mkdir -p "$WINEPREFIX"
+    # Made once, and the server kept for the job (stopped below, whatever the tests did).
+    timeout 300 /usr/lib/wine/wine64 wineboot --init
+    /usr/lib/wine/wineserver -p
+    local status=0
+    run_ctest windows "$out" || status=1
+    /usr/lib/wine/wineserver -k || true
+    return $status
+}
+
 # The coverage job: build-coverage/ with gcov counters (Debug, so lines map to the code), every
 # test, then gcovr over src/: an HTML report (coverage/index.html, a page per file), a text one
 # (coverage.txt) and the table per folder of src/ (coverage-folders.md, as README.md shows it).
@@ -312,6 +352,11 @@ sanitize)
 portable)
     scripts/install-deps.sh
     portable_job || true
+    finish
+    ;;
+windows)
+    scripts/install-deps.sh --windows
+    windows_job || true
     finish
     ;;
 coverage)

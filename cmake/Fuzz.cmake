@@ -27,7 +27,9 @@ set_property(GLOBAL PROPERTY RTF_FUZZ_TARGETS "")
 # rtf_add_fuzz_target(NAME SOURCE LIBRARY...): SOURCE (beside the code it drives) linked to the
 # libraries it needs.
 function(rtf_add_fuzz_target name source)
-    if(RTF_FUZZ)
+    if(WIN32)
+        return()  # fuzzing and its regression replays run on Linux only
+    elseif(RTF_FUZZ)
         add_executable(fuzz-${name} ${source})
         target_link_options(fuzz-${name} PRIVATE -fsanitize=fuzzer)
         add_dependencies(fuzz fuzz-${name})

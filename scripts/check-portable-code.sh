@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The portable files compile without GCC-only things (README.md, Platforms). The library users
 # link (include/, src/core, src/reporters, src/dll, src/variables) is what a Windows build takes
-# first; a file named for its platform or compiler (-posix, -linux, -portable, -apple,
+# first; a file named for its platform or compiler (-posix, -linux, -portable, -windows, -apple,
 # -itanium, -msvc) and the fuzz targets (clang only) are left out. Two checks:
 #   1. no GCC-only header (cxxabi.h, <bits/...>, <ext/...>), __builtin_*, __PRETTY_FUNCTION__,
 #      and no __attribute__ except in a #define or under #if defined(__GNUC__);
@@ -17,7 +17,7 @@ status=0
 
 files=$(find include src/core src/reporters src/dll src/variables -type f \
     \( -name '*.cpp' -o -name '*.h' \) |
-    grep -vE -- '-(posix|linux|portable|apple|itanium|msvc)\.cpp$|_fuzz\.cpp$' | sort)
+    grep -vE -- '-(posix|linux|portable|apple|itanium|msvc|windows)\.cpp$|_fuzz\.cpp$' | sort)
 
 # 1. What only GCC (and Clang pretending to be GCC) has.
 if grep -nE '#[[:space:]]*include[[:space:]]*<(cxxabi\.h|bits/|ext/)|__builtin_|__PRETTY_FUNCTION__' \

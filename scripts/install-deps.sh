@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
 # Installs the Debian packages needed to build and test the project (Debian 12).
 # Idempotent and quick when everything is there: apt is only called for what is missing.
+#   scripts/install-deps.sh            the Linux build's packages
+#   scripts/install-deps.sh --windows  also the Windows job's tools (./run.sh windows):
+#                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`
 set -euo pipefail
 
 packages=(
@@ -15,6 +18,15 @@ packages=(
     gcovr tini
     clang libclang-rt-14-dev
 )
+# Optional: the Windows job cross-builds with MinGW-w64 (the posix flavour: C++ threads), runs
+# under Wine and fetches pugixml's and Lua's sources with `apt-get source` (dpkg-source).
+windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev)
+if [[ "${1:-}" == --windows ]]; then
+    packages+=("${windows_packages[@]}")
+elif [[ $# -gt 0 ]]; then
+    echo "usage: $0 [--windows]" >&2
+    exit 2
+fi
 
 missing=()
 for package in "${packages[@]}"; do

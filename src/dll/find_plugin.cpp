@@ -1,8 +1,6 @@
 // Finding a plug-in file the way the platform finds libraries (SPEC 2, suite files).
 #include <robottestingframework/dll/DllPluginLoader.h>
 
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -14,23 +12,27 @@ namespace plugin {
 
 namespace {
 
+// std::filesystem rather than stat(): the same answers on POSIX and Windows (which has no
+// S_ISSOCK). Symbolic links are followed, as stat() does.
 bool isFile(const std::string& path) {
-    struct stat info {};
-    return ::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode);
+    std::error_code error;
+    return std::filesystem::is_regular_file(path, error);
 }
 
 // What `path` is when it exists but is no file a plug-in can be read from; empty otherwise.
 std::string whatElse(const std::string& path) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0 || S_ISREG(info.st_mode)) {
+    using std::filesystem::file_type;
+    std::error_code error;
+    const file_type type = std::filesystem::status(path, error).type();
+    if (error || type == file_type::not_found || type == file_type::regular) {
         return {};
     }
-    const char* kind = S_ISDIR(info.st_mode)    ? "a folder"
-                       : S_ISFIFO(info.st_mode) ? "a FIFO (named pipe)"
-                       : S_ISCHR(info.st_mode)  ? "a character device"
-                       : S_ISBLK(info.st_mode)  ? "a block device"
-                       : S_ISSOCK(info.st_mode) ? "a socket"
-                                                : "not a regular file";
+    const char* kind = type == file_type::directory   ? "a folder"
+                       : type == file_type::fifo      ? "a FIFO (named pipe)"
+                       : type == file_type::character ? "a character device"
+                       : type == file_type::block     ? "a block device"
+                       : type == file_type::socket    ? "a socket"
+                                                      : "not a regular file";
     return std::string("is ") + kind + ", not a plug-in file: " + path;
 }
 

@@ -1,11 +1,10 @@
 #include "reporters/junit_reporter.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <ctime>
 
+#include "reporters/host_name.h"
 #include "reporters/summary.h"
 #include "reporters/text_safety.h"
 
@@ -38,14 +37,6 @@ std::string timestamp(std::chrono::system_clock::time_point origin, double offse
     localtime_r(&time, &local);
     char buffer[32];
     std::strftime(buffer, sizeof(buffer), "%Y-%m-%dT%H:%M:%S", &local);
-    return buffer;
-}
-
-std::string hostname() {
-    char buffer[256] = {};
-    if (gethostname(buffer, sizeof(buffer) - 1) != 0) {
-        return "localhost";
-    }
     return buffer;
 }
 
@@ -284,7 +275,7 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
 // the runner hands it on to the file as it goes.
 void JUnitReporter::writeDocument(ReportText& out) {
     const bool passedChecks = settings_.passedChecks;
-    const std::string host = hostname();
+    const std::string host = hostName();
     Counts total;
     double totalTime = 0;
     for (const SuiteRecord& suite : collector_.suites()) {

@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <stdexcept>
@@ -15,11 +16,29 @@ namespace {
 
 const char* const option = "--history-import";
 
-// "2024-05-01T10:20:30" (JUnit's timestamp, UTC), or -1.
+// Days from 1970-01-01 to the given day of the proleptic Gregorian calendar (month 1 to 12):
+// timegm's arithmetic, which Windows lacks.
+long long daysFromCivil(long long year, unsigned month, unsigned day) {
+    year -= month <= 2 ? 1 : 0;
+    const long long era = (year >= 0 ? year : year - 399) / 400;
+    const unsigned yearOfEra = static_cast<unsigned>(year - era * 400);
+    const unsigned dayOfYear = (153 * (month + (month > 2 ? -3 : 9)) + 2) / 5 + day - 1;
+    const unsigned dayOfEra = yearOfEra * 365 + yearOfEra / 4 - yearOfEra / 100 + dayOfYear;
+    return era * 146097 + static_cast<long long>(dayOfEra) - 719468;
+}
+
+// "2024-05-01T10:20:30" (JUnit's timestamp, UTC), or -1. std::get_time rather than strptime
+// and timegm, which Windows lacks.
 double isoSeconds(const std::string& text) {
     std::tm when{};
-    const char* end = strptime(text.c_str(), "%Y-%m-%dT%H:%M:%S", &when);
-    return end == nullptr ? -1 : static_cast<double>(timegm(&when));
+    std::istringstream in(text);
+    in >> std::get_time(&when, "%Y-%m-%dT%H:%M:%S");
+    if (in.fail()) {
+        return -1;
+    }
+    const long long days =
+        daysFromCivil(when.tm_year + 1900LL, when.tm_mon + 1u, static_cast<unsigned>(when.tm_mday));
+    return static_cast<double>(days * 86400 + when.tm_hour * 3600 + when.tm_min * 60 + when.tm_sec);
 }
 
 double secondsOf(const char* text) {

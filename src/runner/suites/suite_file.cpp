@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -16,8 +17,6 @@
 
 #include "runner/model/test_id.h"
 #include "runner/model/value_limits.h"
-
-#include <sys/stat.h>
 
 namespace robottestingframework {
 namespace runner {
@@ -98,27 +97,31 @@ bool isOneOf(const std::string& value, const char* const (&names)[N]) {
 std::string readBoundedFile(const std::string& path, const std::string& what) {
     // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
     // runs out: only a regular file of a bounded size is read.
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0) {
-        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
-                             ")");
+    // std::filesystem rather than stat(): the same answers on POSIX and Windows.
+    using std::filesystem::file_type;
+    std::error_code failed;
+    const file_type type = std::filesystem::status(path, failed).type();
+    if (failed || type == file_type::not_found) {
+        const std::string reason = failed ? failed.message() : std::string(std::strerror(ENOENT));
+        throw SuiteFileError(path + ": cannot read the " + what + " (" + reason + ")");
     }
-    if (S_ISDIR(info.st_mode)) {
+    if (type == file_type::directory) {
         throw SuiteFileError(path + ": is a folder, not a " + what + "");
     }
-    if (!S_ISREG(info.st_mode)) {
-        const char* kind = S_ISFIFO(info.st_mode)   ? "a FIFO (named pipe)"
-                           : S_ISCHR(info.st_mode)  ? "a character device"
-                           : S_ISBLK(info.st_mode)  ? "a block device"
-                           : S_ISSOCK(info.st_mode) ? "a socket"
-                                                    : "not a regular file";
+    if (type != file_type::regular) {
+        const char* kind = type == file_type::fifo        ? "a FIFO (named pipe)"
+                           : type == file_type::character ? "a character device"
+                           : type == file_type::block     ? "a block device"
+                           : type == file_type::socket    ? "a socket"
+                                                          : "not a regular file";
         throw SuiteFileError(path + ": is " + std::string(kind) + ", not a " + what + " (a " +
                              what + " is a regular file)");
     }
     const std::string tooLarge = path + ": the " + what + " is larger than " +
                                  std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
                                  " MiB, the limit of a " + what;
-    if (static_cast<unsigned long long>(info.st_size) > maxSuiteFileBytes) {
+    const std::uintmax_t size = std::filesystem::file_size(path, failed);
+    if (!failed && size > maxSuiteFileBytes) {
         throw SuiteFileError(tooLarge);
     }
     std::ifstream in(path, std::ios::binary);
@@ -126,9 +129,9 @@ std::string readBoundedFile(const std::string& path, const std::string& what) {
         throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
                              ")");
     }
-    // Up to one byte past the limit: a file can grow after stat().
+    // Up to one byte past the limit: a file can grow after its size was read.
     std::string content;
-    content.reserve(static_cast<std::size_t>(info.st_size));
+    content.reserve(failed ? 0 : static_cast<std::size_t>(size));
     char chunk[65536];
     while (in && content.size() <= maxSuiteFileBytes) {
         in.read(chunk, sizeof chunk);

@@ -1,0 +1,62 @@
+#!/usr/bin/env bash
+# windows-deps.sh BUILD_DIR: the third-party code the Windows build (cmake/mingw-w64.cmake)
+# compiles or includes, fetched into BUILD_DIR/deps/ and never into the repository:
+#   - pugixml and Lua 5.4: Debian 12's source packages (`apt-get source`), through an apt
+#     configuration of its own under BUILD_DIR/deps/apt/ (its sources.list with deb-src lines,
+#     its lists and caches): the machine's /etc/apt and /var/lib/apt are never written;
+#   - CLI11, nlohmann-json and cpp-httplib: the headers Debian installed, copied alone into
+#     BUILD_DIR/deps/include/, so the cross compiler never sees /usr/include (glibc's headers).
+# Quick when done: each part is fetched once.
+set -euo pipefail
+[[ $# -eq 1 ]] || {
+    echo "usage: $0 BUILD_DIR" >&2
+    exit 2
+}
+mkdir -p "$1/deps"
+deps=$(cd "$1/deps" && pwd)
+
+# The header-only libraries, as installed by scripts/install-deps.sh.
+mkdir -p "$deps/include"
+for header in /usr/include/CLI /usr/include/nlohmann /usr/include/httplib.h; do
+    if [[ ! -e "$header" ]]; then
+        echo "windows-deps: $header is missing (scripts/install-deps.sh installs it)" >&2
+        exit 1
+    fi
+    cp -a "$header" "$deps/include/"
+done
+
+# Source packages: their name, and the folder `apt-get source` unpacks them to.
+packages=(pugixml lua5.4)
+folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h")
+missing=()
+for i in "${!packages[@]}"; do
+    # shellcheck disable=SC2086 # the pattern is meant to expand
+    if ! compgen -G "$deps/${folders[$i]}" >/dev/null; then
+        missing+=("${packages[$i]}")
+    fi
+done
+if ((${#missing[@]} == 0)); then
+    echo "windows-deps: pugixml, Lua 5.4 and the header-only libraries are in $deps"
+    exit 0
+fi
+
+apt_dir=$deps/apt
+mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
+cat >"$apt_dir/sources.list" <<LIST
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm-updates main
+LIST
+apt_options=(
+    -o "Dir::Etc::sourcelist=$apt_dir/sources.list"
+    -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
+    -o "Dir::State::Lists=$apt_dir/lists"
+    -o "Dir::Cache=$apt_dir/cache"
+    -o "Dir::Cache::archives=$apt_dir/cache/archives"
+    -o "Dir::Cache::pkgcache=$apt_dir/cache/pkgcache.bin"
+    -o "Dir::Cache::srcpkgcache=$apt_dir/cache/srcpkgcache.bin"
+    -o "Debug::NoLocking=1"
+    -o "APT::Sandbox::User=root"
+)
+echo "windows-deps: fetching the Debian sources of ${missing[*]} into $deps"
+apt-get "${apt_options[@]}" -q update
+(cd "$deps" && apt-get "${apt_options[@]}" -q source "${missing[@]}")

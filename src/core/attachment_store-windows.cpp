@@ -1,0 +1,203 @@
+#include "attachment_store.h"
+
+#include <windows.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <filesystem>
+#include <system_error>
+
+// The Windows twin of attachment_store-posix.cpp: the same rules (limits, names, one writer at
+// a time through the folder's .lock), with Win32 handles and LockFileEx for open and flock.
+namespace fs = std::filesystem;
+
+namespace robottestingframework {
+
+namespace {
+
+class Handle {
+public:
+    explicit Handle(HANDLE handle) : handle_(handle) {}
+    ~Handle() {
+        if (valid()) {
+            CloseHandle(handle_);
+        }
+    }
+    Handle(const Handle&) = delete;
+    Handle& operator=(const Handle&) = delete;
+    bool valid() const { return handle_ != INVALID_HANDLE_VALUE && handle_ != nullptr; }
+    HANDLE get() const { return handle_; }
+
+private:
+    HANDLE handle_;
+};
+
+std::string systemMessage(DWORD code) {
+    return std::system_category().message(static_cast<int>(code));
+}
+
+// A limit from the environment: the default when unset; false when set to anything but a
+// whole number of bytes.
+bool limitFrom(const char* variable, std::uint64_t fallback, std::uint64_t& limit,
+               std::string& error) {
+    const char* text = std::getenv(variable);
+    if (text == nullptr || *text == '\0') {
+        limit = fallback;
+        return true;
+    }
+    char* end = nullptr;
+    errno = 0;
+    const unsigned long long value = std::strtoull(text, &end, 10);
+    if (errno != 0 || *end != '\0' || text[0] == '-') {
+        error = std::string(variable) + "='" + text + "' is not a number of bytes";
+        return false;
+    }
+    limit = value;
+    return true;
+}
+
+// The bytes already stored this run, and how many files.
+void usageOf(const fs::path& folder, std::uint64_t& bytes, std::uint64_t& files) {
+    bytes = 0;
+    files = 0;
+    std::error_code ignored;
+    for (const auto& entry : fs::directory_iterator(folder, ignored)) {
+        if (entry.path().filename() == ".lock") {
+            continue;
+        }
+        std::error_code sizeError;
+        const auto size = entry.is_regular_file(sizeError) ? entry.file_size(sizeError) : 0;
+        bytes += sizeError ? 0 : size;
+        ++files;
+    }
+}
+
+bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
+    char buffer[64 * 1024];
+    std::uint64_t left = size;
+    while (left > 0) {
+        DWORD got = 0;
+        const DWORD want = left < sizeof(buffer) ? static_cast<DWORD>(left) : sizeof(buffer);
+        if (ReadFile(from, buffer, want, &got, nullptr) == 0) {
+            error = systemMessage(GetLastError());
+            return false;
+        }
+        if (got == 0) {
+            break;  // the file shrank while copied: keep what there was
+        }
+        for (DWORD done = 0; done < got;) {
+            DWORD put = 0;
+            if (WriteFile(to, buffer + done, got - done, &put, nullptr) == 0) {
+                error = systemMessage(GetLastError());
+                return false;
+            }
+            done += put;
+        }
+        left -= got;
+    }
+    return true;
+}
+
+}  // namespace
+
+bool storeAttachment(const std::string& source, const std::string& description,
+                     Attachment& attachment, std::string& error) {
+    const std::string what = "cannot attach '" + source + "': ";
+    std::uint64_t fileLimit = 0;
+    std::uint64_t runLimit = 0;
+    std::string limitError;
+    if (!limitFrom(kAttachmentFileLimitVariable, kDefaultAttachmentFileLimit, fileLimit,
+                   limitError) ||
+        !limitFrom(kAttachmentRunLimitVariable, kDefaultAttachmentRunLimit, runLimit, limitError)) {
+        error = what + limitError;
+        return false;
+    }
+    const DWORD attributes = GetFileAttributesA(source.c_str());
+    if (attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_DIRECTORY) != 0) {
+        error = what + "not a regular file";
+        return false;
+    }
+    Handle input(CreateFileA(source.c_str(), GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE,
+                             nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr));
+    LARGE_INTEGER fileSize{};
+    if (!input.valid() || GetFileSizeEx(input.get(), &fileSize) == 0) {
+        error = what + systemMessage(GetLastError());
+        return false;
+    }
+    if (GetFileType(input.get()) != FILE_TYPE_DISK) {
+        error = what + "not a regular file";
+        return false;
+    }
+    const auto size = static_cast<std::uint64_t>(fileSize.QuadPart);
+    if (size > fileLimit) {
+        error = what + "it is " + std::to_string(size) + " bytes, more than the " +
+                std::to_string(fileLimit) + " bytes a file may have (" +
+                kAttachmentFileLimitVariable + ")";
+        return false;
+    }
+    const char* named = std::getenv(kAttachmentsFolderVariable);
+    std::error_code failed;
+    fs::path folder =
+        fs::absolute(named != nullptr && *named != '\0' ? named : "rtf-attachments", failed);
+    folder = folder.lexically_normal();
+    if (folder.filename().empty()) {
+        folder = folder.parent_path();  // "out/" names the folder "out"
+    }
+    fs::create_directories(folder, failed);
+    if (failed) {
+        error = what + "cannot make the folder " + folder.string() + ": " + failed.message();
+        return false;
+    }
+    // One writer at a time across the run's processes: the folder's content is the account.
+    const std::string lockName = (folder / ".lock").string();
+    Handle lock(CreateFileA(lockName.c_str(), GENERIC_READ | GENERIC_WRITE,
+                            FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
+                            OPEN_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr));
+    OVERLAPPED whole{};
+    if (!lock.valid() ||
+        LockFileEx(lock.get(), LOCKFILE_EXCLUSIVE_LOCK, 0, MAXDWORD, MAXDWORD, &whole) == 0) {
+        error = what + "cannot lock " + lockName + ": " + systemMessage(GetLastError());
+        return false;
+    }
+    std::uint64_t used = 0;
+    std::uint64_t files = 0;
+    usageOf(folder, used, files);
+    if (used + size > runLimit) {
+        error = what + "the run's attachments would take " + std::to_string(used + size) +
+                " bytes, more than the " + std::to_string(runLimit) + " bytes allowed (" +
+                kAttachmentRunLimitVariable + ")";
+        return false;
+    }
+    const std::string original = fs::path(source).filename().string();
+    std::string storedName;
+    HANDLE output = INVALID_HANDLE_VALUE;
+    for (std::uint64_t number = files + 1; output == INVALID_HANDLE_VALUE; ++number) {
+        storedName = std::to_string(number) + "-" + original;
+        output = CreateFileA((folder / storedName).string().c_str(), GENERIC_WRITE, 0, nullptr,
+                             CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr);
+        if (output == INVALID_HANDLE_VALUE && GetLastError() != ERROR_FILE_EXISTS) {
+            error = what + "cannot write " + (folder / storedName).string() + ": " +
+                    systemMessage(GetLastError());
+            return false;
+        }
+    }
+    std::string copyError;
+    bool copied = false;
+    {
+        Handle outputFile(output);
+        copied = copyBytes(input.get(), outputFile.get(), size, copyError);
+    }
+    if (!copied) {
+        DeleteFileA((folder / storedName).string().c_str());
+        error = what + copyError;
+        return false;
+    }
+    attachment.path = (folder.filename() / storedName).generic_string();  // a link in reports
+    attachment.absolutePath = (folder / storedName).string();
+    attachment.description = description;
+    attachment.originalName = original;
+    attachment.size = size;
+    return true;
+}
+
+}  // namespace robottestingframework
