@@ -1,3 +1,4 @@
+#include "attachment_rules.h"
 #include "attachment_store.h"
 
 #include <fcntl.h>
@@ -32,42 +33,6 @@ public:
 private:
     int fd_;
 };
-
-// A limit from the environment: the default when unset; false when set to anything but a
-// whole number of bytes.
-bool limitFrom(const char* variable, std::uint64_t fallback, std::uint64_t& limit,
-               std::string& error) {
-    const char* text = std::getenv(variable);
-    if (text == nullptr || *text == '\0') {
-        limit = fallback;
-        return true;
-    }
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long value = std::strtoull(text, &end, 10);
-    if (errno != 0 || *end != '\0' || text[0] == '-') {
-        error = std::string(variable) + "='" + text + "' is not a number of bytes";
-        return false;
-    }
-    limit = value;
-    return true;
-}
-
-// The bytes already stored this run, and how many files.
-void usageOf(const fs::path& folder, std::uint64_t& bytes, std::uint64_t& files) {
-    bytes = 0;
-    files = 0;
-    std::error_code ignored;
-    for (const auto& entry : fs::directory_iterator(folder, ignored)) {
-        if (entry.path().filename() == ".lock") {
-            continue;
-        }
-        std::error_code sizeError;
-        const auto size = entry.is_regular_file(sizeError) ? entry.file_size(sizeError) : 0;
-        bytes += sizeError ? 0 : size;
-        ++files;
-    }
-}
 
 bool copyBytes(int from, int to, std::uint64_t size, std::string& error) {
     char buffer[64 * 1024];
@@ -107,11 +72,9 @@ bool storeAttachment(const std::string& source, const std::string& description,
     const std::string what = "cannot attach '" + source + "': ";
     std::uint64_t fileLimit = 0;
     std::uint64_t runLimit = 0;
-    std::string limitError;
-    if (!limitFrom(kAttachmentFileLimitVariable, kDefaultAttachmentFileLimit, fileLimit,
-                   limitError) ||
-        !limitFrom(kAttachmentRunLimitVariable, kDefaultAttachmentRunLimit, runLimit, limitError)) {
-        error = what + limitError;
+    std::string problem;
+    if (!attachmentLimits(fileLimit, runLimit, problem)) {
+        error = what + problem;
         return false;
     }
     Descriptor input(::open(source.c_str(), O_RDONLY | O_CLOEXEC));
@@ -125,23 +88,10 @@ bool storeAttachment(const std::string& source, const std::string& description,
         return false;
     }
     const auto size = static_cast<std::uint64_t>(info.st_size);
-    if (size > fileLimit) {
-        error = what + "it is " + std::to_string(size) + " bytes, more than the " +
-                std::to_string(fileLimit) + " bytes a file may have (" +
-                kAttachmentFileLimitVariable + ")";
-        return false;
-    }
-    const char* named = std::getenv(kAttachmentsFolderVariable);
-    std::error_code failed;
-    fs::path folder =
-        fs::absolute(named != nullptr && *named != '\0' ? named : "rtf-attachments", failed);
-    folder = folder.lexically_normal();
-    if (folder.filename().empty()) {
-        folder = folder.parent_path();  // "out/" names the folder "out"
-    }
-    fs::create_directories(folder, failed);
-    if (failed) {
-        error = what + "cannot make the folder " + folder.string() + ": " + failed.message();
+    problem = fileOverLimit(size, fileLimit);
+    fs::path folder;
+    if (!problem.empty() || !attachmentsFolder(folder, problem)) {
+        error = what + problem;
         return false;
     }
     // One writer at a time across the run's processes: the folder's content is the account.
@@ -150,20 +100,16 @@ bool storeAttachment(const std::string& source, const std::string& description,
         error = what + "cannot lock " + (folder / ".lock").string() + ": " + std::strerror(errno);
         return false;
     }
-    std::uint64_t used = 0;
     std::uint64_t files = 0;
-    usageOf(folder, used, files);
-    if (used + size > runLimit) {
-        error = what + "the run's attachments would take " + std::to_string(used + size) +
-                " bytes, more than the " + std::to_string(runLimit) + " bytes allowed (" +
-                kAttachmentRunLimitVariable + ")";
+    problem = runOverLimit(folder, size, runLimit, files);
+    if (!problem.empty()) {
+        error = what + problem;
         return false;
     }
-    const std::string original = fs::path(source).filename().string();
     std::string storedName;
     int output = -1;
     for (std::uint64_t number = files + 1; output < 0; ++number) {
-        storedName = std::to_string(number) + "-" + original;
+        storedName = storedNameOf(source, number);
         output =
             ::open((folder / storedName).c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
         if (output < 0 && errno != EEXIST) {
@@ -179,11 +125,7 @@ bool storeAttachment(const std::string& source, const std::string& description,
         error = what + copyError;
         return false;
     }
-    attachment.path = (folder.filename() / storedName).string();
-    attachment.absolutePath = (folder / storedName).string();
-    attachment.description = description;
-    attachment.originalName = original;
-    attachment.size = size;
+    describeStored(folder, storedName, source, description, size, attachment);
     return true;
 }
 

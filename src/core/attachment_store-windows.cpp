@@ -1,3 +1,4 @@
+#include "attachment_rules.h"
 #include "attachment_store.h"
 
 #include <windows.h>
@@ -36,42 +37,6 @@ std::string systemMessage(DWORD code) {
     return std::system_category().message(static_cast<int>(code));
 }
 
-// A limit from the environment: the default when unset; false when set to anything but a
-// whole number of bytes.
-bool limitFrom(const char* variable, std::uint64_t fallback, std::uint64_t& limit,
-               std::string& error) {
-    const char* text = std::getenv(variable);
-    if (text == nullptr || *text == '\0') {
-        limit = fallback;
-        return true;
-    }
-    char* end = nullptr;
-    errno = 0;
-    const unsigned long long value = std::strtoull(text, &end, 10);
-    if (errno != 0 || *end != '\0' || text[0] == '-') {
-        error = std::string(variable) + "='" + text + "' is not a number of bytes";
-        return false;
-    }
-    limit = value;
-    return true;
-}
-
-// The bytes already stored this run, and how many files.
-void usageOf(const fs::path& folder, std::uint64_t& bytes, std::uint64_t& files) {
-    bytes = 0;
-    files = 0;
-    std::error_code ignored;
-    for (const auto& entry : fs::directory_iterator(folder, ignored)) {
-        if (entry.path().filename() == ".lock") {
-            continue;
-        }
-        std::error_code sizeError;
-        const auto size = entry.is_regular_file(sizeError) ? entry.file_size(sizeError) : 0;
-        bytes += sizeError ? 0 : size;
-        ++files;
-    }
-}
-
 bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
     char buffer[64 * 1024];
     std::uint64_t left = size;
@@ -105,11 +70,9 @@ bool storeAttachment(const std::string& source, const std::string& description,
     const std::string what = "cannot attach '" + source + "': ";
     std::uint64_t fileLimit = 0;
     std::uint64_t runLimit = 0;
-    std::string limitError;
-    if (!limitFrom(kAttachmentFileLimitVariable, kDefaultAttachmentFileLimit, fileLimit,
-                   limitError) ||
-        !limitFrom(kAttachmentRunLimitVariable, kDefaultAttachmentRunLimit, runLimit, limitError)) {
-        error = what + limitError;
+    std::string problem;
+    if (!attachmentLimits(fileLimit, runLimit, problem)) {
+        error = what + problem;
         return false;
     }
     const DWORD attributes = GetFileAttributesA(source.c_str());
@@ -129,23 +92,10 @@ bool storeAttachment(const std::string& source, const std::string& description,
         return false;
     }
     const auto size = static_cast<std::uint64_t>(fileSize.QuadPart);
-    if (size > fileLimit) {
-        error = what + "it is " + std::to_string(size) + " bytes, more than the " +
-                std::to_string(fileLimit) + " bytes a file may have (" +
-                kAttachmentFileLimitVariable + ")";
-        return false;
-    }
-    const char* named = std::getenv(kAttachmentsFolderVariable);
-    std::error_code failed;
-    fs::path folder =
-        fs::absolute(named != nullptr && *named != '\0' ? named : "rtf-attachments", failed);
-    folder = folder.lexically_normal();
-    if (folder.filename().empty()) {
-        folder = folder.parent_path();  // "out/" names the folder "out"
-    }
-    fs::create_directories(folder, failed);
-    if (failed) {
-        error = what + "cannot make the folder " + folder.string() + ": " + failed.message();
+    problem = fileOverLimit(size, fileLimit);
+    fs::path folder;
+    if (!problem.empty() || !attachmentsFolder(folder, problem)) {
+        error = what + problem;
         return false;
     }
     // One writer at a time across the run's processes: the folder's content is the account.
@@ -159,20 +109,16 @@ bool storeAttachment(const std::string& source, const std::string& description,
         error = what + "cannot lock " + lockName + ": " + systemMessage(GetLastError());
         return false;
     }
-    std::uint64_t used = 0;
     std::uint64_t files = 0;
-    usageOf(folder, used, files);
-    if (used + size > runLimit) {
-        error = what + "the run's attachments would take " + std::to_string(used + size) +
-                " bytes, more than the " + std::to_string(runLimit) + " bytes allowed (" +
-                kAttachmentRunLimitVariable + ")";
+    problem = runOverLimit(folder, size, runLimit, files);
+    if (!problem.empty()) {
+        error = what + problem;
         return false;
     }
-    const std::string original = fs::path(source).filename().string();
     std::string storedName;
     HANDLE output = INVALID_HANDLE_VALUE;
     for (std::uint64_t number = files + 1; output == INVALID_HANDLE_VALUE; ++number) {
-        storedName = std::to_string(number) + "-" + original;
+        storedName = storedNameOf(source, number);
         output = CreateFileA((folder / storedName).string().c_str(), GENERIC_WRITE, 0, nullptr,
                              CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr);
         if (output == INVALID_HANDLE_VALUE && GetLastError() != ERROR_FILE_EXISTS) {
@@ -192,11 +138,7 @@ bool storeAttachment(const std::string& source, const std::string& description,
         error = what + copyError;
         return false;
     }
-    attachment.path = (folder.filename() / storedName).generic_string();  // a link in reports
-    attachment.absolutePath = (folder / storedName).string();
-    attachment.description = description;
-    attachment.originalName = original;
-    attachment.size = size;
+    describeStored(folder, storedName, source, description, size, attachment);
     return true;
 }
 
