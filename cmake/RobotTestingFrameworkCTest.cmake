@@ -62,6 +62,8 @@
 
 include_guard(GLOBAL)
 
+include("${CMAKE_CURRENT_LIST_DIR}/RobotTestingFrameworkBracket.cmake")
+
 # The script ctest runs to list a suite's tests (beside this file in both trees).
 set(_ROBOTTESTINGFRAMEWORK_DISCOVER_SCRIPT
     "${CMAKE_CURRENT_LIST_DIR}/RobotTestingFrameworkDiscoverTests.cmake")
@@ -445,15 +447,6 @@ function(_robottestingframework_add_generated_suite)
     endif()
     add_test(NAME "${arg_NAME}" COMMAND ${command} ${options} COMMAND_EXPAND_LISTS)
     _robottestingframework_test_properties()
-endfunction()
-
-# A bracket argument holding `text` as is, for a generated CMake file.
-function(_robottestingframework_bracket text out)
-    set(equals "=")
-    while("${text}" MATCHES "]${equals}]")
-        string(APPEND equals "=")
-    endwhile()
-    set(${out} "[${equals}[${text}]${equals}]" PARENT_SCOPE)
 endfunction()
 
 # One CTest test per test of a suite file, listed when ctest starts (see the top of this file).

@@ -149,6 +149,7 @@ def test_install_layout(prefix):
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkTargets.cmake",
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkCTest.cmake",
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkDiscoverTests.cmake",
+        f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkBracket.cmake",
         f"{LIBDIR}/pkgconfig/robottestingframework.pc",
         "share/doc/RobotTestingFramework/README.md",
         "share/doc/RobotTestingFramework/examples/suites/example.xml",
