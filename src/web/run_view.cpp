@@ -168,15 +168,13 @@ void RunView::endSuite() {
     publishRun();
 }
 
-bool RunView::findOpen(std::uint64_t id, std::size_t& suite, std::size_t& test) const {
+std::optional<RunView::Place> RunView::findOpen(std::uint64_t id) const {
     for (auto it = openTests_.rbegin(); it != openTests_.rend(); ++it) {
         if (it->id == id) {
-            suite = it->suite;
-            test = it->test;
-            return true;
+            return it->place;
         }
     }
-    return false;
+    return std::nullopt;
 }
 
 void RunView::startTest(std::uint64_t id, const std::string& name) {
@@ -201,16 +199,15 @@ void RunView::startTest(std::uint64_t id, const std::string& name) {
     test.state = "running";
     test.started = std::chrono::steady_clock::now();
     test.startedAt = clock();
-    openTests_.push_back({id, openSuite_, index});
+    openTests_.push_back({id, {openSuite_, index}});
     log("test " + name + " started");
     publishTest(openSuite_, index);
 }
 
 void RunView::endTest(std::uint64_t id) {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::size_t suiteIndex = none;
-    std::size_t index = none;
-    if (!findOpen(id, suiteIndex, index)) {
+    const std::optional<Place> place = findOpen(id);
+    if (!place) {
         return;
     }
     for (std::size_t i = openTests_.size(); i > 0; --i) {
@@ -219,35 +216,34 @@ void RunView::endTest(std::uint64_t id) {
             break;
         }
     }
-    TestView& test = suites_[suiteIndex].tests[index];
+    TestView& test = testAt(*place);
     test.state = test.retries > 0 && test.worst == TestStatus::Passed ? toString(TestStatus::Flaky)
                                                                       : toString(test.worst);
     test.duration = secondsSince(test.started);
-    ended_ = {id, suiteIndex, index};
+    ended_ = {id, place->suite, place->test};
     if (test.worst == TestStatus::Passed) {
         ++counts_[0];
     } else if (test.worst == TestStatus::Skipped) {
         ++counts_[2];
     } else {
         ++counts_[1];
-        suites_[suiteIndex].failed = true;
+        suites_[place->suite].failed = true;
     }
     log("test " + test.name + " " + test.state);
-    publishTest(suiteIndex, index);
+    publishTest(place->suite, place->test);
     publishRun();
 }
 
 void RunView::renameTest(std::uint64_t id, const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::size_t suiteIndex = none;
-    std::size_t index = none;
-    if (!findOpen(id, suiteIndex, index)) {
+    const std::optional<Place> place = findOpen(id);
+    if (!place) {
         return;
     }
-    TestView& test = suites_[suiteIndex].tests[index];
+    TestView& test = testAt(*place);
     log("test " + test.name + " renamed " + name);
     test.name = name;
-    publishTest(suiteIndex, index);
+    publishTest(place->suite, place->test);
 }
 
 void RunView::retryTest(std::uint64_t id) {
@@ -279,10 +275,8 @@ void RunView::retryTest(std::uint64_t id) {
 void RunView::startRepetition(std::uint64_t id, unsigned int index, unsigned int count) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        std::size_t suiteIndex = none;
-        std::size_t test = none;
-        if (findOpen(id, suiteIndex, test)) {
-            suites_[suiteIndex].tests[test].repetition = repetitionId(id, index);
+        if (const std::optional<Place> place = findOpen(id)) {
+            testAt(*place).repetition = repetitionId(id, index);
         }
     }
     addMessage(id, "report", repetitionMessage(index, count), TestStatus::Passed);
@@ -304,9 +298,8 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
         }
     }
     log("[" + message.kind + "] " + message.text);
-    std::size_t suiteIndex = none;
-    std::size_t index = none;
-    if (!findOpen(id, suiteIndex, index)) {
+    const std::optional<Place> place = findOpen(id);
+    if (!place) {
         SuiteView& suite = openSuite();
         if (isFailure(status)) {
             suite.failed = true;
@@ -316,24 +309,23 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
         }
         return;
     }
-    TestView& test = suites_[suiteIndex].tests[index];
+    TestView& test = testAt(*place);
     if (status > test.worst) {
         test.worst = status;
     }
     message.repetition = test.repetition;
     if (keep(message, test.messages, test.hiddenReports)) {
-        publishTest(suiteIndex, index);
+        publishTest(place->suite, place->test);
     }
 }
 
 void RunView::addOutput(std::uint64_t id, const std::string& text) {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::size_t suiteIndex = none;
-    std::size_t index = none;
-    if (!verbose_ || !findOpen(id, suiteIndex, index)) {
+    const std::optional<Place> place = verbose_ ? findOpen(id) : std::nullopt;
+    if (!place) {
         return;
     }
-    TestView& test = suites_[suiteIndex].tests[index];
+    TestView& test = testAt(*place);
     if (test.output.size() >= maxOutput) {
         return;
     }
@@ -341,21 +333,20 @@ void RunView::addOutput(std::uint64_t id, const std::string& text) {
     if (test.output.size() >= maxOutput) {
         test.output += "\n[output cut at 64 KiB]\n";
     }
-    publishTest(suiteIndex, index);
+    publishTest(place->suite, place->test);
 }
 
 void RunView::addMeasurement(std::uint64_t id, MeasurementView measurement) {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::size_t suiteIndex = none;
-    std::size_t index = none;
-    if (!findOpen(id, suiteIndex, index)) {
+    const std::optional<Place> place = findOpen(id);
+    if (!place) {
         return;
     }
-    TestView& test = suites_[suiteIndex].tests[index];
+    TestView& test = testAt(*place);
     // Capped as messages are: each change re-sends the test.
     if (test.measurements.size() < maxMessages) {
         test.measurements.push_back(std::move(measurement));
-        publishTest(suiteIndex, index);
+        publishTest(place->suite, place->test);
     }
 }
 
@@ -369,10 +360,8 @@ void RunView::addAttachment(std::uint64_t id, AttachmentView attachment) {
     // The run's attachments folder bounds their bytes; this bounds the page's list.
     constexpr std::size_t maxAttachments = 10000;
     std::lock_guard<std::mutex> lock(mutex_);
-    std::size_t suite = none;
-    std::size_t test = none;
-    if (findOpen(id, suite, test)) {
-        attachment.test = suites_[suite].tests[test].name;
+    if (const std::optional<Place> place = findOpen(id)) {
+        attachment.test = testAt(*place).name;
     } else if (openSuite_ != none && attachment.test.empty()) {
         attachment.test = suites_[openSuite_].name;  // a fixture's (a process's log)
     }

@@ -126,8 +126,13 @@ private:
 
     // All below with mutex_ held.
     SuiteView& openSuite();
-    // Where the running test `id` is; false when none runs with it.
-    bool findOpen(std::uint64_t id, std::size_t& suite, std::size_t& test) const;
+    struct Place {
+        std::size_t suite;
+        std::size_t test;
+    };
+    // Where the running test `id` is; none when no test runs with it.
+    std::optional<Place> findOpen(std::uint64_t id) const;
+    TestView& testAt(Place place) { return suites_[place.suite].tests[place.test]; }
     void publishRun();
     void publishSuite(std::size_t suite);
     void publishTest(std::size_t suite, std::size_t test);
@@ -156,8 +161,7 @@ private:
     std::size_t openSuite_ = none;             // where tests go: the innermost open suite
     struct OpenTest {
         std::uint64_t id;
-        std::size_t suite;
-        std::size_t test;
+        Place place;
     };
     std::vector<OpenTest> openTests_;  // the running ones, innermost last
     struct Ended {
