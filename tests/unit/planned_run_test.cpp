@@ -280,16 +280,32 @@ TEST_F(PlannedRunTest, VerboseNamesEachSuiteTheShardRunsAndItsFile) {
                   "out: shard 0 runs suite a (a.xml)", "out: shard 0 runs suite c (c.xml)"}));
 }
 
-TEST_F(PlannedRunTest, DurationsWithoutAShardWarnThatNothingIsBalanced) {
+TEST_F(PlannedRunTest, DurationsWithoutAShardWarnThatNothingIsBalancedAndAreKeptForTheEta) {
     Options options;
-    options.durations = "earlier.xml";  // not read: there is nothing to balance
+    options.durations = report({{"a", "a1", "passed", 30}, {"b", "b1", "passed", 10}});
     const PlannedRun plan = planRun(options, fourSuites(), ShardChoice());
     EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
     EXPECT_EQ(plan.suites.size(), 4u);
     EXPECT_EQ(notesOf(plan),
-              (std::vector<std::string>{
-                  "err: warning: --durations earlier.xml: not sharded, nothing to balance "
-                  "(only a terminal's progress line reads it, for its ETA)"}));
+              (std::vector<std::string>{"err: warning: --durations " + options.durations +
+                                        ": not sharded, nothing to balance (only a terminal's "
+                                        "progress line reads it, for its ETA)"}));
+    // Read here, once: the progress line takes them from the plan.
+    ASSERT_TRUE(plan.durations.has_value());
+    EXPECT_EQ(*plan.durations, (SuiteSeconds{{"a", 30.0}, {"b", 10.0}}));
+}
+
+TEST_F(PlannedRunTest, DurationsThatCannotBeReadWithoutAShardOnlyCostTheEta) {
+    Options options;
+    options.durations = (dir_ / "missing.xml").string();
+    const PlannedRun plan = planRun(options, fourSuites(), ShardChoice());
+    EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
+    EXPECT_FALSE(plan.durations.has_value());
+    const std::vector<std::string> notes = notesOf(plan);
+    ASSERT_EQ(notes.size(), 2u);
+    EXPECT_EQ(notes[0].rfind("err: warning: --durations " + options.durations + ": ", 0), 0u)
+        << notes[0];
+    EXPECT_NE(notes[0].find("; no ETA"), std::string::npos) << notes[0];
 }
 
 TEST_F(PlannedRunTest, DurationsBalanceTheShardAndTheShardLineSaysSo) {

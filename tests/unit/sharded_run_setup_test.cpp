@@ -184,13 +184,13 @@ TEST_F(ShardSetup, AShardStatusFileThatCannotBeWrittenIsAnErrorNamingIt) {
 }
 
 TEST_F(ShardSetup, SuitesAreSplitInTheOrderOfTheirNames) {
-    EXPECT_EQ(shardsOf({suite("c"), suite("a"), suite("b")}, 2, ""),
+    EXPECT_EQ(shardsOf({suite("c"), suite("a"), suite("b")}, 2, std::nullopt),
               (std::vector<unsigned int>{0, 0, 1}));
 }
 
 TEST_F(ShardSetup, SuitesSharingALockAreInOneShard) {
-    const auto shards =
-        shardsOf({suite("a", "robot"), suite("b"), suite("c", "robot"), suite("d")}, 2, "");
+    const auto shards = shardsOf({suite("a", "robot"), suite("b"), suite("c", "robot"), suite("d")},
+                                 2, std::nullopt);
     EXPECT_EQ(shards[0], shards[2]);
 }
 
@@ -204,16 +204,16 @@ TEST_F(ShardSetup, DurationsAreTheSuitesTimesInTheReport) {
 </testsuites>
 )";
     // Without durations a and c share shard 0; with them c, the longest, is alone.
-    EXPECT_EQ(shardsOf({suite("a"), suite("b"), suite("c")}, 2, ""),
+    EXPECT_EQ(shardsOf({suite("a"), suite("b"), suite("c")}, 2, std::nullopt),
               (std::vector<unsigned int>{0, 1, 0}));
-    EXPECT_EQ(shardsOf({suite("a"), suite("b"), suite("c")}, 2, report),
+    EXPECT_EQ(shardsOf({suite("a"), suite("b"), suite("c")}, 2, suiteDurations(report)),
               (std::vector<unsigned int>{1, 1, 0}));
 }
 
 TEST_F(ShardSetup, DurationsThatCannotBeReadThrowNamingTheReport) {
     const std::string report = (dir_ / "missing.xml").string();
     try {
-        shardsOf({suite("a")}, 2, report);
+        suiteDurations(report);
         FAIL() << "no error";
     } catch (const std::runtime_error& e) {
         EXPECT_NE(std::string(e.what()).find("--durations " + report), std::string::npos)

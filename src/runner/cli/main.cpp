@@ -132,11 +132,7 @@ int main(int argc, char** argv) {
             web->setTestHistory(strip.first, reporters::historyStripData(strip.second));
         }
     }
-    std::vector<std::string> warnings;
-    ProgressSettings progress = progressOf(plan, options.durations, warnings);
-    for (const std::string& warning : warnings) {
-        std::fprintf(stderr, "%s: %s\n", programName, warning.c_str());
-    }
+    ProgressSettings progress = progressOf(plan, planned.durations);
     RunListeners listeners(options, planned.reportSettings, web.get(), std::move(progress));
     planned.reportSettings.testFacts.clear();  // the HTML output has its own copy
     const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);

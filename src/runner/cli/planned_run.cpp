@@ -116,6 +116,18 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     if (!anyTest) {
         warn(plan, "warning: no test is selected");
     }
+    if (!options.durations.empty()) {
+        try {
+            plan.durations = suiteDurations(options.durations);
+        } catch (const std::exception& e) {
+            if (plan.shard.sharded) {
+                plan.outcome = PlannedRun::Outcome::Error;
+                plan.error = e.what();
+                return plan;
+            }
+            warn(plan, std::string("warning: ") + e.what() + "; no ETA");
+        }
+    }
     if (!plan.shard.sharded) {
         if (!options.durations.empty()) {
             warn(plan, "warning: --durations " + options.durations +
@@ -124,14 +136,8 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
         }
         return plan;
     }
-    std::vector<unsigned int> shardOf;
-    try {
-        shardOf = shardsOf(plan.suites, plan.shard.count, options.durations);
-    } catch (const std::exception& e) {
-        plan.outcome = PlannedRun::Outcome::Error;
-        plan.error = e.what();
-        return plan;
-    }
+    const std::vector<unsigned int> shardOf =
+        shardsOf(plan.suites, plan.shard.count, plan.durations);
     std::size_t mine = 0;
     for (unsigned int of : shardOf) {
         mine += of == plan.shard.index ? 1 : 0;

@@ -4,11 +4,13 @@
 // without a run; main says its notes.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "reporters/reporter.h"
 #include "runner/cli/options.h"
+#include "runner/cli/suite_durations.h"
 #include "runner/model/suite_model.h"
 #include "runner/plan/shard_of_this_machine.h"
 
@@ -39,6 +41,9 @@ struct PlannedRun {
     // shard's, the list showing each one's shard.
     std::vector<SuiteSpec> suites;
     ShardChoice shard;  // the shard this run is; a rerun takes none
+    // Each suite's time from --durations, read once for the shards and the progress line's ETA;
+    // none without --durations or, when not sharded, when it cannot be read (a warning says so).
+    std::optional<SuiteSeconds> durations;
     // When listing a sharded run: the shard of each of `suites`; else empty.
     std::vector<unsigned int> shardOf;
     // What the outputs say of the run's place: a rerun (of which shard), this shard, and each

@@ -5,7 +5,6 @@
 #include <fstream>
 #include <map>
 
-#include "runner/cli/suite_durations.h"
 #include "runner/plan/shard_split.h"
 #include "runner/reports/report_reader.h"
 
@@ -49,10 +48,10 @@ bool prepareShard(Options& options, ShardChoice& choice, std::string& error) {
 }
 
 std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigned int count,
-                                   const std::string& durations) {
+                                   const std::optional<SuiteSeconds>& durations) {
     std::map<std::string, long long> known;
-    if (!durations.empty()) {
-        for (const auto& suite : suiteDurations(durations)) {
+    if (durations) {
+        for (const auto& suite : *durations) {
             known[suite.first] = std::llround(suite.second * 1000.0);
         }
     }
@@ -70,7 +69,7 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
         item.milliseconds = found == known.end() ? -1 : found->second;
         items.push_back(std::move(item));
     }
-    return assignShards(items, count, !durations.empty());
+    return assignShards(items, count, durations.has_value());
 }
 
 }  // namespace runner

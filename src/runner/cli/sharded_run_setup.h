@@ -3,10 +3,12 @@
 // selected suites cut down to the shard's.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "runner/cli/options.h"
+#include "runner/cli/suite_durations.h"
 #include "runner/model/suite_model.h"
 #include "runner/plan/shard_of_this_machine.h"
 
@@ -21,10 +23,9 @@ namespace runner {
 bool prepareShard(Options& options, ShardChoice& choice, std::string& error);
 
 // The shard of each of `suites` (shard_split.h): by sorted id, suites sharing a lock together, and
-// balanced by the suites' times in `durations` (a report) when it is not empty. Throws
-// std::runtime_error naming the report when it cannot be read.
+// balanced by the suites' earlier times (--durations) when there are any.
 std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigned int count,
-                                   const std::string& durations);
+                                   const std::optional<SuiteSeconds>& durations);
 
 }  // namespace runner
 }  // namespace robottestingframework

@@ -10,7 +10,7 @@
 namespace robottestingframework {
 namespace runner {
 
-std::map<std::string, double> suiteDurations(const std::string& file) {
+SuiteSeconds suiteDurations(const std::string& file) {
     if (looksLikeHistoryFile(file)) {
         try {
             HistoryDatabase database(file, HistoryDatabase::Mode::Read);
@@ -23,7 +23,7 @@ std::map<std::string, double> suiteDurations(const std::string& file) {
                 "--durations " + (what.rfind(prefix, 0) == 0 ? what.substr(prefix.size()) : what));
         }
     }
-    std::map<std::string, double> seconds;
+    SuiteSeconds seconds;
     for (const auto& suite : readReport("--durations", file).suites) {
         seconds[suite.name] = suite.seconds;
     }

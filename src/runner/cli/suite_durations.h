@@ -8,9 +8,11 @@
 namespace robottestingframework {
 namespace runner {
 
-// Suite name -> seconds. Throws std::runtime_error "--durations FILE: ..." when the file cannot
-// be read.
-std::map<std::string, double> suiteDurations(const std::string& file);
+// Suite name -> seconds.
+using SuiteSeconds = std::map<std::string, double>;
+
+// Throws std::runtime_error "--durations FILE: ..." when the file cannot be read.
+SuiteSeconds suiteDurations(const std::string& file);
 
 }  // namespace runner
 }  // namespace robottestingframework
