@@ -300,6 +300,11 @@ def test_worker_missing_is_a_configuration_error(tmp_path):
     shutil.copy(RUNNER, lonely)
     env = dict(os.environ)
     env.pop("RTF_WORKER", None)
+    # The installed runner finds its libraries through $ORIGIN/../lib: the copy is shown them.
+    libraries = {str(found.parent) for found in
+                 Path(RUNNER).resolve().parent.parent.glob("lib*/**/libRobotTestingFramework.so*")}
+    assert libraries, f"no library of the runner {RUNNER}"
+    env["LD_LIBRARY_PATH"] = os.pathsep.join(sorted(libraries))
     r = subprocess.run([lonely, "--test", plugin("passing_test"), "--no-output"], env=env,
                        capture_output=True, text=True, timeout=30)
     assert r.returncode == 2, r
