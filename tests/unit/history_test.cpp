@@ -1,5 +1,5 @@
 // The --history file (src/runner/history): its schema and checks, appending runs, reading
-// each test's recent runs back, flaky rates and slowdowns.
+// each test's recent runs back, flaky rates and slowdowns; a run's part of it (RunHistory).
 #include <gtest/gtest.h>
 
 #include <sqlite3.h>
@@ -12,6 +12,10 @@
 #include <thread>
 #include <vector>
 
+#include <robottestingframework/TestResultCollector.h>
+#include <robottestingframework/TestSuite.h>
+
+#include "runner/cli/run_history.h"
 #include "runner/history/history_database.h"
 #include "runner/history/history_error.h"
 #include "runner/history/history_queries.h"
@@ -306,4 +310,46 @@ TEST_F(History, MeasurementsOfTheLastRunsAreReadPerTestWithTheirRunsPlace) {
 
     const std::set<std::string> onlyB = {"s/b"};
     EXPECT_TRUE(recentMeasurements(database, 30, &onlyB).byTest.empty());
+}
+
+namespace {
+
+class NamedTest : public robottestingframework::Test {
+public:
+    explicit NamedTest(std::string name) : Test(std::move(name)) {}
+    void run(robottestingframework::TestResult&) override {}
+    bool succeeded() const override { return true; }
+};
+
+}  // namespace
+
+TEST_F(History, ARunsStripsAreReadBackOnlyWhenAnOutputShowsThem) {
+    append("earlier", 1, {result("s/t", "failed")});
+    robottestingframework::TestResultCollector collector;
+    robottestingframework::TestSuite suite("s");
+    NamedTest test("t");
+    collector.startTestSuite(&suite);
+    collector.startTest(&test);
+    collector.endTest(&test);
+    collector.endTestSuite(&suite);
+
+    HistoryRun run;
+    run.runKey = "shown";
+    run.started = 2;
+    RunHistory shown(path_, run);
+    EXPECT_TRUE(shown.record(collector, stderr, true));
+    ASSERT_EQ(shown.strips()->count("s/t"), 1u);
+    EXPECT_EQ(shown.strips()->at("s/t").states, (std::vector<std::string>{"failed", "passed"}));
+
+    // With no output showing them (no HTML report: --no-output, say), the run is recorded and
+    // nothing is read back.
+    run.runKey = "unshown";
+    run.started = 3;
+    RunHistory unshown(path_, run);
+    EXPECT_TRUE(unshown.record(collector, stderr, false));
+    EXPECT_TRUE(unshown.strips()->empty());
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    const auto histories = recentHistories(database, 30);
+    ASSERT_EQ(histories.size(), 1u);
+    EXPECT_EQ(histories[0].runs.size(), 3u);
 }

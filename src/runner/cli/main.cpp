@@ -79,6 +79,12 @@ int main(int argc, char** argv) {
     }
     std::fflush(stdout);
 
+    // Each test's param, tags and type, and its history strip: only the HTML report shows them
+    // (10 000 tests' facts are a map of 10 000 entries).
+    const bool htmlReport =
+        std::any_of(options.outputs.begin(), options.outputs.end(),
+                    [](const OutputRequest& output) { return output.type == "html"; });
+
     // The history file is checked before anything runs; it is written once the run is over.
     std::unique_ptr<RunHistory> history;
     if (!options.history.empty()) {
@@ -109,14 +115,9 @@ int main(int argc, char** argv) {
     RunPlan plan(*executor);
     plan.gate().setFailFast(options.failFast);
     plan.setRetries(options.retries);
-    // Each test's param, tags and type: only the HTML report shows them (10 000 tests' facts
-    // are a map of 10 000 entries).
-    const bool factsShown =
-        std::any_of(options.outputs.begin(), options.outputs.end(),
-                    [](const OutputRequest& output) { return output.type == "html"; });
     for (auto& suite : planned.suites) {
         applyOverrides(suite, inputs.overrides);
-        if (factsShown) {
+        if (htmlReport) {
             addTestFacts(suite, planned.reportSettings.testFacts);
         }
         plan.addSuite(std::move(suite));
@@ -143,7 +144,8 @@ int main(int argc, char** argv) {
 
     int status = runStatus(listeners.collector(), options.failOnFlaky, interrupted);
     if (history) {
-        history->record(listeners.collector(), stderr);  // a warning at worst: status stays
+        // A warning at worst: the status stays the run's.
+        history->record(listeners.collector(), stderr, htmlReport);
     }
     if (!listeners.writeOutputs(stderr)) {
         status = configurationError;

@@ -32,9 +32,9 @@ public:
     // Filled by record(): what the reports show (share it through ReporterSettings::history).
     std::shared_ptr<const reporters::HistoryStrips> strips() const { return strips_; }
 
-    // Appends the run and reads the strips back; false (after a warning on `console`) when the
-    // history could not be written or read.
-    bool record(const TestResultCollector& collector, std::FILE* console);
+    // Appends the run and, when `readBack` (an output shows them), reads the strips back; false
+    // (after a warning on `console`) when the history could not be written or read.
+    bool record(const TestResultCollector& collector, std::FILE* console, bool readBack);
 
 private:
     std::string path_;
