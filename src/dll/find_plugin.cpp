@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "dll/library_naming.h"
 #include "dll/shared_library.h"
 
 namespace robottestingframework {
@@ -36,10 +37,23 @@ std::string whatElse(const std::string& path) {
     return std::string("is ") + kind + ", not a plug-in file: " + path;
 }
 
+// "/x", and on Windows "C:\x", "\x" and "\\server\x" too.
+bool isRooted(const std::string& path) {
+    const std::filesystem::path given(path);
+    return given.is_absolute() || given.has_root_directory();
+}
+
+// A path rather than a bare name: it has a folder separator ('/', and on Windows a backslash).
+bool isPath(const std::string& name) {
+    return name.find('/') != std::string::npos ||
+           name.find(static_cast<char>(std::filesystem::path::preferred_separator)) !=
+               std::string::npos;
+}
+
 // The dynamic loader looks a bare "libfoo.so" up on the library path, not in the current
 // folder: what was found is handed on as an absolute path.
 std::string absolute(const std::string& path) {
-    if (path.empty() || path[0] == '/') {
+    if (path.empty() || isRooted(path)) {
         return path;
     }
     std::error_code error;
@@ -95,14 +109,15 @@ std::string list(const std::vector<std::string>& items) {
     return text;
 }
 
-// The folders of RTF_PLUGIN_PATH (':'-separated, empty entries left out).
+// The folders of RTF_PLUGIN_PATH (separated as PATH is: ':', on Windows ';'; empty entries
+// left out).
 std::vector<std::string> pluginSearchPath() {
     std::vector<std::string> folders;
     const char* value = std::getenv("RTF_PLUGIN_PATH");
     std::string text = value != nullptr ? value : "";
     std::size_t start = 0;
     while (start <= text.size()) {
-        std::size_t end = text.find(':', start);
+        std::size_t end = text.find(pathListSeparator(), start);
         if (end == std::string::npos) {
             end = text.size();
         }
@@ -128,10 +143,10 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
         }
         return {};
     }
-    if (name.find('/') != std::string::npos) {
+    if (isPath(name)) {
         // A path: absolute as is; relative to the suite's folder first, then the current one.
         std::vector<std::string> tried;
-        if (name[0] != '/' && !besideDir.empty()) {
+        if (!isRooted(name) && !besideDir.empty()) {
             tried.push_back(join(besideDir, name));
         }
         tried.push_back(name);

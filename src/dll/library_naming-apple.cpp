@@ -42,5 +42,9 @@ std::vector<std::string> systemLibraryFolders() {
     return folders;
 }
 
+char pathListSeparator() {
+    return ':';
+}
+
 }  // namespace plugin
 }  // namespace robottestingframework

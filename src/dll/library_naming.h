@@ -12,6 +12,10 @@ namespace plugin {
 
 // The environment variable whose folders the loader searches first for a bare name.
 const char* libraryPathVariable();
+// What separates the folders of such a variable, and of RTF_PLUGIN_PATH: ':', on Windows ';'
+// (a drive letter's colon is part of a path there).
+char pathListSeparator();
+
 // The folders it searches after those, in its order.
 std::vector<std::string> systemLibraryFolders();
 

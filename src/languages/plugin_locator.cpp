@@ -2,6 +2,7 @@
 
 #include <robottestingframework/dll/DllPluginLoader.h>
 
+#include "languages/script_module_loading.h"
 #include "languages/test_loader.h"
 
 namespace robottestingframework {
@@ -39,7 +40,7 @@ bool locatePlugin(const std::string& plugin, const std::string& givenPath,
         return false;
     }
     if (!isSupportedType(type)) {
-        error = "'" + path + "' is a " + type + " plug-in; this build does not support " + type;
+        error = "'" + path + "' is a " + type + " plug-in; " + unsupportedTypeReason(type);
         return false;
     }
     return true;

@@ -117,5 +117,9 @@ const LanguageModule* languageModule(const std::string& language, std::string& e
     return module;
 }
 
+std::string unsupportedTypeReason(const std::string& type) {
+    return "this build does not support " + type;
+}
+
 }  // namespace languages
 }  // namespace robottestingframework

@@ -14,5 +14,12 @@ namespace languages {
 // sit in (../lib/robottestingframework from the program), else where it was installed.
 const LanguageModule* languageModule(const std::string& language, std::string& error);
 
+// The script languages of this build ("python", "lua", "ruby"), each in a module of its own.
+bool isScriptLanguage(const std::string& type);
+
+// Why a test or fixture of `type` cannot run in this build, for an error after its file name:
+// "this build does not support ruby", or what is missing on this platform.
+std::string unsupportedTypeReason(const std::string& type);
+
 }  // namespace languages
 }  // namespace robottestingframework

@@ -45,7 +45,8 @@ std::string languageName(const std::string& type) {
     return name;
 }
 
-// The script languages of this build: each in a module of its own, loaded on first use.
+}  // namespace
+
 bool isScriptLanguage([[maybe_unused]] const std::string& type) {  // unused without languages
 #ifdef RTF_HAVE_PYTHON
     if (type == "python") {
@@ -64,6 +65,8 @@ bool isScriptLanguage([[maybe_unused]] const std::string& type) {  // unused wit
 #endif
     return false;
 }
+
+namespace {
 
 const LanguageModule* scriptModule(const std::string& type, std::string& error) {
     std::string reason;
@@ -126,12 +129,6 @@ bool prestartLanguage(const std::string& type, std::string& error) {
         return false;
     }
     return module->prestart(error);
-}
-
-pid_t forkLanguage(const std::string& type) {
-    std::string error;
-    const LanguageModule* module = isScriptLanguage(type) ? languageModule(type, error) : nullptr;
-    return module != nullptr && module->fork != nullptr ? module->fork() : ::fork();
 }
 
 void rehearseLanguage(const std::string& type) {

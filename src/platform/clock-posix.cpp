@@ -2,8 +2,6 @@
 
 #include <time.h>
 
-#include <cmath>
-
 namespace robottestingframework {
 namespace platform {
 
@@ -11,21 +9,6 @@ double monotonicSeconds() {
     timespec now{};
     ::clock_gettime(CLOCK_MONOTONIC, &now);
     return static_cast<double>(now.tv_sec) + static_cast<double>(now.tv_nsec) * 1e-9;
-}
-
-Deadline::Deadline(double seconds) : at_(seconds > 0 ? monotonicSeconds() + seconds : -1) {}
-
-bool Deadline::expired() const {
-    return at_ >= 0 && monotonicSeconds() >= at_;
-}
-
-int Deadline::remainingMs(int cap) const {
-    if (at_ < 0) {
-        return cap;
-    }
-    double left = (at_ - monotonicSeconds()) * 1000.0;
-    int ms = left <= 0 ? 0 : static_cast<int>(std::ceil(left));
-    return cap >= 0 && ms > cap ? cap : ms;
 }
 
 }  // namespace platform

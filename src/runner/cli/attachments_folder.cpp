@@ -4,6 +4,8 @@
 #include <filesystem>
 #include <system_error>
 
+#include "platform/environment.h"
+
 namespace fs = std::filesystem;
 
 namespace robottestingframework {
@@ -58,7 +60,7 @@ bool prepareAttachmentsFolder(const Options& options, std::string& error) {
             return false;
         }
     }
-    ::setenv(kVariable, folder.c_str(), 1);
+    platform::setEnvironment(kVariable, folder.string());
     return true;
 }
 

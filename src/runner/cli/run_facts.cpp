@@ -1,10 +1,9 @@
 #include "runner/cli/run_facts.h"
 
-#include <limits.h>
-#include <unistd.h>
-
 #include <filesystem>
 #include <system_error>
+
+#include "reporters/host_name.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -41,10 +40,7 @@ std::vector<std::pair<std::string, std::string>> runFacts(const Options& options
     if (!error) {
         facts.emplace_back("working folder", folder.string());
     }
-    char host[HOST_NAME_MAX + 1] = {};
-    if (::gethostname(host, sizeof(host) - 1) == 0) {
-        facts.emplace_back("host", host);
-    }
+    facts.emplace_back("host", reporters::hostName());
     facts.emplace_back("version", RTF_VERSION);
     facts.emplace_back("isolation",
                        options.isolation == Isolation::None ? "none (in process)" : "process");

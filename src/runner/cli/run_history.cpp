@@ -1,7 +1,6 @@
 #include "runner/cli/run_history.h"
 
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <chrono>
 #include <map>
@@ -9,6 +8,7 @@
 
 #include <robottestingframework/Measurement.h>
 
+#include "reporters/host_name.h"
 #include "runner/cli/program_name.h"
 #include "runner/history/collected_run.h"
 #include "runner/history/history_database.h"
@@ -136,10 +136,7 @@ HistoryRun thisRun(int argc, const char* const* argv, bool sharded, unsigned int
     run.runKey = historyRunKey();
     run.started =
         std::chrono::duration<double>(std::chrono::system_clock::now().time_since_epoch()).count();
-    char host[256] = {};
-    if (::gethostname(host, sizeof(host) - 1) == 0) {
-        run.host = host;
-    }
+    run.host = reporters::hostName();
     for (int i = 0; i < argc; ++i) {
         const std::string word = argv[i];
         const bool quote = word.empty() || word.find_first_of(" \t\"'\\$") != std::string::npos;

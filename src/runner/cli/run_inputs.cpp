@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "platform/environment.h"
 #include "runner/cli/command_line_suites.h"
 #include "runner/cli/output_paths.h"
 #include "runner/cli/program_name.h"
@@ -31,14 +32,14 @@ bool usePluginPath(const std::vector<std::string>& folders) {
                          folder.c_str());
             return false;
         }
-        path += (path.empty() ? "" : ":") +
+        path += (path.empty() ? "" : std::string(1, platform::pathListSeparator)) +
                 std::filesystem::absolute(folder, error).lexically_normal().string();
     }
     const char* before = std::getenv("RTF_PLUGIN_PATH");
     if (before != nullptr && *before != '\0') {
-        path += std::string(":") + before;
+        path += platform::pathListSeparator + std::string(before);
     }
-    ::setenv("RTF_PLUGIN_PATH", path.c_str(), 1);
+    platform::setEnvironment("RTF_PLUGIN_PATH", path);
     return true;
 }
 

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <map>
 
+#include "platform/environment.h"
 #include "runner/plan/shard_split.h"
 #include "runner/reports/report_reader.h"
 
@@ -30,7 +31,7 @@ bool prepareShard(Options& options, ShardChoice& choice, std::string& error) {
     }
     const char* scratch = std::getenv("TEST_TMPDIR");
     if (scratch != nullptr && *scratch != '\0') {
-        ::setenv("TMPDIR", scratch, 1);
+        platform::setEnvironment("TMPDIR", scratch);
     }
     // Bazel asks a test that shards to say so by touching this file.
     const char* status = std::getenv("TEST_SHARD_STATUS_FILE");
@@ -42,7 +43,7 @@ bool prepareShard(Options& options, ShardChoice& choice, std::string& error) {
         }
     }
     for (const auto& name : shardVariables()) {
-        ::unsetenv(name.c_str());
+        platform::unsetEnvironment(name);
     }
     return true;
 }

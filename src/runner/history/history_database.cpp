@@ -155,5 +155,9 @@ bool looksLikeHistoryFile(const std::string& path) {
     return in.gcount() == sizeof(magic) && std::memcmp(magic, "SQLite format 3", 16) == 0;
 }
 
+bool historyBuiltIn() {
+    return true;
+}
+
 }  // namespace runner
 }  // namespace robottestingframework

@@ -52,5 +52,8 @@ private:
 // --durations tells a history file from a report.
 bool looksLikeHistoryFile(const std::string& path);
 
+// False in a build without SQLite (Windows here, no_sqlite_history.cpp): --history is refused.
+bool historyBuiltIn();
+
 }  // namespace runner
 }  // namespace robottestingframework

@@ -52,7 +52,9 @@ std::string below(const fs::path& path, const fs::path& folder) {
 
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder) {
     const fs::path written = fs::path(plugin).lexically_normal();
-    if (!written.is_absolute()) {
+    // On Windows "\\x" (or "/x") is rooted on the current drive: no more relative to the suite
+    // than "C:\\x" is.
+    if (!written.is_absolute() && !written.has_root_directory()) {
         std::string text = written.generic_string();
         // "./x" is normal as "x"; a lone "." (never a plug-in) stays as written.
         return text.empty() ? plugin : text;

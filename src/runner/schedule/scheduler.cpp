@@ -8,6 +8,7 @@
 
 #include <robottestingframework/TestSuite.h>
 
+#include "platform/environment.h"
 #include "variables/variables.h"
 
 namespace robottestingframework {
@@ -201,13 +202,13 @@ void Scheduler::start(Job& job) {
         // while it runs.
         for (const auto& variable : environment) {
             const std::size_t equals = variable.find('=');
-            ::setenv(variable.substr(0, equals).c_str(), variable.c_str() + equals + 1, 1);
+            platform::setEnvironment(variable.substr(0, equals), variable.substr(equals + 1));
         }
         job.events.passTo(result_);
         suite.run(job.result);
         job.events.passTo(nullptr);
         for (const auto& variable : environment) {
-            ::unsetenv(variable.substr(0, variable.find('=')).c_str());
+            platform::unsetEnvironment(variable.substr(0, variable.find('=')));
         }
         finish(job);
         return;
