@@ -147,6 +147,10 @@ public:
     void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
     void addAttachment(const Test* test, const Attachment& attachment) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
+    // Takes the events that carry a message or a payload as they are: a check it does not keep
+    // is not copied, a measurement or attachment is shared, not made again. A subclass that
+    // overrides the named handlers gets them all, as in RTF 2.x.
+    void onEvent(const RunEvent& event) override;
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by
@@ -164,6 +168,8 @@ private:
     // `payload`: the measurement or attachment the event carries, if any.
     void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true,
                 const ResultEvent* payload = nullptr);
+    // Whether record() would drop this event unseen (a passed check it does not keep).
+    bool dropsCheck(ResultEvent::Kind kind, const Test* test);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
     // Cuts a test's output to its tail once the run's output budget is spent.

@@ -1,7 +1,9 @@
 #include <robottestingframework/TestResultCollector.h>
 
 #include <algorithm>
+#include <typeinfo>
 
+#include <robottestingframework/RunEvent.h>
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
@@ -161,6 +163,52 @@ TestResultCollector::OpenTest* TestResultCollector::findOpen(const Test* test) {
     return nullptr;
 }
 
+bool TestResultCollector::dropsCheck(Kind kind, const Test* test) {
+    // Most events of a passing test are checks: without the log they need not be copied.
+    return kind == Kind::Check && !keepChecks_ && !(keepEvents_ && keepLog_) &&
+           findOpen(test) != nullptr;
+}
+
+void TestResultCollector::onEvent(const RunEvent& event) {
+    // Exactly this class: a subclass may have overridden the named handlers.
+    if (typeid(*this) != typeid(TestResultCollector)) {
+        TestListener::onEvent(event);
+        return;
+    }
+    const ResultEvent& data = event.data;
+    switch (data.kind) {
+        case Kind::Report:
+        case Kind::Check:
+        case Kind::Failure:
+        case Kind::Error:
+        case Kind::Skipped:
+        case Kind::Crash:
+        case Kind::Timeout:
+        case Kind::Interrupted:
+            if (!dropsCheck(data.kind, event.test)) {
+                record(data.kind, event.test, data.message, data.passed);
+            }
+            return;
+        case Kind::Measurement:
+            if (data.measurement) {
+                record(data.kind, event.test, TestMessage(describeMeasurement(*data.measurement)),
+                       data.passed, &data);
+                return;
+            }
+            break;
+        case Kind::Attachment:
+            if (data.attachment) {
+                record(data.kind, event.test, TestMessage(describeAttachment(*data.attachment)),
+                       true, &data);
+                return;
+            }
+            break;
+        default:
+            break;
+    }
+    TestListener::onEvent(event);
+}
+
 void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed,
                                  const ResultEvent* payload) {
     // A test's own event goes to its record (and its repetition); anything else open (a
@@ -168,7 +216,6 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, b
     const OpenTest* open = findOpen(test);
     TestRecord* owner = open != nullptr ? &suites_[open->suite].tests[open->index] : nullptr;
     const bool logged = keepEvents_ && keepLog_;
-    // Most events of a passing test are checks: without the log they need not be copied.
     if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
         return;
     }

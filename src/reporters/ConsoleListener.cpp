@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <utility>
+
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
@@ -87,10 +89,11 @@ void ConsoleListener::addFailure(const Test* test, TestMessage msg) {
 }
 
 void ConsoleListener::addCheck(const Test* test, TestMessage msg, bool passed) {
-    record_.addCheck(test, msg, passed);
+    // Printed first, so that the record can take the message (a check per test: no copy).
     if (showChecks_) {
         say(Kind::Check, test, msg, passed);
     }
+    record_.addCheck(test, std::move(msg), passed);
 }
 
 void ConsoleListener::addEvent(const Test* test, const ResultEvent& event) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <utility>
 
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
@@ -100,22 +101,6 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     return text;
 }
 
-// `text` with each line indented, added to `out` (a suite's body, into its parent's: no copy
-// of its own, the body being most of the report), with room for `more` bytes after it: the
-// lines that close the suite must not make `out` grow again, which would copy it once more.
-void appendIndented(std::string& out, const std::string& text, std::size_t more) {
-    const std::size_t lines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-    out.reserve(out.size() + text.size() + 4 * (lines + 1) + more);
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-        std::size_t end = text.find('\n', begin);
-        end = end == std::string::npos ? text.size() : end + 1;
-        out += "    ";
-        out.append(text, begin, end - begin);
-        begin = end;
-    }
-}
-
 }  // namespace
 
 void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
@@ -153,8 +138,8 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     Block& parent = blocks.back();
     const std::string name = description(suite.name.empty() ? "unnamed suite" : suite.name);
     parent.body += "# Subtest: " + name + "\n";
-    appendIndented(parent.body, suite.body, 2 * name.size() + 128);
-    suite.body = std::string();
+    // Moved, not copied: the body is most of the report.
+    parent.body.appendNested(std::move(suite.body));
     parent.body += "    1.." + std::to_string(suite.points) + "\n";
     const std::string number = std::to_string(++parent.points);
     const std::string extra = records("", suite.attachments);
@@ -201,7 +186,7 @@ void TapReporter::writeDocument(ReportText& out) {
         bailOuts = &closedBailOuts;
     }
     out += "TAP version 14\n1.." + std::to_string(blocks->front().points) + "\n";
-    out += blocks->front().body;
+    blocks->front().body.writeTo(out);
     // After every result, so none is lost: a consumer stops reading at a bail-out.
     if (!bailOuts->empty()) {
         out += "Bail out! " + bailOuts->front() + "\n";
@@ -328,7 +313,7 @@ void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
     }
     // The failed attempt's point is taken back: the test gets one point, its last attempt's.
     Block& block = blocks_.back();
-    block.body.resize(last_.bodySize);
+    block.body.truncate(last_.bodySize);
     block.points = last_.points;
     block.failed = last_.failed;
     retrying_ = last_.id;

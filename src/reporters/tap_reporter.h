@@ -8,6 +8,7 @@
 
 #include <robottestingframework/ResultEvent.h>
 
+#include "reporters/nested_text.h"
 #include "reporters/reporter.h"
 
 namespace robottestingframework {
@@ -43,7 +44,7 @@ private:
     // A suite being written: its test points so far (unindented; indented when it closes).
     struct Block {
         std::string name;
-        std::string body;
+        NestedText body;
         std::size_t points = 0;
         bool failed = false;
         std::vector<TestMessage> fixtureProblems;

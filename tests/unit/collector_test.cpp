@@ -601,3 +601,72 @@ TEST(TestResultCollector, TheRunnersViewCountsThemAsSkipped) {
     EXPECT_EQ(c.passedCount(), 1u);
     EXPECT_EQ(c.failedSuiteCount(), 1u);
 }
+
+namespace {
+
+// A collector as an RTF 2.x user may extend it: its own handler must still hear every report.
+class CountingCollector : public TestResultCollector {
+public:
+    void addReport(const Test* test, TestMessage msg) override {
+        ++reports;
+        TestResultCollector::addReport(test, std::move(msg));
+    }
+    int reports = 0;
+};
+
+}  // namespace
+
+TEST(TestResultCollector, KeepsTheMeasurementAnEventCarriesInsteadOfACopy) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named t("measuring");
+    result.startTest(&t);
+    RunEvent event;
+    event.test = &t;
+    event.data.kind = ResultEvent::Kind::Measurement;
+    event.data.measurement = std::make_shared<const Measurement>(Measurement{"rate", 99.5, "Hz"});
+    event.data.message = TestMessage(describeMeasurement(*event.data.measurement));
+    result.publish(event);
+    result.endTest(&t);
+    ASSERT_EQ(c.suites().size(), 1u);
+    const std::vector<ResultEvent>& events = c.suites()[0].tests.at(0).events;
+    ASSERT_EQ(events.size(), 1u);
+    // Shared with the event (10 000 tests of 3 measurements: one object each, not two).
+    EXPECT_EQ(events[0].measurement.get(), event.data.measurement.get());
+    EXPECT_EQ(events[0].message.getMessage(), "rate = 99.5 Hz");
+    EXPECT_TRUE(events[0].passed);
+}
+
+TEST(TestResultCollector, ASubclassStillHearsEachEventThroughItsOwnHandler) {
+    CountingCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named t("reporting");
+    result.startTest(&t);
+    result.addReport(&t, TestMessage("one"));
+    result.addReport(&t, TestMessage("two"));
+    result.endTest(&t);
+    EXPECT_EQ(c.reports, 2);
+    ASSERT_EQ(c.suites().at(0).tests.at(0).events.size(), 2u);
+    EXPECT_EQ(c.suites()[0].tests[0].events[1].message.getMessage(), "two");
+}
+
+TEST(TestResultCollector, WithoutChecksKeptAPassedCheckLeavesNoEventAndAFailedOneItsFailure) {
+    TestResultCollector c;
+    c.setKeepEventLog(false);
+    c.setKeepChecks(false);
+    TestResult result;
+    result.addListener(&c);
+    Named t("checking");
+    result.startTest(&t);
+    result.addCheck(&t, TestMessage("fine", "", "file.cpp", 3), true);
+    result.addCheck(&t, TestMessage("broken", "", "file.cpp", 4), false);
+    result.addFailure(&t, TestMessage("broken", "", "file.cpp", 4));
+    result.endTest(&t);
+    const TestRecord& record = c.suites().at(0).tests.at(0);
+    ASSERT_EQ(record.events.size(), 1u);
+    EXPECT_EQ(record.events[0].kind, ResultEvent::Kind::Failure);
+    EXPECT_EQ(record.events[0].message.getSourceLineNumber(), 4u);
+    EXPECT_EQ(record.status, TestStatus::Failed);
+}
