@@ -172,7 +172,8 @@ def test_a_suite_file_over_the_size_limit_is_refused(tmp_path):
         f.truncate(16 * 1024 * 1024 + 1)  # sparse: no disk used
     run = run_runner("--suite", big.name, "--no-output", cwd=tmp_path, timeout=30)
     assert run.returncode == 2, run
-    assert f"{big.name}: the suite file is larger than 16 MiB, the limit of a suite file" in run.stderr
+    assert (f"{big.name}: the suite file is larger than 16 MiB, the limit of a suite file"
+            in run.stderr), run
 
 
 # --- 11. Dependency cycles ------------------------------------------------------------------------
