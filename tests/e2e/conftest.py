@@ -69,9 +69,10 @@ class Run:
         return f"<exit {self.returncode}>\n--- stdout\n{self.stdout}\n--- stderr\n{self.stderr}"
 
 
-def _hosts_ruby(args):
-    """True when a run of the runner with `args` starts the Ruby VM in its own process: in
-    process (--isolation none) with a Ruby script named, or named in a suite file given."""
+def _hosts_ruby(args, cwd):
+    """True when a run of the runner with `args`, started in `cwd`, starts the Ruby VM in its
+    own process: in process (--isolation none) with a Ruby script named, or named in a suite
+    file given (a relative one is found from `cwd`, as the runner finds it)."""
     args = [str(a) for a in args]
     in_process = "--isolation=none" in args or any(
         a == "--isolation" and b == "none" for a, b in zip(args, args[1:]))
@@ -80,33 +81,36 @@ def _hosts_ruby(args):
     for arg in args:
         if arg.endswith(".rb"):
             return True
-        if arg.endswith(".xml") and os.path.isfile(arg):
-            with open(arg, errors="replace") as f:
+        suite = os.path.join(cwd or ".", arg)
+        if arg.endswith(".xml") and os.path.isfile(suite):
+            with open(suite, errors="replace") as f:
                 if ".rb" in f.read():
                     return True
     return False
 
 
-def runner_environment(args, env, inherit=True):
-    """The environment of one run of the runner: ours with `env` applied (only `env` when not
-    `inherit`). Under the sanitizer job (ctest in build-asan/, tests/sanitizers/), a runner that
-    hosts the Ruby VM runs without leak checks: LeakSanitizer crashes on the VM's thread at
-    exit. ASan and UBSan stay on."""
+def runner_environment(args, env, inherit=True, cwd=None):
+    """The environment of one run of the runner in `cwd`: ours with `env` applied (only `env`
+    when not `inherit`). Under the sanitizer job (ctest in build-asan/, tests/sanitizers/), a
+    runner that hosts the Ruby VM runs without leak checks: LeakSanitizer crashes on the VM's
+    thread at exit. ASan and UBSan stay on."""
     full_env = dict(os.environ) if inherit else {}
     if env:
         full_env.update(env)
     asan = full_env.get("ASAN_OPTIONS", "")
-    if "detect_leaks=1" in asan and _hosts_ruby(args):
+    if "detect_leaks=1" in asan and _hosts_ruby(args, cwd):
         full_env["ASAN_OPTIONS"] = asan.replace("detect_leaks=1", "detect_leaks=0")
     return full_env
 
 
-def run_runner(*args, timeout=120, cwd=None, env=None, input=None, inherit=True):
-    """Runs the runner with `args`; returns Run (exit status, stdout, stderr).
-    The runner is killed (its whole process group) if it outlives `timeout`. With
-    inherit=False its environment is `env` alone (see empty_environment)."""
+def run_runner(*args, cwd, timeout=120, env=None, input=None, inherit=True):
+    """Runs the runner with `args` in the folder `cwd`; returns Run (exit status, stdout,
+    stderr). `cwd` has no default: users run the runner from their suite's folder and name
+    their files relatively, and so do the tests (a test about another folder says so). The
+    runner is killed (its whole process group) if it outlives `timeout`. With inherit=False
+    its environment is `env` alone (see empty_environment)."""
     assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
-    full_env = runner_environment(args, env, inherit)
+    full_env = runner_environment(args, env, inherit, cwd)
     proc = subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.PIPE if input else subprocess.DEVNULL,
@@ -306,11 +310,11 @@ def marked(marker, **more):
     return {MARKER_VARIABLE: marker, **more}
 
 
-def start_runner(*args, cwd=None, env=None):
-    """Starts the runner without waiting (for tests that signal it): a Popen in a session of
-    its own, text stdout/stderr pipes."""
+def start_runner(*args, cwd, env=None):
+    """Starts the runner in the folder `cwd` (required, as for run_runner) without waiting
+    (for tests that signal it): a Popen in a session of its own, text stdout/stderr pipes."""
     assert RUNNER, "RTF_TESTRUNNER is not set (run through ctest)"
-    full_env = runner_environment(args, env)
+    full_env = runner_environment(args, env, cwd=cwd)
     return subprocess.Popen([RUNNER, *map(str, args)], cwd=cwd, env=full_env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                             stdin=subprocess.DEVNULL, start_new_session=True, text=True)

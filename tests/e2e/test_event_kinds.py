@@ -3,7 +3,8 @@ relay: ResultEvent::Kind::Probe, reserved for this test, is sent by the probe_ev
 data (TestResult::publish). No relay, queue, writer or wire code names it, so it travels as any
 kind added later would: in-process and isolated, one suite at a time and two at once. Its
 table row gives it the state "failed" and the word "probe", so every output shows whether it
-arrived: a relay that dropped it would leave the test passed there."""
+arrived: a relay that dropped it would leave the test passed there. The runner starts in the
+suites' folder and is given relative paths, as users run it."""
 import json
 import re
 import xml.etree.ElementTree as ET
@@ -24,7 +25,7 @@ def suites(tmp_path, suite_file):
   <test name="{name}-before">{plugin("passing_test")}</test>
   <test name="{name}-probe">{plugin("probe_event")}</test>
   <test name="{name}-after">{plugin("passing_test")}</test>
-</suite>""", name=f"{name}.xml")]
+</suite>""", name=f"{name}.xml").name]
     return paths
 
 
@@ -34,9 +35,9 @@ def test_a_kind_with_only_its_table_rows_reaches_every_reporter(
         tmp_path, isolation, jobs, suite_file):
     args = ["--isolation", isolation, "-j", jobs, *suites(tmp_path, suite_file)]
     out = {kind: tmp_path / f"r.{kind}" for kind in ("txt", "xml", "tap", "json", "html")}
-    r = run_runner(*args, "--output", f"text:{out['txt']}", "--output", f"junit:{out['xml']}",
-                   "--output", f"tap:{out['tap']}", "--output", f"json:{out['json']}",
-                   "--output", f"html:{out['html']}", cwd=tmp_path, timeout=90)
+    r = run_runner(*args, "--output", "text:r.txt", "--output", "junit:r.xml",
+                   "--output", "tap:r.tap", "--output", "json:r.json",
+                   "--output", "html:r.html", cwd=tmp_path, timeout=90)
     assert r.returncode == 1, r
     probes = ["first-probe", "second-probe"]
 

@@ -2,7 +2,10 @@
 (C++, scripts, the robot's world), all three at once as `./run.sh example` runs them, the C++
 test plug-in alone with params, and the program using the library from its own main().
 Every run is marked with an environment variable its processes inherit, so a process left
-behind (the MQTT broker, the simulated robot) is found by its mark."""
+behind (the MQTT broker, the simulated robot) is found by its mark. The runner starts in a copy
+of the build tree's examples folder and is given relative paths, as the README's
+`cd examples && robottestingframework-testrunner --suite example.xml`; only the quick start run
+starts elsewhere, with absolute paths, as `./run.sh example` does."""
 import json
 import os
 import re
@@ -67,6 +70,15 @@ def mark():
     assert not left, f"processes left behind: {left}"
 
 
+def examples_copy(tmp_path):
+    """A copy of the build tree's examples folder (what a user's build leaves there), so that
+    the results, logs and attachments of a run from it land under tmp_path."""
+    folder = tmp_path / "examples"
+    shutil.copytree(EXAMPLES, folder, ignore=shutil.ignore_patterns(
+        "rtf-logs", "rtf-attachments", "result.txt", "CMakeFiles", "cmake_install.cmake"))
+    return folder
+
+
 def ports_file(folder, copies=1):
     """A resource file like examples/robot/ports.json, with free ports (other runs share the
     machine): `copies` items in each pool."""
@@ -104,10 +116,11 @@ def check_passed(run, junit, names):
 @pytest.mark.parametrize("isolation", ["none", "process"])
 @pytest.mark.parametrize("suite", list(SUITES))
 def test_example_suite_passes(tmp_path, mark, suite, isolation):
-    junit = tmp_path / "junit.xml"
-    run = run_runner("--suite", EXAMPLES / suite, "--isolation", isolation, "--verbose",
-                     "--resources", ports_file(tmp_path),
-                     "--output", f"junit:{junit}", cwd=tmp_path, timeout=60,
+    examples = examples_copy(tmp_path)
+    junit = examples / "junit.xml"
+    run = run_runner("--suite", suite, "--isolation", isolation, "--verbose",
+                     "--resources", ports_file(examples).name,
+                     "--output", "junit:junit.xml", cwd=examples, timeout=60,
                      env={"RTF_E2E_MARK": mark})
     check_passed(run, junit, SUITES[suite])
 
@@ -115,11 +128,12 @@ def test_example_suite_passes(tmp_path, mark, suite, isolation):
 @pytest.mark.parametrize("isolation", ["none", "process"])
 def test_the_robot_example_takes_its_ports_from_variables(tmp_path, mark, isolation):
     broker, robot = free_port(), free_port()
-    junit = tmp_path / "junit.xml"
-    run = run_runner("--suite", EXAMPLES / "robot" / "robot.xml", "--isolation", isolation,
-                     "--resources", ports_file(tmp_path),
+    examples = examples_copy(tmp_path)
+    junit = examples / "junit.xml"
+    run = run_runner("--suite", "robot/robot.xml", "--isolation", isolation,
+                     "--resources", ports_file(examples).name,
                      "--verbose", "--var", f"robot_port={robot}", "--var",
-                     f"broker_port={broker}", "--output", f"junit:{junit}", cwd=tmp_path,
+                     f"broker_port={broker}", "--output", "junit:junit.xml", cwd=examples,
                      timeout=60, env={"RTF_E2E_MARK": mark})
     check_passed(run, junit, SUITES["robot/robot.xml"])
     assert f"TCP port 127.0.0.1:{robot}" in run.output, run
@@ -129,13 +143,15 @@ def test_the_robot_example_takes_its_ports_from_variables(tmp_path, mark, isolat
     xml = junit.read_text()
     assert "[[PROPERTY|joint tracking error=" in xml, xml
     assert "[[PROPERTY|joint state rate=" in xml and "[[PROPERTY|message rate=" in xml, xml
-    plots = list((tmp_path / "rtf-attachments").glob("*-elbow-tracking.svg"))
+    plots = list((examples / "rtf-attachments").glob("*-elbow-tracking.svg"))
     assert len(plots) == 1 and "<polyline" in plots[0].read_text(), plots
     assert f"[[ATTACHMENT|{plots[0]}]]" in xml, xml
 
 
 def test_the_quick_start_example_run(tmp_path, mark):
-    """The three suites in one run with a report of each type, as `./run.sh example`."""
+    """The three suites in one run with a report of each type, as `./run.sh example` runs
+    them: from a folder of reports, the suites in the build tree named by absolute paths (on
+    purpose: the one example run that starts outside the suites' folder)."""
     started = time.monotonic()
     run = run_runner(*[arg for suite in SUITES for arg in ("--suite", EXAMPLES / suite)],
                      "--resources", ports_file(tmp_path), "--verbose", "--output", "text:example.txt", "--output",
@@ -166,12 +182,13 @@ def test_the_quick_start_example_run(tmp_path, mark):
 
 
 def test_two_copies_of_the_robot_example_run_side_by_side_on_ports_of_a_pool(tmp_path, mark):
-    ports = ports_file(tmp_path, copies=2)
+    examples = examples_copy(tmp_path)
+    ports = ports_file(examples, copies=2)
     pools = json.loads(ports.read_text())["local"][0]
-    junit = tmp_path / "junit.xml"
-    robot = EXAMPLES / "robot" / "robot.xml"
-    run = run_runner("-j", "2", "--resources", ports, "--suite", robot, "--suite", robot,
-                     "--verbose", "--output", f"junit:{junit}", cwd=tmp_path, timeout=90,
+    junit = examples / "junit.xml"
+    robot = "robot/robot.xml"
+    run = run_runner("-j", "2", "--resources", ports.name, "--suite", robot, "--suite", robot,
+                     "--verbose", "--output", "junit:junit.xml", cwd=examples, timeout=90,
                      env={"RTF_E2E_MARK": mark})
     assert run.returncode == 0, run
     assert re.search(r"^4 passed, 0 failed$", run.stdout, re.MULTILINE), run
@@ -182,15 +199,18 @@ def test_two_copies_of_the_robot_example_run_side_by_side_on_ports_of_a_pool(tmp
             assert f"TCP port 127.0.0.1:{item['id']}" in run.output, run
 
 
-def test_example_plugin_reads_its_param():
-    ok = run_runner("--test", MY_TEST, "--param", "--speed 30", "--no-output")
+def test_example_plugin_reads_its_param(tmp_path):
+    examples = examples_copy(tmp_path)
+    ok = run_runner("--test", MY_TEST.name, "--param", "--speed 30", "--no-output",
+                    cwd=examples)
     assert ok.returncode == 0, ok
     # 90 degrees at 0.001 deg/s takes longer than the test allows.
-    slow = run_runner("--test", MY_TEST, "--param", "--speed 0.001", "--no-output")
+    slow = run_runner("--test", MY_TEST.name, "--param", "--speed 0.001", "--no-output",
+                      cwd=examples)
     assert slow.returncode == 1, slow
     assert "too slow" in slow.output, slow
     # Without --speed its setup reports an error.
-    missing = run_runner("--test", MY_TEST, "--no-output")
+    missing = run_runner("--test", MY_TEST.name, "--no-output", cwd=examples)
     assert missing.returncode == 1, missing
     assert "--speed" in missing.output, missing
 

@@ -168,7 +168,7 @@ def test_a_timed_out_exec_test_keeps_its_points_and_output(tmp_path, isolation):
     path = shell(tmp_path, STOPPED_HALF_WAY)
     junit = tmp_path / "out.xml"
     r = run_runner("--isolation", isolation, "--timeout", "2", "-v", "--test", path,
-                   "--output", f"junit:{junit}", timeout=60)
+                   "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
     assert r.returncode == 1, r
     assert_kept_what_it_said(junit, "timed out")
 
@@ -180,7 +180,7 @@ def test_an_interrupted_exec_test_keeps_its_points_and_output(tmp_path, marker, 
     path = shell(tmp_path, STOPPED_HALF_WAY)
     junit = tmp_path / "out.xml"
     proc = start_runner("--isolation", isolation, "-v", "--test", path,
-                        "--output", f"junit:{junit}", env=marked(marker))
+                        "--output", f"junit:{junit}", env=marked(marker), cwd=tmp_path)
     ready = tmp_path / "check.ready"
     deadline = time.monotonic() + 30
     while not ready.exists():
@@ -200,7 +200,8 @@ def test_an_interrupted_exec_test_keeps_its_points_and_output(tmp_path, marker, 
 def test_an_unclosed_yaml_block_ends_at_the_next_test_line(tmp_path, isolation):
     path = shell(tmp_path, "echo 1..2\necho 'not ok 1 - torque'\necho '  ---'\n"
                            "echo '  message: too high'\necho 'ok 2 - speed'\n")
-    r = run_runner("--isolation", isolation, "--detail", "--no-output", "--test", path)
+    r = run_runner("--isolation", isolation, "--detail", "--no-output", "--test", path,
+                   cwd=tmp_path)
     assert r.returncode == 1, r  # not ok 1: the unclosed block itself fails nothing (TAP 14)
     assert "YAML block not closed" not in r.output, r
     assert "planned 2" not in r.output, r
@@ -211,7 +212,7 @@ def test_an_unclosed_yaml_block_ends_at_the_next_test_line(tmp_path, isolation):
 @pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_bail_out_names_its_line(tmp_path, isolation):
     path = shell(tmp_path, "echo 1..3\necho 'ok 1 - power'\necho 'Bail out! no robot'\n")
-    r = run_runner("--isolation", isolation, "--no-output", "--test", path)
+    r = run_runner("--isolation", isolation, "--no-output", "--test", path, cwd=tmp_path)
     assert r.returncode == 1, r
     assert f"Bail out! no robot [{path}:3]" in r.output, r
 
@@ -233,7 +234,7 @@ def test_deeply_nested_subtests_pass_in_bounded_time(tmp_path):
     stream.write_text(nested_tap(1000))
     path = shell(tmp_path, f"cat '{stream}'\n")
     began = time.monotonic()
-    r = run_runner("--no-output", "--test", path, timeout=60)
+    r = run_runner("--no-output", "--test", path, timeout=60, cwd=tmp_path)
     assert r.returncode == 0, r
     assert "1 passed" in r.stdout, r
     # Was 7.8 s before parsing was linear; now a fraction of a second (generous for a busy CI).
@@ -245,7 +246,7 @@ def test_deeply_nested_subtests_pass_in_bounded_time(tmp_path):
 @pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_a_missing_interpreter_is_named(tmp_path, isolation):
     path = program(tmp_path, "check.sh", "#!/no/such/interp -x\necho hi\n")
-    r = run_runner("--isolation", isolation, "--no-output", "--test", path)
+    r = run_runner("--isolation", isolation, "--no-output", "--test", path, cwd=tmp_path)
     assert r.returncode == 1, r
     assert "its interpreter /no/such/interp" in r.output, r
     assert str(path) in r.output, r
@@ -257,7 +258,7 @@ def test_a_missing_interpreter_is_named(tmp_path, isolation):
 def test_an_exec_test_dies_with_a_runner_killed_by_sigkill(tmp_path, marker, isolation):
     path = shell(tmp_path, "touch \"$0.ready\"\nexec sleep 60\n")
     proc = start_runner("--isolation", isolation, "--no-output", "--test", path,
-                        env=marked(marker))
+                        env=marked(marker), cwd=tmp_path)
     ready = tmp_path / "check.ready"
     deadline = time.monotonic() + 30
     while not ready.exists():
@@ -275,18 +276,18 @@ def test_daemons_of_exec_tests_do_not_survive_the_run(tmp_path, marker, isolatio
                            "</dev/null >/dev/null 2>&1 &\n"
                            "while [ ! -s \"$0.daemon\" ]; do sleep 0.05; done\nexit 0\n")
     r = run_runner("--isolation", isolation, "--no-output", "--test", path,
-                   env=marked(marker))
+                   env=marked(marker), cwd=tmp_path)
     assert r.returncode == 0, r
     assert leftover_processes(marker) == []
 
 
 def test_isolation_none_warns_what_it_cannot_guarantee(tmp_path):
     path = shell(tmp_path, "exit 0\n")
-    r = run_runner("--isolation", "none", "--no-output", "--test", path)
+    r = run_runner("--isolation", "none", "--no-output", "--test", path, cwd=tmp_path)
     assert r.returncode == 0, r
     warnings = [line for line in r.stderr.splitlines() if "--isolation none" in line]
     assert len(warnings) == 1, r
-    r = run_runner("--no-output", "--test", path)
+    r = run_runner("--no-output", "--test", path, cwd=tmp_path)
     assert "--isolation none" not in r.stderr, r
 
 
@@ -323,7 +324,8 @@ def test_a_script_that_exits_at_once_is_an_error_not_a_green_run(tmp_path, isola
     path = tmp_path / name
     path.write_text(text)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}")
+    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}",
+                   cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip(f"this build leaves {language} out")
     assert r.returncode == 1, r
@@ -346,7 +348,8 @@ class TestCase:
         robottestingframework.testCheck(True, "done")
 """)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}")
+    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}",
+                   cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves Python out")
     assert r.returncode == 0, r
@@ -369,7 +372,7 @@ class TestCase:
 """)
     began = time.monotonic()
     r = run_runner("--isolation", "none", "--timeout", "2", "-v", "--no-output", "--test", path,
-                   timeout=60)
+                   timeout=60, cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves Python out")
     assert time.monotonic() - began < 20, r  # was 30 s: the sleep ran to its end

@@ -1,6 +1,7 @@
 """Hostile and real-world input to the script languages and the fixtures, through the real
 runner (issue 14): text encodings, unflushed output, huge params, expansion bombs, taken
-ports, failing tear-downs, and the reasons carried to the tests a fixture failure skips."""
+ports, failing tear-downs, and the reasons carried to the tests a fixture failure skips. The
+runner starts in the test's folder and is given its files by relative paths, as users run it."""
 import os
 import socket
 import time
@@ -21,9 +22,10 @@ def isolation(request):
 
 
 def suite_with(tmp_path, body, name="suite.xml"):
+    """Writes the suite file `name` in tmp_path; returns its name, for a runner started there."""
     path = tmp_path / name
     path.write_text(f'<suite name="hostile">\n{body}\n</suite>\n')
-    return path
+    return path.name
 
 
 # --- 4. UTF-8 by default ---------------------------------------------------------------------
@@ -41,7 +43,7 @@ class TestCase:
         robottestingframework.testReport("encoding=" + sys.stdout.encoding.lower())
 # a comment with a degree sign: \u00b0C
 """, encoding="utf-8")
-    r = run_isolated(isolation, "--test", script, "-v", env=C_LOCALE)
+    r = run_isolated(isolation, "--test", script.name, "-v", cwd=tmp_path, env=C_LOCALE)
     assert r.returncode == 0, r
     assert "encoding=utf-8" in r.output, r
     assert "UnicodeEncodeError" not in r.output, r
@@ -60,7 +62,8 @@ def test_ruby_reads_utf8_files_under_the_c_locale(tmp_path, isolation):
   end
 end
 """, encoding="utf-8")
-    r = run_isolated(isolation, "--test", script, "--param", "caf\u00e9", "-v", env=C_LOCALE)
+    r = run_isolated(isolation, "--test", script.name, "--param", "caf\u00e9", "-v", cwd=tmp_path,
+                     env=C_LOCALE)
     assert r.returncode == 0, r
     assert "external=UTF-8" in r.output, r
     assert "incompatible" not in r.output, r
@@ -86,7 +89,7 @@ class TestCase
 end
 """)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--test", script, "-v", "-o", f"junit:{junit}",
+    r = run_runner("--isolation", isolation, "--test", script.name, "-v", "-o", "junit:out.xml",
                    cwd=tmp_path)
     assert r.returncode == 0, r
     for line in ["said in setup", "said in run", "warned in run", "said in tearDown"]:
@@ -113,7 +116,7 @@ class TestCase:
     big = "x" * (1024 * 1024)
     attribute = f' param="{big}"' if where == "param" else ""
     environment = f"<environment>{big}</environment>" if where == "environment" else ""
-    suite = suite_with(tmp_path, f"{environment}<test{attribute}>{script}</test>")
+    suite = suite_with(tmp_path, f"{environment}<test{attribute}>{script.name}</test>")
     r = run_isolated(isolation, "--suite", suite, "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert f"{where} length {len(big)}" in r.output, r
@@ -130,7 +133,7 @@ class FixtureManager:
         return True
 """)
     big = "y" * (1024 * 1024)
-    suite = suite_with(tmp_path, f'<fixture param="{big}">{fixture}</fixture>\n'
+    suite = suite_with(tmp_path, f'<fixture param="{big}">{fixture.name}</fixture>\n'
                                  f'<test>{plugin("passing_test")}</test>')
     r = run_isolated(isolation, "--suite", suite, "-v", cwd=tmp_path)
     assert r.returncode == 0, r
@@ -146,7 +149,7 @@ def test_a_world_file_expansion_bomb_is_refused_quickly_naming_where(tmp_path, m
     world = tmp_path / "bomb.xml"
     world.write_text('<world name="bomb">\n' + "\n".join(lines) +
                      '\n<process name="p" command="/bin/true"/>\n</world>\n')
-    suite = suite_with(tmp_path, f'<fixture type="process">{world}</fixture>\n'
+    suite = suite_with(tmp_path, f'<fixture type="process">{world.name}</fixture>\n'
                                  f'<test>{plugin("passing_test")}</test>')
     began = time.monotonic()
     r = run_runner("--suite", suite, "--no-output", cwd=tmp_path, env=marked(marker), timeout=60)
@@ -173,7 +176,7 @@ def test_a_port_already_taken_fails_the_fixture_naming_the_holder(tmp_path, isol
   </process>
 </world>
 """)
-        suite = suite_with(tmp_path, f'<fixture type="process">{world}</fixture>\n'
+        suite = suite_with(tmp_path, f'<fixture type="process">{world.name}</fixture>\n'
                                      f'<test>{plugin("passing_test")}</test>')
         r = run_runner("--isolation", isolation, "--suite", suite, "--no-output",
                        cwd=tmp_path, env=marked(marker))
@@ -194,7 +197,7 @@ def test_a_python_fixture_whose_teardown_raises_fails_the_run(tmp_path, isolatio
     def tearDown(self):
         raise RuntimeError("could not park the arm")
 """)
-    suite = suite_with(tmp_path, f'<fixture>{fixture}</fixture>\n'
+    suite = suite_with(tmp_path, f'<fixture>{fixture.name}</fixture>\n'
                                  f'<test>{plugin("passing_test")}</test>')
     r = run_isolated(isolation, "--suite", suite, cwd=tmp_path)
     assert r.returncode == 1, r
@@ -223,7 +226,7 @@ def test_a_process_fixture_whose_process_ignores_the_stop_fails_the_run(tmp_path
   </process>
 </world>
 """)
-    suite = suite_with(tmp_path, f'<fixture type="process">{world}</fixture>\n'
+    suite = suite_with(tmp_path, f'<fixture type="process">{world.name}</fixture>\n'
                                  f'<test>{plugin("passing_test")}</test>')
     r = run_runner("--isolation", isolation, "--suite", suite, "--no-output", cwd=tmp_path,
                    env=marked(marker))
@@ -236,7 +239,7 @@ def test_a_process_fixture_whose_process_ignores_the_stop_fails_the_run(tmp_path
 def test_a_python_file_with_a_nul_byte_names_file_line_and_column(tmp_path, isolation):
     script = tmp_path / "binary.py"
     script.write_bytes(b"class TestCase:\n    def run(se\0lf):\n        pass\n")
-    r = run_isolated(isolation, "--test", script)
+    r = run_isolated(isolation, "--test", script.name, cwd=tmp_path)
     assert r.returncode == 1, r
     assert f"{script}:2:15: the file holds a NUL byte" in r.output, r
     assert "cast_error" not in r.output, r
@@ -249,10 +252,10 @@ def test_tests_skipped_by_a_failing_fixture_carry_its_reason(tmp_path, isolation
         raise ConnectionError("robot 'icub' does not answer on 10.0.0.2")
 """)
     junit = tmp_path / "out.xml"
-    suite = suite_with(tmp_path, f'<fixture>{fixture}</fixture>\n'
+    suite = suite_with(tmp_path, f'<fixture>{fixture.name}</fixture>\n'
                                  f'<test>{plugin("passing_test")}</test>\n'
                                  f'<test>{plugin("failing_test")}</test>')
-    r = run_runner("--isolation", isolation, "--suite", suite, "-o", f"junit:{junit}",
+    r = run_runner("--isolation", isolation, "--suite", suite, "-o", "junit:out.xml",
                    cwd=tmp_path)
     assert r.returncode == 1, r
     assert "setup returned false" not in r.output, r

@@ -1,7 +1,9 @@
 """The runner against hostile and real-world input (issue 14): outputs that must not replace
 what is at their path, suite files that are no files, dependency cycles, numbers too large,
 misleading messages, --var, and the installed runner loading plug-ins beside a suite given by a
-relative path."""
+relative path. The runner starts in the test's folder and is given relative paths, as users run
+it; a device is named by its absolute path, as users name one, and section 17 starts the runner
+in other folders on purpose."""
 import os
 import shutil
 import signal
@@ -36,7 +38,7 @@ def test_an_output_through_a_symlink_writes_its_target_and_keeps_the_link(tmp_pa
     target.write_text("old")
     link = tmp_path / "latest.xml"
     link.symlink_to(target)
-    run = run_runner("--test", PASSING, "--output", f"junit:{link}", cwd=tmp_path)
+    run = run_runner("--test", PASSING, "--output", f"junit:{link.name}", cwd=tmp_path)
     assert run.returncode == 0, run
     assert link.is_symlink(), "the link was replaced"
     assert "<testsuites" in target.read_text()
@@ -45,9 +47,9 @@ def test_an_output_through_a_symlink_writes_its_target_and_keeps_the_link(tmp_pa
 def test_an_output_that_is_a_folder_is_refused_before_the_run(tmp_path):
     folder = tmp_path / "out"
     folder.mkdir()
-    run = run_runner("--test", PASSING, "--output", f"text:{folder}", cwd=tmp_path)
+    run = run_runner("--test", PASSING, "--output", "text:out", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"--output text:{folder}: {folder} is a folder" in run.stderr, run
+    assert "--output text:out: out is a folder" in run.stderr, run
     assert "passed" not in run.stdout, "the tests ran although the output was refused"
     assert folder.is_dir()
 
@@ -64,7 +66,7 @@ def test_an_output_to_a_fifo_is_written_through_to_its_reader(tmp_path):
     reader = threading.Thread(target=read, daemon=True)
     reader.start()
     try:
-        run = run_runner("--test", PASSING, "--output", f"junit:{fifo}", cwd=tmp_path)
+        run = run_runner("--test", PASSING, "--output", f"junit:{fifo.name}", cwd=tmp_path)
     finally:
         reader.join(timeout=30)
         if reader.is_alive():  # the runner never opened it: release the reader
@@ -78,15 +80,17 @@ def test_an_output_to_a_fifo_is_written_through_to_its_reader(tmp_path):
 def test_an_output_to_a_fifo_nobody_reads_is_an_error_not_a_hang(tmp_path):
     fifo = tmp_path / "nobody.fifo"
     os.mkfifo(fifo)
-    run = run_runner("--test", PASSING, "--output", f"text:{fifo}", cwd=tmp_path, timeout=60)
+    run = run_runner("--test", PASSING, "--output", f"text:{fifo.name}", cwd=tmp_path,
+                     timeout=60)
     assert run.returncode == 2, run
-    assert f"cannot write {fifo}: no process reads this FIFO" in run.stderr, run
+    assert f"cannot write {fifo.name}: no process reads this FIFO" in run.stderr, run
     assert stat.S_ISFIFO(os.stat(fifo).st_mode)
 
 
 def device(tmp_path, name, minor):
     """/dev/NAME, or as root a node of the same device in tmp_path: a runner without the fix
-    replaces the node it is given, and as root it could replace the system's."""
+    replaces the node it is given, and as root it could replace the system's. Named by its
+    absolute path, as users name a device (/dev/null), whichever folder the runner is in."""
     if os.geteuid() != 0:
         return Path("/dev") / name
     node = tmp_path / name
@@ -113,10 +117,11 @@ def test_an_output_to_dev_null_is_written_through(tmp_path):
 def test_an_output_named_like_the_suite_file_is_refused(tmp_path):
     suite = passing_suite(tmp_path)
     before = suite.read_text()
+    # Each spelling of the suite file's path, the absolute one too.
     for output in (f"junit:{suite}", "text:./suite.xml", "suite.xml"):
-        run = run_runner("--suite", suite, "--output", output, cwd=tmp_path)
+        run = run_runner("--suite", suite.name, "--output", output, cwd=tmp_path)
         assert run.returncode == 2, (output, run)
-        assert f"is the suite file {suite}; the output would replace it" in run.stderr, run
+        assert f"is the suite file {suite.name}; the output would replace it" in run.stderr, run
         assert suite.read_text() == before
 
 
@@ -125,8 +130,9 @@ def test_an_output_named_like_a_test_is_refused(tmp_path):
     test.write_text("raise SystemExit('must not run')\n")
     copy = tmp_path / "libcopy.so"
     shutil.copy(PASSING, copy)
-    for args in (["--test", test, "--output", "text:check.py"],
-                 ["--test", copy, "--output", f"junit:{copy}"]):
+    # The test as given and the output as another spelling of its path.
+    for args in (["--test", test.name, "--output", "text:./check.py"],
+                 ["--test", f"./{copy.name}", "--output", f"junit:{copy}"]):
         run = run_runner(*args, cwd=tmp_path)
         assert run.returncode == 2, run
         assert "the output would replace it" in run.stderr and "is the test" in run.stderr, run
@@ -148,12 +154,13 @@ def test_two_outputs_to_one_file_are_refused(tmp_path):
 def test_a_fifo_given_as_the_suite_is_refused_at_once(tmp_path):
     fifo = tmp_path / "suite.xml"
     os.mkfifo(fifo)
-    run = run_runner("--suite", fifo, "--no-output", cwd=tmp_path, timeout=30)
+    run = run_runner("--suite", fifo.name, "--no-output", cwd=tmp_path, timeout=30)
     assert run.returncode == 2, run
-    assert f"{fifo}: is a FIFO (named pipe), not a suite file" in run.stderr, run
+    assert f"{fifo.name}: is a FIFO (named pipe), not a suite file" in run.stderr, run
 
 
 def test_a_device_given_as_the_suite_is_refused(tmp_path):
+    # A device is named by its absolute path, as users name it.
     run = run_runner("--suite", "/dev/zero", "--no-output", cwd=tmp_path, timeout=30)
     assert run.returncode == 2, run
     assert "/dev/zero: is a character device, not a suite file" in run.stderr, run
@@ -163,9 +170,10 @@ def test_a_suite_file_over_the_size_limit_is_refused(tmp_path):
     big = tmp_path / "big.xml"
     with open(big, "wb") as f:
         f.truncate(16 * 1024 * 1024 + 1)  # sparse: no disk used
-    run = run_runner("--suite", big, "--no-output", cwd=tmp_path, timeout=30)
+    run = run_runner("--suite", big.name, "--no-output", cwd=tmp_path, timeout=30)
     assert run.returncode == 2, run
-    assert f"{big}: the suite file is larger than 16 MiB, the limit of a suite file" in run.stderr
+    assert (f"{big.name}: the suite file is larger than 16 MiB, the limit of a suite file"
+            in run.stderr), run
 
 
 # --- 11. Dependency cycles ------------------------------------------------------------------------
@@ -183,9 +191,9 @@ def test_a_dependency_cycle_is_a_configuration_error(tmp_path, tests, says):
     lines = "\n".join(f'<test name="{name}" depends="{on}">{PASSING}</test>' for name, on in tests)
     suite = tmp_path / "suite.xml"
     suite.write_text(f'<suite name="s">\n{lines}\n</suite>\n')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert says.replace("SUITE", str(suite)) in run.stderr, run
+    assert says.replace("SUITE", suite.name) in run.stderr, run
 
 
 # --- 14. Messages that say what is wrong ----------------------------------------------------------
@@ -193,9 +201,9 @@ def test_a_dependency_cycle_is_a_configuration_error(tmp_path, tests, says):
 def test_a_repetition_too_large_says_the_limit(tmp_path):
     suite = tmp_path / "suite.xml"
     suite.write_text(f'<suite name="s">\n<test repetition="99999999999">{PASSING}</test>\n</suite>')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert (f'{suite}:2: repetition="99999999999" is too large: at most 1000000000 runs'
+    assert (f'{suite.name}:2: repetition="99999999999" is too large: at most 1000000000 runs'
             in run.stderr), run
     run = run_runner("--test", PASSING, "--repetition", "99999999999", "--no-output",
                      cwd=tmp_path)
@@ -219,17 +227,18 @@ def test_a_test_or_fixture_that_is_no_file_says_what_it_is(tmp_path, kind):
         os.mkfifo(thing)
     else:
         thing, says = Path("/dev/zero"), "is a character device, not a plug-in file"
-    run = run_runner("--test", thing, "--no-output", cwd=tmp_path, timeout=60)
+    given = thing if kind == "device" else f"./{thing.name}"
+    run = run_runner("--test", given, "--no-output", cwd=tmp_path, timeout=60)
     assert run.returncode == 1, run
-    assert f"{says}: {thing}" in run.output, run
+    assert f"{says}: {given}" in run.output, run
     assert "not found" not in run.output, run
 
     suite = tmp_path / "suite.xml"
-    suite.write_text(f'<suite name="s">\n<fixture type="dll">{thing}</fixture>\n'
+    suite.write_text(f'<suite name="s">\n<fixture type="dll">{given}</fixture>\n'
                      f'<test>{PASSING}</test>\n</suite>\n')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path, timeout=60)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path, timeout=60)
     assert run.returncode == 1, run
-    assert f"{says}: {thing}" in run.output, run
+    assert f"{says}: {given}" in run.output, run
 
 
 # --- 15. One rule for numbers and output types ----------------------------------------------------
@@ -240,9 +249,9 @@ def test_infinity_is_refused_by_one_rule_on_the_command_line_and_in_a_suite(tmp_
     assert "--timeout: 'inf' is not a number of seconds >= 0" in run.stderr, run
     suite = tmp_path / "suite.xml"
     suite.write_text(f'<suite name="s">\n<test timeout="inf">{PASSING}</test>\n</suite>')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f'{suite}:2: timeout "inf" is not a number of seconds >= 0' in run.stderr, run
+    assert f'{suite.name}:2: timeout "inf" is not a number of seconds >= 0' in run.stderr, run
 
 
 def test_an_unknown_output_type_is_a_usage_error_listing_the_known_ones(tmp_path):
@@ -265,9 +274,9 @@ def test_a_test_that_hangs_while_loading_reports_the_time_it_took(tmp_path):
     test = tmp_path / "slow_import.py"
     test.write_text("import time\ntime.sleep(30)\n")
     suite = tmp_path / "suite.xml"
-    suite.write_text(f'<suite name="s">\n<test timeout="1">{test}</test>\n</suite>\n')
+    suite.write_text(f'<suite name="s">\n<test timeout="1">{test.name}</test>\n</suite>\n')
     junit = tmp_path / "r.xml"
-    run = run_runner("--suite", suite, "--output", f"junit:{junit}", cwd=tmp_path, timeout=60)
+    run = run_runner("--suite", suite.name, "--output", "junit:r.xml", cwd=tmp_path, timeout=60)
     assert run.returncode == 1, run
     assert "timed out after 1" in run.output, run
     case = ET.parse(junit).getroot().find(".//testcase")
@@ -303,8 +312,8 @@ def test_a_second_ctrl_c_writes_the_result_files_with_what_is_known(tmp_path, ma
 </suite>''')
     junit = tmp_path / "out.xml"
     text = tmp_path / "out.txt"
-    proc = start_runner("--isolation", "none", "--suite", suite, "--output", f"junit:{junit}",
-                        "--output", f"text:{text}", env=marked(marker))
+    proc = start_runner("--isolation", "none", "--suite", suite.name, "--output", "junit:out.xml",
+                        "--output", "text:out.txt", cwd=tmp_path, env=marked(marker))
     assert wait_for(lambda: len(_marked_processes(marker)) >= 2), "the sleeping child"
     proc.send_signal(signal.SIGINT)
     time.sleep(0.3)
@@ -333,12 +342,12 @@ def test_tests_not_run_because_ctrl_c_hit_a_fixture_set_up_are_interrupted(tmp_p
                      f'    <ready timeout="{deadline}"><file>{tmp_path / "never"}</file></ready>\n'
                      f'  </process>\n</world>\n')
     suite = tmp_path / "suite.xml"
-    suite.write_text(f'<suite name="s">\n<fixture type="process">{world}</fixture>\n'
+    suite.write_text(f'<suite name="s">\n<fixture type="process">{world.name}</fixture>\n'
                      f'<test name="a">{PASSING}</test>\n<test name="b">{PASSING}</test>\n'
                      f'</suite>\n')
     junit = tmp_path / "out.xml"
-    proc = start_runner("--isolation", isolation, "--suite", suite, "--output",
-                        f"junit:{junit}", "-v", env=marked(marker))
+    proc = start_runner("--isolation", isolation, "--suite", suite.name, "--output",
+                        "junit:out.xml", "-v", cwd=tmp_path, env=marked(marker))
     log = tmp_path / "logs" / "slow.log"
     assert wait_for(lambda: log.exists() and "up" in log.read_text()), "the fixture's process"
     proc.send_signal(signal.SIGINT)
@@ -366,9 +375,9 @@ def test_a_variable_reaches_the_world_files_of_process_fixtures(tmp_path):
                      f'    <ready timeout="10s"><output>^v=7$</output></ready>\n'
                      f'  </process>\n</world>\n')
     suite = tmp_path / "suite.xml"
-    suite.write_text(f'<suite name="s">\n<fixture type="process">{world}</fixture>\n'
+    suite.write_text(f'<suite name="s">\n<fixture type="process">{world.name}</fixture>\n'
                      f'<test>{PASSING}</test>\n</suite>\n')
-    run = run_runner("--suite", suite, "--var", "speed=7", "--var", "unused=1", "--no-output",
+    run = run_runner("--suite", suite.name, "--var", "speed=7", "--var", "unused=1", "--no-output",
                      cwd=tmp_path, timeout=60)
     assert run.returncode == 0, run
     assert "--var speed=7" not in run.stderr, run

@@ -65,7 +65,7 @@ def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker
     text = tmp_path / "out.txt"
     proc = start_runner("--isolation", isolation, "--suite", suite, "--suite", later,
                         "--output", f"junit:{junit}", "--output", f"text:{text}",
-                        env=marked(marker))
+                        env=marked(marker), cwd=tmp_path)
     # The fixture is checked before each test: the second check comes before "hung".
     wait_for(lambda: lines(log).count("check world") >= 2, what="the blocking test")
     time.sleep(0.5)
@@ -91,7 +91,7 @@ def test_a_second_ctrl_c_ends_at_once_and_leaves_nothing(tmp_path, marker, isola
 </suite>''')
     junit = tmp_path / "out.xml"
     proc = start_runner("--isolation", isolation, "--suite", suite, "--output",
-                        f"junit:{junit}", env=marked(marker))
+                        f"junit:{junit}", env=marked(marker), cwd=tmp_path)
     # The runner (and server), the test's process and its child: wait for the child.
     expected = 4 if isolation == "process" else 2
     wait_for(lambda: len(_marked_processes(marker)) >= expected, what="the sleeping child")
@@ -110,7 +110,7 @@ def test_sigkill_of_the_runner_leaves_no_process(tmp_path, marker):
     suite.write_text(f'''<suite name="killed">
   <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
 </suite>''')
-    proc = start_runner("--suite", suite, "--no-output", env=marked(marker))
+    proc = start_runner("--suite", suite, "--no-output", env=marked(marker), cwd=tmp_path)
     # Runner, fork server, worker, the worker's child.
     wait_for(lambda: len(_marked_processes(marker)) >= 4, what="the sleeping child")
     proc.kill()
@@ -124,7 +124,7 @@ def test_an_interrupted_exec_test_leaves_no_child_in_process(tmp_path, marker):
     script.write_text(f"#!/bin/sh\nsleep 60 &\ntouch {started}\nsleep 60\n")
     script.chmod(0o755)
     proc = start_runner("--isolation", "none", "--test", script, "--no-output",
-                        env=marked(marker))
+                        env=marked(marker), cwd=tmp_path)
     wait_for(started.exists, what="the script")
     proc.send_signal(signal.SIGINT)
     code, out, err = finish(proc)
@@ -138,7 +138,7 @@ def test_an_exec_test_that_leaves_a_child_behind_leaves_nothing_in_process(tmp_p
     script.write_text("#!/bin/sh\nsleep 60 >/dev/null 2>&1 &\nexit 0\n")
     script.chmod(0o755)
     proc = start_runner("--isolation", "none", "--test", script, "--no-output",
-                        env=marked(marker))
+                        env=marked(marker), cwd=tmp_path)
     code, out, err = finish(proc)
     assert code == 0, (code, out, err)
     assert leftover_processes(marker) == []

@@ -1,4 +1,5 @@
-"""Executables as test cases, with and without TAP, through the real runner (SPEC 3.2)."""
+"""Executables as test cases, with and without TAP, through the real runner (SPEC 3.2), run
+from their folder as users run them (`--test ./check`)."""
 import shutil
 import subprocess
 
@@ -25,7 +26,7 @@ def shell(folder, body, name="check"):
 
 def test_exit_zero_passes_and_its_output_is_shown(tmp_path, isolation):
     path = shell(tmp_path, "echo 'moving the arm'\necho 'warning: slow' >&2\nexit 0\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "moving the arm" in r.output and "warning: slow" in r.output, r
     assert "1 passed, 0 failed" in r.stdout, r
@@ -33,14 +34,14 @@ def test_exit_zero_passes_and_its_output_is_shown(tmp_path, isolation):
 
 def test_exit_77_skips(tmp_path, isolation):
     path = shell(tmp_path, "echo 'no robot attached' >&2\nexit 77\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "1 skipped" in r.stdout, r
 
 
 def test_other_exit_status_fails(tmp_path, isolation):
     path = shell(tmp_path, "echo 'motor 3 stalled' >&2\nexit 3\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "exited with status 3" in r.output, r
     assert "motor 3 stalled" in r.output, r
@@ -53,7 +54,7 @@ def test_param_is_argv_and_environment_is_RTF_ENVIRONMENT(tmp_path, isolation, s
   <environment>--robot sim</environment>
   <test type="exec" param="--part 'left arm'">probe</test>
 </suite>""")
-    r = run_isolated(isolation, "--suite", suite, "-v")
+    r = run_isolated(isolation, "--suite", suite.name, "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "argc=2 first=[--part] second=[left arm]" in r.output, r
     assert "env=[--robot sim]" in r.output, r
@@ -65,7 +66,7 @@ def test_repetition_runs_the_program_again(tmp_path, isolation, suite_file):
     suite = suite_file("""<suite name="exec">
   <test repetition="3">again</test>
 </suite>""")
-    r = run_isolated(isolation, "--suite", suite)
+    r = run_isolated(isolation, "--suite", suite.name, cwd=tmp_path)
     assert r.returncode == 0, r
     assert counter.read_text().count("run") == 3
 
@@ -83,7 +84,7 @@ ok 3 - wrist # SKIP no wrist
 TAP
 exit 1
 """)
-    r = run_isolated(isolation, "--test", path, "-v", "-d")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", "-d", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "ok 1 - gripper opens" in r.output, r
     assert "not ok 2 - gripper closes" in r.output, r
@@ -93,20 +94,20 @@ exit 1
 
 def test_failing_todo_point_does_not_fail(tmp_path, isolation):
     path = shell(tmp_path, "echo '1..2'\necho 'ok 1'\necho 'not ok 2 - walks # TODO later'\n")
-    r = run_isolated(isolation, "--test", path)
+    r = run_isolated(isolation, "--test", f"./{path.name}", cwd=tmp_path)
     assert r.returncode == 0, r
 
 
 def test_tap_plan_mismatch_fails(tmp_path, isolation):
     path = shell(tmp_path, "echo '1..3'\necho 'ok 1'\necho 'ok 2'\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "planned 3 test(s) but ran 2" in r.output, r
 
 
 def test_tap_bail_out_is_an_error(tmp_path, isolation):
     path = shell(tmp_path, "echo '1..2'\necho 'ok 1'\necho 'Bail out! robot unplugged'\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "Bail out! robot unplugged" in r.output, r
     assert "1 error" in r.output, r
@@ -114,7 +115,7 @@ def test_tap_bail_out_is_an_error(tmp_path, isolation):
 
 def test_tap_skip_all_skips(tmp_path, isolation):
     path = shell(tmp_path, "echo '1..0 # SKIP no camera'\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "1 skipped" in r.stdout, r
     assert "no camera" in r.output, r
@@ -122,7 +123,7 @@ def test_tap_skip_all_skips(tmp_path, isolation):
 
 def test_killed_by_a_signal_is_reported_with_its_name(tmp_path, isolation):
     path = shell(tmp_path, "kill -ABRT $$\n")
-    r = run_isolated(isolation, "--test", path, "-v")
+    r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "SIGABRT" in r.output, r
 
@@ -133,7 +134,7 @@ def test_type_exec_overrides_the_extension(tmp_path, isolation, suite_file):
     suite = suite_file("""<suite name="exec">
   <test type="exec">tool.py</test>
 </suite>""")
-    r = run_isolated(isolation, "--suite", suite, "-v")
+    r = run_isolated(isolation, "--suite", suite.name, "-v", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "not ok 1 - as exec" in r.output, r
 
@@ -161,14 +162,14 @@ SKIP: {{
 
     def test_passing(self, tmp_path, isolation):
         path = program(tmp_path, "robot.t", self.SCRIPT.format(sum=4))
-        r = run_isolated(isolation, "--test", path, "-v", "-d")
+        r = run_isolated(isolation, "--test", f"./{path.name}", "-v", "-d", cwd=tmp_path)
         assert r.returncode == 0, r
         assert "arm > ok 1 - shoulder" in r.output, r
         assert "ok 4 # SKIP no camera" in r.output, r
 
     def test_failing(self, tmp_path, isolation):
         path = program(tmp_path, "robot.t", self.SCRIPT.format(sum=5))
-        r = run_isolated(isolation, "--test", path, "-v")
+        r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
         assert r.returncode == 1, r
         assert "not ok 2 - adds" in r.output, r
         assert "Failed test 'adds'" in r.output, r  # Test::More's diagnostics, on stderr
@@ -192,13 +193,15 @@ test('camera', {{ skip: 'no camera' }}, () => {{}});
                      name="node-tests")
 
     def test_passing(self, tmp_path, isolation):
-        r = run_isolated(isolation, "--test", self.write(tmp_path, 2), "-v", "-d")
+        r = run_isolated(isolation, "--test", f"./{self.write(tmp_path, 2).name}", "-v", "-d",
+                         cwd=tmp_path)
         assert r.returncode == 0, r
         assert "arm > ok 2 - stops" in r.output, r
         assert "ok 3 - camera # SKIP no camera" in r.output, r
 
     def test_failing(self, tmp_path, isolation):
-        r = run_isolated(isolation, "--test", self.write(tmp_path, 3), "-v")
+        r = run_isolated(isolation, "--test", f"./{self.write(tmp_path, 3).name}", "-v",
+                         cwd=tmp_path)
         assert r.returncode == 1, r
         assert "not ok 1 - adds" in r.output, r
         assert "Expected values to be strictly equal" in r.output, r

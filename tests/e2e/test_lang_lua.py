@@ -84,7 +84,7 @@ class TestLua(ScriptLanguageCases):
 
     def test_runtime_error_shows_the_traceback(self, tmp_path, isolation):
         path = self.write(tmp_path, "exception")
-        r = run_isolated(isolation, "--test", path, "-v")
+        r = run_isolated(isolation, "--test", path.name, "-v", cwd=tmp_path)
         assert "stack traceback:" in r.output, r
         assert "exception.lua:6: in " in r.output, r
 
@@ -102,5 +102,5 @@ function TestCase.run()
     robottestingframework.testCheck(robotutil.gain == 7, "neighbour required")
 end
 """)
-    r = run_isolated(isolation, "--test", tmp_path / "uses.lua")
+    r = run_isolated(isolation, "--test", "uses.lua", cwd=tmp_path)
     assert r.returncode == 0, r

@@ -88,14 +88,14 @@ class TestPython(ScriptLanguageCases):
 
     def test_exception_shows_the_traceback(self, tmp_path, isolation):
         path = self.write(tmp_path, "exception")
-        r = run_isolated(isolation, "--test", path, "-v")
+        r = run_isolated(isolation, "--test", path.name, "-v", cwd=tmp_path)
         assert "Traceback (most recent call last)" in r.output, r
         assert f'File "{path}", line 5, in run' in r.output, r
         assert f'File "{path}", line 2, in helper' in r.output, r
 
     def test_syntax_error_shows_the_offending_line(self, tmp_path, isolation):
         path = self.write(tmp_path, "syntax_error")
-        r = run_isolated(isolation, "--test", path)
+        r = run_isolated(isolation, "--test", path.name, cwd=tmp_path)
         assert "    def run(self)\n" in r.output, r
         assert "SyntaxError: expected ':'" in r.output, r
 
@@ -113,7 +113,7 @@ class TestCase:
     def run(self):
         robottestingframework.testCheck(robotutil.GAIN == 7, "neighbour imported")
 """)
-    r = run_isolated(isolation, "--test", tmp_path / "uses.py")
+    r = run_isolated(isolation, "--test", "uses.py", cwd=tmp_path)
     assert r.returncode == 0, r
 
 
@@ -145,7 +145,7 @@ class TestCase:
   <test>b/check.py</test>
   <test>c/alone.py</test>
 </suite>""")
-    r = run_isolated(isolation, "--suite", suite, "-v")
+    r = run_isolated(isolation, "--suite", suite.name, "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "3 passed, 0 failed" in r.stdout, r
 
@@ -165,11 +165,11 @@ class TestCase:
     def run(self):
         robottestingframework.testCheck(robotpkg.ANSWER == 42, "package from the venv")
 """)
-    r = run_isolated(isolation, "--test", tmp_path / "venv_test.py",
+    r = run_isolated(isolation, "--test", "venv_test.py", cwd=tmp_path,
                      env={"VIRTUAL_ENV": str(venv)})
     assert r.returncode == 0, r
     # Without the environment the package is not there: the test above proved something.
-    r = run_isolated(isolation, "--test", tmp_path / "venv_test.py",
+    r = run_isolated(isolation, "--test", "venv_test.py", cwd=tmp_path,
                      env={"VIRTUAL_ENV": ""})
     assert r.returncode == 1, r
     assert "No module named 'robotpkg'" in r.output, r
@@ -177,7 +177,7 @@ class TestCase:
 
 def test_import_error_is_a_failed_test_with_traceback(tmp_path, isolation):
     (tmp_path / "broken.py").write_text("import robottestingframework\nimport no_such_module\n")
-    r = run_isolated(isolation, "--test", tmp_path / "broken.py")
+    r = run_isolated(isolation, "--test", "broken.py", cwd=tmp_path)
     assert r.returncode == 1, r
     assert "ModuleNotFoundError: No module named 'no_such_module'" in r.output, r
     assert f'File "{tmp_path / "broken.py"}", line 2, in <module>' in r.output, r

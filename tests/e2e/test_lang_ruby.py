@@ -99,7 +99,7 @@ class TestRuby(ScriptLanguageCases):
 
     def test_exception_shows_the_backtrace(self, tmp_path, isolation):
         path = self.write(tmp_path, "exception")
-        r = run_isolated(isolation, "--test", path, "-v")
+        r = run_isolated(isolation, "--test", path.name, "-v", cwd=tmp_path)
         assert f"{path}:7:in `run'" in r.output, r
 
     def test_core_methods_written_in_ruby_and_installed_gems_work(self, tmp_path, isolation):
@@ -121,6 +121,7 @@ class TestRuby(ScriptLanguageCases):
 end
 """)
         for prestart in ("1", "0"):
-            r = run_isolated(isolation, "--test", path, "-v", env={"RTF_PRESTART": prestart})
+            r = run_isolated(isolation, "--test", path.name, "-v", cwd=tmp_path,
+                             env={"RTF_PRESTART": prestart})
             assert r.returncode == 0, (prestart, r)
             assert 'core methods and gems: ["String"]' in r.output, (prestart, r)

@@ -67,15 +67,15 @@ def test_language_dir_override(tmp_path, language, isolation):
     name, text = SCRIPTS[language]
     script = tmp_path / name
     script.write_text(text)
-    found = run_runner("--isolation", isolation, "--test", script, "--no-output", "-v",
-                       env={"RTF_LANGUAGE_DIR": str(MODULE_DIR)}, timeout=60)
+    found = run_runner("--isolation", isolation, "--test", script.name, "--no-output", "-v",
+                       cwd=tmp_path, env={"RTF_LANGUAGE_DIR": str(MODULE_DIR)}, timeout=60)
     assert found.returncode == 0, found
     assert "module loaded" in found.output, found
 
     empty = tmp_path / "no-modules"
     empty.mkdir()
-    missing = run_runner("--isolation", isolation, "--test", script, "--no-output", "-v",
-                         env={"RTF_LANGUAGE_DIR": str(empty)}, timeout=60)
+    missing = run_runner("--isolation", isolation, "--test", script.name, "--no-output", "-v",
+                         cwd=tmp_path, env={"RTF_LANGUAGE_DIR": str(empty)}, timeout=60)
     assert missing.returncode != 0, missing
     title = language.capitalize()
     assert f"{title} test cases are not available: " in missing.output, missing

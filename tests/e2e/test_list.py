@@ -36,10 +36,10 @@ def suite_that_would_leave_traces(tmp_path):
 
 def test_list_prints_what_would_run_and_starts_nothing(tmp_path, marker):
     suite = suite_that_would_leave_traces(tmp_path)
-    run = run_runner("--suite", suite, "--list", "--var", "robot=icub", "--param", "--fast",
+    run = run_runner("--suite", suite.name, "--list", "--var", "robot=icub", "--param", "--fast",
                      cwd=tmp_path, env=marked(marker))
     assert run.returncode == 0, run
-    assert f"suite robot ({suite})\n" in run.stdout, run
+    assert f"suite robot ({suite.name})\n" in run.stdout, run
     assert (f"  robot/camera.py\n      type python, plug-in {tmp_path / 'camera.py'}\n"
             "      param --robot icub\n      tags camera,slow\n      timeout 3s\n") \
         in run.stdout, run
@@ -56,12 +56,12 @@ def test_list_prints_what_would_run_and_starts_nothing(tmp_path, marker):
 def test_list_writes_json(tmp_path, marker):
     suite = suite_that_would_leave_traces(tmp_path)
     out = tmp_path / "list.json"
-    run = run_runner("--suite", suite, "--list", "--output", f"json:{out}", cwd=tmp_path,
+    run = run_runner("--suite", suite.name, "--list", "--output", "json:list.json", cwd=tmp_path,
                      env=marked(marker))
     assert run.returncode == 0, run
     listed = json.loads(out.read_text())
     [robot] = listed["suites"]
-    assert robot["name"] == "robot" and robot["file"] == str(suite)
+    assert robot["name"] == "robot" and robot["file"] == suite.name
     assert robot["fixtures"][0]["type"] == "process"
     camera, encoders = robot["tests"]
     assert camera["id"] == "robot/camera.py"
@@ -87,9 +87,8 @@ def test_list_shows_the_locks_pools_and_exclusive_a_suite_takes(tmp_path):
     (tmp_path / "plain.xml").write_text(
         f'<suite name="plain"><test type="dll">{plugin("passing_test")}</test></suite>')
     out = tmp_path / "list.json"
-    run = run_runner("--suite", tmp_path / "arm.xml", "--suite", tmp_path / "plain.xml",
-                     "--resources", tmp_path / "pools.json", "--list", "--output",
-                     f"json:{out}", cwd=tmp_path)
+    run = run_runner("--suite", "arm.xml", "--suite", "plain.xml", "--resources", "pools.json",
+                     "--list", "--output", "json:list.json", cwd=tmp_path)
     assert run.returncode == 0, run
     assert ("  takes lock robot:left-arm, 1 of pool ros_domain, the machine alone (exclusive)\n"
             "  arm/reach\n") in run.stdout, run
@@ -103,6 +102,6 @@ def test_list_shows_the_locks_pools_and_exclusive_a_suite_takes(tmp_path):
 def test_list_of_a_bad_suite_is_a_configuration_error(tmp_path):
     suite = tmp_path / "suite.xml"
     suite.write_text("<suite><test param='${nope}'>a.so</test></suite>\n")
-    run = run_runner("--suite", suite, "--list", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--list", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:1: undefined variable ${{nope}}" in run.stderr, run
+    assert f"{suite.name}:1: undefined variable ${{nope}}" in run.stderr, run

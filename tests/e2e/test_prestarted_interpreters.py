@@ -26,18 +26,18 @@ def message(case):
 
 
 def run_suite(tmp_path, tests, *extra, env=None, timeout=120):
-    """Runs the files `tests` ({name: text}) as one suite in order, verbose; returns (Run,
-    JUnit test cases by name)."""
+    """Runs the files `tests` ({name: text}) as one suite in order, verbose, from the suite's
+    folder with relative names; returns (Run, JUnit test cases by name)."""
     lines = ['<suite name="prestart">']
     for name, text in tests.items():
         (tmp_path / name).write_text(text)
-        lines.append(f'  <test name="{name}">{tmp_path / name}</test>')
+        lines.append(f'  <test name="{name}">{name}</test>')
     lines.append("</suite>")
     suite = tmp_path / "suite.xml"
     suite.write_text("\n".join(lines) + "\n")
     junit = tmp_path / "out.xml"
-    r = run_runner("--suite", suite, "-v", "--output", f"junit:{junit}", *extra, env=env,
-                   timeout=timeout)
+    r = run_runner("--suite", suite.name, "-v", "--output", f"junit:{junit.name}", *extra,
+                   cwd=tmp_path, env=env, timeout=timeout)
     return r, cases(junit)
 
 
@@ -329,7 +329,7 @@ class TestCase:
     for signum in (signal.SIGINT, signal.SIGKILL):
         if started.exists():
             started.unlink()
-        proc = start_runner("--test", test, "-v", env=marked(marker))
+        proc = start_runner("--test", test.name, "-v", cwd=tmp_path, env=marked(marker))
         wait_for(started.exists, what="the test to start")
         proc.send_signal(signum)
         status, out, err = finish(proc)
@@ -443,9 +443,9 @@ fi
 """)
         shell.chmod(0o755)
         suite = tmp_path / "suite.xml"
-        suite.write_text(f'<suite name="env"><test>{tmp_path / "bind_test.py"}</test>'
-                         f"<test>{shell}</test></suite>\n")
-        proc = subprocess.run([RUNNER, "--suite", str(suite), "-v"],
+        suite.write_text('<suite name="env"><test>bind_test.py</test>'
+                         f"<test>./{shell.name}</test></suite>\n")
+        proc = subprocess.run([RUNNER, "--suite", suite.name, "-v"], cwd=tmp_path,
                               env=dict(env, LD_BIND_NOW=users) if users else env,
                               capture_output=True, text=True, timeout=120)
         output = proc.stdout + proc.stderr

@@ -116,8 +116,8 @@ def test_a_run_quit_at_once_still_writes_every_result(tmp_path, marker):
 </suite>''')
     tap = tmp_path / "r.tap"
     ctrf = tmp_path / "r.json"
-    proc = start_runner("--isolation", "none", "--suite", suite, "--output", f"tap:{tap}",
-                        "--output", f"json:{ctrf}", env=marked(marker))
+    proc = start_runner("--isolation", "none", "--suite", suite.name, "--output", "tap:r.tap",
+                        "--output", "json:r.json", cwd=tmp_path, env=marked(marker))
     deadline = time.monotonic() + 20
     while len(_marked_processes(marker)) < 2 and time.monotonic() < deadline:
         time.sleep(0.05)

@@ -1,5 +1,5 @@
 """--retries, flaky tests, --fail-on-flaky, --rerun-failed and --repeat-until-fail, through the
-real runner."""
+real runner, run as users run it: from the suite's folder, every file named relatively."""
 import json
 import xml.etree.ElementTree as ET
 
@@ -31,10 +31,13 @@ exit 0
 
 
 def suite_of(folder, tests):
-    body = "\n".join(f'  <test type="exec" name="{name}">{path}</test>' for name, path in tests)
+    """Writes suite.xml beside the scripts, naming each as `./NAME`; returns its name, for a
+    runner started in `folder`."""
+    body = "\n".join(f'  <test type="exec" name="{name}">./{path.name}</test>'
+                     for name, path in tests)
     suite = folder / "suite.xml"
     suite.write_text(f'<suite name="reruns">\n{body}\n</suite>\n')
-    return suite
+    return suite.name
 
 
 def test_a_test_passing_on_its_second_attempt_is_flaky(tmp_path, isolation):
@@ -43,7 +46,7 @@ def test_a_test_passing_on_its_second_attempt_is_flaky(tmp_path, isolation):
     suite = suite_of(tmp_path, [("flaky", flaky), ("steady", steady)])
     junit, ctrf, tap = tmp_path / "r.xml", tmp_path / "r.json", tmp_path / "r.tap"
     r = run_runner("--isolation", isolation, "--suite", suite, "--retries", "2",
-                   "-o", f"junit:{junit}", "-o", f"json:{ctrf}", "-o", f"tap:{tap}")
+                   "-o", "junit:r.xml", "-o", "json:r.json", "-o", "tap:r.tap", cwd=tmp_path)
     assert r.returncode == 0, r
     assert counter.read_text().strip() == "2", r
     assert "flaky" in r.stdout, r
@@ -86,7 +89,7 @@ def test_a_test_passing_on_its_second_attempt_is_flaky(tmp_path, isolation):
 def test_fail_on_flaky_makes_a_flaky_test_fail_the_run(tmp_path):
     flaky, _ = counting_script(tmp_path, "flaky", 1)
     r = run_runner("--no-output", "--suite", suite_of(tmp_path, [("flaky", flaky)]),
-                   "--retries", "1", "--fail-on-flaky")
+                   "--retries", "1", "--fail-on-flaky", cwd=tmp_path)
     assert r.returncode == 1, r
 
 
@@ -94,8 +97,8 @@ def test_a_test_that_always_fails_carries_its_reruns(tmp_path, isolation):
     broken, counter = counting_script(tmp_path, "broken", 1000)
     junit, ctrf, tap = tmp_path / "r.xml", tmp_path / "r.json", tmp_path / "r.tap"
     r = run_runner("--isolation", isolation, "--suite", suite_of(tmp_path, [("broken", broken)]),
-                   "--retries", "2", "-o", f"junit:{junit}", "-o", f"json:{ctrf}",
-                   "-o", f"tap:{tap}")
+                   "--retries", "2", "-o", "junit:r.xml", "-o", "json:r.json",
+                   "-o", "tap:r.tap", cwd=tmp_path)
     assert r.returncode == 1, r
     assert counter.read_text().strip() == "3", r
     validate_junit(junit)
@@ -117,7 +120,7 @@ def test_a_test_that_always_fails_carries_its_reruns(tmp_path, isolation):
 @pytest.mark.parametrize("value", ["-1", "abc", "101"])
 def test_invalid_retries_exit_2_with_the_limits(tmp_path, value):
     steady, _ = counting_script(tmp_path, "steady", 0)
-    r = run_runner("--no-output", "--test", steady, "--retries", value)
+    r = run_runner("--no-output", "--test", f"./{steady.name}", "--retries", value, cwd=tmp_path)
     assert r.returncode == 2, r
     assert "100" in r.stderr and "--retries" in r.stderr, r
 
@@ -128,10 +131,11 @@ def test_rerun_failed_runs_only_what_failed_in_a_report(tmp_path, kind, isolatio
     steady, steady_count = counting_script(tmp_path, "steady", 0)
     suite = suite_of(tmp_path, [("broken", broken), ("steady", steady)])
     report = tmp_path / f"first.{kind}"
-    first = run_runner("--isolation", isolation, "--suite", suite, "-o", f"{kind}:{report}")
+    first = run_runner("--isolation", isolation, "--suite", suite, "-o", f"{kind}:{report.name}",
+                       cwd=tmp_path)
     assert first.returncode == 1, first
-    again = run_runner("--isolation", isolation, "--suite", suite, "--rerun-failed", report,
-                       "--no-output")
+    again = run_runner("--isolation", isolation, "--suite", suite, "--rerun-failed", report.name,
+                       "--no-output", cwd=tmp_path)
     assert again.returncode == 0, again
     assert broken_count.read_text().strip() == "2", again
     assert steady_count.read_text().strip() == "1", again
@@ -153,18 +157,19 @@ def test_a_json_report_of_an_earlier_version_is_still_read(tmp_path):
     steady, steady_count = counting_script(tmp_path, "steady", 0)
     suite = suite_of(tmp_path, [("broken", broken), ("steady", steady)])
     report = tmp_path / "first.json"
-    assert run_runner("--suite", suite, "-o", f"json:{report}").returncode == 1
+    assert run_runner("--suite", suite, "-o", "json:first.json", cwd=tmp_path).returncode == 1
     old = _with_old_extension_key(json.loads(report.read_text()))
     assert "rtf" in old["results"]["tests"][0]["extra"], old
     report.write_text(json.dumps(old))
-    again = run_runner("--suite", suite, "--rerun-failed", report, "--no-output")
+    again = run_runner("--suite", suite, "--rerun-failed", "first.json", "--no-output",
+                       cwd=tmp_path)
     assert again.returncode == 0 and "1 passed, 0 failed" in again.stdout, again
     assert broken_count.read_text().strip() == "2" and steady_count.read_text().strip() == "1"
-    r = run_runner("--suite", suite, "--durations", report, "--shard-index", "0",
-                   "--shard-count", "1", "--no-output")
+    r = run_runner("--suite", suite, "--durations", "first.json", "--shard-index", "0",
+                   "--shard-count", "1", "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     merged = tmp_path / "merged.json"
-    r = run_runner("--merge", f"json:{merged}", report)
+    r = run_runner("--merge", "json:merged.json", "first.json", cwd=tmp_path)
     assert r.returncode == 0, r
     tests = validate_ctrf(merged)["results"]["tests"]
     assert [t["extra"]["robotology.rtf"]["state"] for t in tests] == ["failed", "passed"], tests
@@ -175,8 +180,10 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
     steady, steady_count = counting_script(tmp_path, "steady", 0)
     suite = suite_of(tmp_path, [("steady", steady)])
     report = tmp_path / f"first.{kind}"
-    assert run_runner("--suite", suite, "-o", f"{kind}:{report}").returncode == 0
-    again = run_runner("--suite", suite, "--rerun-failed", report, "--no-output")
+    assert run_runner("--suite", suite, "-o", f"{kind}:{report.name}",
+                      cwd=tmp_path).returncode == 0
+    again = run_runner("--suite", suite, "--rerun-failed", report.name, "--no-output",
+                       cwd=tmp_path)
     assert again.returncode == 0, again
     assert "nothing to rerun" in again.output, again
     assert steady_count.read_text().strip() == "1", again
@@ -205,13 +212,13 @@ def test_rerun_failed_with_no_failure_has_nothing_to_rerun(tmp_path, kind):
 ])
 def test_rerun_failed_on_a_missing_or_foreign_report_exits_2(tmp_path, content, why):
     steady, _ = counting_script(tmp_path, "steady", 0)
-    report = tmp_path / "report"
+    report = tmp_path / "earlier-run.report"
     if content is not None:
         report.write_text(content)
     r = run_runner("--suite", suite_of(tmp_path, [("steady", steady)]), "--rerun-failed",
-                   report, "--no-output")
+                   report.name, "--no-output", cwd=tmp_path)
     assert r.returncode == 2, r
-    assert why in r.stderr and str(report) in r.stderr, r
+    assert why in r.stderr and report.name in r.stderr, r
 
 
 def test_repeat_until_fail_stops_at_the_first_failing_round(tmp_path, isolation):
@@ -219,7 +226,8 @@ def test_repeat_until_fail_stops_at_the_first_failing_round(tmp_path, isolation)
     # Passes twice, fails on its 3rd run.
     third.write_text(third.read_text().replace("-le 0", "-eq 3"))
     r = run_runner("--isolation", isolation, "--no-output",
-                   "--suite", suite_of(tmp_path, [("third", third)]), "--repeat-until-fail", "10")
+                   "--suite", suite_of(tmp_path, [("third", third)]), "--repeat-until-fail", "10",
+                   cwd=tmp_path)
     assert r.returncode == 1, r
     assert counter.read_text().strip() == "3", r
     assert "round 3 of 10 failed" in r.output or "round 3 failed" in r.output, r
@@ -228,7 +236,7 @@ def test_repeat_until_fail_stops_at_the_first_failing_round(tmp_path, isolation)
 def test_repeat_until_fail_runs_n_rounds_when_all_pass(tmp_path):
     steady, counter = counting_script(tmp_path, "steady", 0)
     r = run_runner("--no-output", "--suite", suite_of(tmp_path, [("steady", steady)]),
-                   "--repeat-until-fail", "4")
+                   "--repeat-until-fail", "4", cwd=tmp_path)
     assert r.returncode == 0, r
     assert counter.read_text().strip() == "4", r
 
@@ -237,7 +245,8 @@ def test_repeat_until_fail_runs_n_rounds_when_all_pass(tmp_path):
                                          ("1000000001", "at most 1000000000")])
 def test_invalid_repeat_until_fail_exits_2_with_the_limits(tmp_path, value, limit):
     steady, _ = counting_script(tmp_path, "steady", 0)
-    r = run_runner("--no-output", "--test", steady, "--repeat-until-fail", value)
+    r = run_runner("--no-output", "--test", f"./{steady.name}", "--repeat-until-fail", value,
+                   cwd=tmp_path)
     assert r.returncode == 2, r
     assert limit in r.stderr and "--repeat-until-fail" in r.stderr, r
 
@@ -247,7 +256,7 @@ def test_fail_fast_waits_for_the_last_attempt(tmp_path):
     steady, steady_count = counting_script(tmp_path, "steady", 0)
     r = run_runner("--no-output", "--suite", suite_of(tmp_path, [("flaky", flaky),
                                                                    ("steady", steady)]),
-                   "--retries", "1", "--fail-fast")
+                   "--retries", "1", "--fail-fast", cwd=tmp_path)
     assert r.returncode == 0, r
     assert steady_count.read_text().strip() == "1", r
 
@@ -256,7 +265,7 @@ def test_flaky_is_its_own_state_on_the_console_and_in_html(tmp_path):
     flaky, _ = counting_script(tmp_path, "flaky", 1)
     html = tmp_path / "r.html"
     r = run_runner("--suite", suite_of(tmp_path, [("flaky", flaky)]), "--retries", "1",
-                   "-o", f"html:{html}")
+                   "-o", "html:r.html", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "FLAKY" in r.stdout and "1 flaky" in r.stdout, r
     assert "retry: attempt 1 of 2 failed" in r.stdout, r
@@ -271,7 +280,8 @@ def test_a_retried_attempt_is_shown_as_retry_and_only_the_last_line_decides(tmp_
     flaky, _ = counting_script(tmp_path, "flaky", 1)
     broken, _ = counting_script(tmp_path, "broken", 99)
     r = run_runner("--isolation", isolation, "--no-output", "--retries", "2", "-j", jobs,
-                   "--suite", suite_of(tmp_path, [("flaky", flaky), ("broken", broken)]))
+                   "--suite", suite_of(tmp_path, [("flaky", flaky), ("broken", broken)]),
+                   cwd=tmp_path)
     assert r.returncode == 1, r
     words = [line.split()[0] for line in r.stdout.splitlines()
              if line.startswith("  ") and not line.startswith("   ")

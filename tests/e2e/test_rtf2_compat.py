@@ -1,4 +1,5 @@
-"""An RTF 2.x plug-in, fixture and suite file work unchanged, in both isolation modes."""
+"""An RTF 2.x plug-in, fixture and suite file work unchanged, in both isolation modes: run as
+users run them, from their folder and named relatively."""
 import pytest
 
 from conftest import PLUGIN_DIR, plugin, run_runner, validate_junit
@@ -17,8 +18,8 @@ def test_rtf2_plugin_fixture_and_suite_run_unchanged(tmp_path, isolation):
 </suit>
 """)
     junit = tmp_path / "r.xml"
-    run = run_runner("-v", "--isolation", isolation, "-s", suite, "-o", f"junit:{junit}",
-                     env={"LD_LIBRARY_PATH": str(PLUGIN_DIR)})
+    run = run_runner("-v", "--isolation", isolation, "-s", "rtf2.xml", "-o", "junit:r.xml",
+                     cwd=tmp_path, env={"LD_LIBRARY_PATH": str(PLUGIN_DIR)})
     assert run.returncode == 0, run
     assert "passed" in run.stdout and "Rtf2StyleTest" in run.stdout, run
     assert "param: --part left_arm" in run.stdout, run
@@ -69,8 +70,8 @@ end
 def test_rtf2_python_test_uses_the_module_without_importing_it(tmp_path, isolation, passing):
     script = tmp_path / "rtf2_test.py"
     script.write_text(RTF2_PYTHON_NO_IMPORT % ("True" if passing else "False"))
-    run = run_runner("-v", "--isolation", isolation, "--test", script, "--param", "--x 1",
-                     "--environment", "sim", "--no-output")
+    run = run_runner("-v", "--isolation", isolation, "--test", script.name, "--param", "--x 1",
+                     "--environment", "sim", "--no-output", cwd=tmp_path)
     assert "NameError" not in run.output, run
     assert run.returncode == (0 if passing else 1), run
     assert "Rtf2PythonTest" in run.stdout, run
@@ -82,7 +83,8 @@ def test_rtf2_python_test_uses_the_module_without_importing_it(tmp_path, isolati
 def test_python_test_that_imports_the_module_still_works(tmp_path, isolation):
     script = tmp_path / "imports.py"
     script.write_text("import robottestingframework\n" + RTF2_PYTHON_NO_IMPORT % "True")
-    run = run_runner("-v", "--isolation", isolation, "--test", script, "--no-output")
+    run = run_runner("-v", "--isolation", isolation, "--test", script.name, "--no-output",
+                     cwd=tmp_path)
     assert run.returncode == 0, run
     assert "env: " in run.stdout and "tearing down" in run.stdout, run
 
@@ -92,8 +94,8 @@ def test_python_test_that_imports_the_module_still_works(tmp_path, isolation):
 def test_rtf2_lua_test_fills_the_table_that_already_exists(tmp_path, isolation, passing):
     script = tmp_path / "rtf2_test.lua"
     script.write_text(RTF2_LUA % ("true" if passing else "false"))
-    run = run_runner("-v", "--isolation", isolation, "--test", script, "--param", "--x 1",
-                     "--environment", "sim", "--no-output")
+    run = run_runner("-v", "--isolation", isolation, "--test", script.name, "--param", "--x 1",
+                     "--environment", "sim", "--no-output", cwd=tmp_path)
     assert "attempt to index a nil value" not in run.output, run
     assert run.returncode == (0 if passing else 1), run
     assert "Rtf2LuaTest" in run.stdout, run
@@ -108,7 +110,8 @@ def test_lua_test_that_makes_its_own_table_still_works(tmp_path, isolation):
     script = tmp_path / "own_table.lua"
     script.write_text("TestCase = {}\nfunction TestCase.run()\n"
                       "    robottestingframework.testReport(\"own table ran\")\nend\n")
-    run = run_runner("-v", "--isolation", isolation, "--test", script, "--no-output")
+    run = run_runner("-v", "--isolation", isolation, "--test", script.name, "--no-output",
+                     cwd=tmp_path)
     assert run.returncode == 0, run
     assert "own table ran" in run.stdout, run
 
@@ -123,7 +126,8 @@ def test_rtf2_headers_bring_what_they_brought(tmp_path, isolation):
     <test>{plugin("rtf2_collector_test")}</test>
 </suite>
 """)
-    run = run_runner("-v", "--isolation", isolation, "-s", suite, "--no-output")
+    run = run_runner("-v", "--isolation", isolation, "-s", suite.name, "--no-output",
+                     cwd=tmp_path)
     assert run.returncode == 0, run
     assert "rtf2 collector test ran its inner test" in run.stdout, run
     assert "rtf2 header fixture: setting up with 2 argument(s), first --answer" in run.output, run
@@ -157,12 +161,14 @@ def test_test_fail_if_fails_when_the_condition_is_false_as_in_rtf2(tmp_path, lan
     true_word, false_word = ("True", "False") if language == "py" else ("true", "false")
     holds = tmp_path / f"holds.{language}"
     holds.write_text(FAIL_IF_SCRIPTS[language] % true_word)
-    run = run_runner("--isolation", isolation, "--test", holds, "--no-output")
+    run = run_runner("--isolation", isolation, "--test", holds.name, "--no-output",
+                     cwd=tmp_path)
     assert run.returncode == 0, run
     assert "the motor is not homed" not in run.output, run
 
     broken = tmp_path / f"broken.{language}"
     broken.write_text(FAIL_IF_SCRIPTS[language] % false_word)
-    run = run_runner("--isolation", isolation, "--test", broken, "--no-output")
+    run = run_runner("--isolation", isolation, "--test", broken.name, "--no-output",
+                     cwd=tmp_path)
     assert run.returncode == 1, run
     assert "the motor is not homed" in run.output, run

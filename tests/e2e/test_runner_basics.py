@@ -31,7 +31,7 @@ def test_suite_runs_tests_in_document_order(tmp_path, suite_file):
   <test>{plugin("passing_test")}</test>
   <test>{plugin("failing_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 1, run
     # "passed  ID (NAME)": the name each test gives itself, beside its id.
     names = re.findall(r"^\s*(?:passed|FAILED)\s+\S+ \((\w+)\)", run.stdout, re.M)
@@ -49,11 +49,11 @@ def test_several_suites_and_a_suites_folder(tmp_path):
         f'<suite name="third"><test>{plugin("passing_test")}</test></suite>')
     (folder / "notes.txt").write_text("not a suite")
 
-    run = run_runner("--suites", folder, cwd=tmp_path)
+    run = run_runner("--suites", folder.name, cwd=tmp_path)
     assert run.returncode == 0, run
     assert re.findall(r"^suite (\w+)", run.stdout, re.M) == ["first", "second"], run
 
-    run = run_runner("--suites", folder, "-r", cwd=tmp_path)
+    run = run_runner("--suites", folder.name, "-r", cwd=tmp_path)
     assert run.returncode == 0, run
     assert re.findall(r"^suite (\w+)", run.stdout, re.M) == ["first", "second", "third"], run
     assert closing_line(run) == "3 passed, 0 failed", run
@@ -65,12 +65,12 @@ def test_tests_folder_runs_every_plugin_in_it(tmp_path):
     for name in ("passing_test", "failing_test"):
         (folder / f"{name}.so").symlink_to(plugin(name))
     (folder / "readme.txt").write_text("not a test")
-    run = run_runner("--tests", folder, cwd=tmp_path)
+    run = run_runner("--tests", folder.name, cwd=tmp_path)
     assert run.returncode == 1, run
     assert closing_line(run) == "1 passed, 1 failed", run
 
 
 def test_missing_folder_is_a_usage_error(tmp_path):
-    run = run_runner("--suites", tmp_path / "nope", cwd=tmp_path)
+    run = run_runner("--suites", "nope", cwd=tmp_path)
     assert run.returncode == 2, run
     assert "nope: not a folder" in run.stderr, run

@@ -15,7 +15,7 @@ def test_fixtures_set_up_in_order_and_torn_down_in_reverse(tmp_path, suite_file)
   {fixture(log, "B")}
   <test>{plugin("passing_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 0, run
     lines = log.read_text().splitlines()
     assert lines[:2] == ["setup A", "setup B"], lines
@@ -32,7 +32,7 @@ def test_failing_fixture_skips_the_tests_with_the_reason_and_fails_the_run(tmp_p
   <test>{plugin("passing_test")}</test>
   <test>{plugin("passing_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 1, run
     lines = log.read_text().splitlines()
     # A was up and is torn down; C was never started.
@@ -49,7 +49,7 @@ def test_fixture_that_cannot_be_loaded_fails_the_suite_with_the_reason(tmp_path,
   <fixture>no_such_fixture</fixture>
   <test>{plugin("passing_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 1, run
     assert "cannot load no_such_fixture" in run.stdout, run
     assert "libno_such_fixture.so" in run.stdout, run

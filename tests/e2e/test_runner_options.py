@@ -1,4 +1,5 @@
-"""The RTF 2.x options, short and long, reaching the tests; usage errors exit 2."""
+"""The RTF 2.x options, short and long, reaching the tests; usage errors exit 2. The runner
+starts in the suite's folder and is given the suite by its name, as users run it."""
 import re
 
 import pytest
@@ -12,7 +13,7 @@ def test_param_and_environment_reach_the_test(tmp_path, suite_file):
   <test>{plugin("echo_test")}</test>
   <test param="--expect-param --own">{plugin("echo_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, "-v", "-p", "--expect-param --cli --expect-env --extra",
+    run = run_runner("-s", suite.name, "-v", "-p", "--expect-param --cli --expect-env --extra",
                      "-e", "--extra yes", cwd=tmp_path)
     assert run.returncode == 0, run
     # The first test has no param of its own: -p reaches it, split like a shell would.
@@ -27,7 +28,7 @@ def test_param_check_fails_when_the_param_is_not_given(tmp_path, suite_file):
     suite = suite_file(f"""<suite name="s">
   <test param="--expect-env --missing">{plugin("echo_test")}</test>
 </suite>""")
-    run = run_runner("--suite", suite, "--environment", "--other", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--environment", "--other", cwd=tmp_path)
     assert run.returncode == 1, run
     assert "environment holds --missing" in run.stdout, run
 
@@ -37,7 +38,7 @@ def test_repetition_runs_each_test_n_times_and_the_suite_wins(tmp_path, suite_fi
   <test name="many">{plugin("echo_test")}</test>
   <test name="two" repetition="2">{plugin("echo_test")}</test>
 </suite>""")
-    run = run_runner("-s", suite, "--repetition", "3", "--verbose", cwd=tmp_path)
+    run = run_runner("-s", suite.name, "--repetition", "3", "--verbose", cwd=tmp_path)
     assert run.returncode == 0, run
     many, two = run.stdout.split("run         two")
     assert "run number 3" in many and "run number 4" not in many, run
@@ -119,9 +120,9 @@ def reported_argv(stdout):
     return match.group(1)
 
 
-def value_options():
+def value_options(folder):
     """Every option of --help that takes a value: {long name: value word}."""
-    run = run_runner("--help")
+    run = run_runner("--help", cwd=folder)
     assert run.returncode == 0, run
     found = {}
     for line in run.stdout.splitlines():
@@ -144,8 +145,8 @@ REFUSES_EMPTY = {
 }
 
 
-def test_the_table_covers_every_option_of_help_that_takes_a_value():
-    assert set(value_options()) == TAKES_EMPTY | REFUSES_EMPTY
+def test_the_table_covers_every_option_of_help_that_takes_a_value(tmp_path):
+    assert set(value_options(tmp_path)) == TAKES_EMPTY | REFUSES_EMPTY
 
 
 @pytest.mark.parametrize("option", sorted(TAKES_EMPTY | REFUSES_EMPTY))

@@ -27,7 +27,7 @@ CASES = {
 def test_malformed_suite_exits_two_naming_file_and_line(tmp_path, suite_file, case):
     text, line, what = CASES[case]
     suite = suite_file(text)
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 2, run
     assert f"suite.xml:{line}: " in run.stderr, run
     assert what in run.stderr, run
@@ -38,14 +38,14 @@ def test_malformed_suite_among_good_ones_runs_nothing(tmp_path, suite_file):
     good = suite_file(f"<suite name='good'><test>{plugin('passing_test')}</test></suite>",
                       name="good.xml")
     bad = suite_file("<suite name='bad'><tests/></suite>", name="bad.xml")
-    run = run_runner("-s", good, "-s", bad, cwd=tmp_path)
+    run = run_runner("-s", good.name, "-s", bad.name, cwd=tmp_path)
     assert run.returncode == 2, run
     assert "bad.xml:1: unknown element <tests>" in run.stderr, run
     assert "PassingTest" not in run.stdout, run
 
 
 def test_unreadable_suite_exits_two(tmp_path):
-    run = run_runner("-s", tmp_path / "missing.xml", cwd=tmp_path)
+    run = run_runner("-s", "missing.xml", cwd=tmp_path)
     assert run.returncode == 2, run
     assert "missing.xml: cannot read the suite file" in run.stderr, run
 
@@ -53,7 +53,7 @@ def test_unreadable_suite_exits_two(tmp_path):
 def test_old_suit_root_is_accepted_with_a_warning(tmp_path, suite_file):
     suite = suite_file(f"<suit name='old'>\n<test>{plugin('passing_test')}</test>\n</suit>",
                        name="old.xml")
-    run = run_runner("-s", suite, cwd=tmp_path)
+    run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 0, run
     assert "old.xml:1: warning" in run.stderr and "<suit>" in run.stderr, run
     assert "1 passed, 0 failed" in run.stdout, run

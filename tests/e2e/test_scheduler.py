@@ -2,7 +2,8 @@
 
 The suites record when their fixture was set up and torn down (a Python fixture appends
 "NAME start|end TIME [ITEM]" to a file under tmp_path): the tests read the intervals, they
-never rely on how long something takes."""
+never rely on how long something takes. The runner starts in the suites' folder and is given
+every file by a relative path, as users run it."""
 import json
 import os
 import re
@@ -46,16 +47,17 @@ def stamp_fixture(folder, wait=0.3):
 
 
 def write_suite(folder, name, body="", attributes="", tests=2, log=None, item=""):
-    """A suite of `tests` passing tests whose fixture stamps its interval into `log`."""
+    """A suite of `tests` passing tests whose fixture stamps its interval into `log`; returns
+    the suite file's name (the runner starts in `folder`)."""
     fixture = ""
     if log is not None:
         fixture = (f'<fixture type="python" param="{log} {name} {item}">'
-                   f'{folder / "stamp_fixture.py"}</fixture>')
+                   'stamp_fixture.py</fixture>')
     cases = "\n".join(f'  <test name="{name}-t{i}">{plugin("passing_test")}</test>'
                       for i in range(tests))
     path = folder / f"{name}.xml"
     path.write_text(f'<suite name="{name}"{attributes}>\n  {fixture}\n  {body}\n{cases}\n</suite>\n')
-    return path
+    return path.name
 
 
 def intervals(log):
@@ -90,7 +92,8 @@ def junit_results(path):
 
 
 def mixed_suites(folder, log):
-    """Suites with passing, failing, skipped and dependent tests, and a failing fixture."""
+    """Suites with passing, failing, skipped and dependent tests, and a failing fixture: the
+    runner's arguments, for a runner started in `folder`."""
     stamp_fixture(folder, wait=0.1)
     suites = [write_suite(folder, "alpha", log=log),
               write_suite(folder, "beta", body=f'<test name="beta-fails">{plugin("failing_test")}</test>'
@@ -123,8 +126,8 @@ def test_jobs_1_writes_what_the_default_writes(tmp_path):
         folder.mkdir()
         args = mixed_suites(folder, folder / "stamps.log")
         files = {kind: folder / f"out.{kind}" for kind in ("txt", "xml", "tap", "json")}
-        r = run_runner(*args, *extra, "-o", f"text:{files['txt']}", "-o", f"junit:{files['xml']}",
-                       "-o", f"tap:{files['tap']}", "-o", f"json:{files['json']}")
+        r = run_runner(*args, *extra, "-o", "text:out.txt", "-o", "junit:out.xml",
+                       "-o", "tap:out.tap", "-o", "json:out.json", cwd=folder)
         assert r.returncode == 1, r
         outputs[label] = {kind: normalised(path.read_text().replace(str(folder), "F"))
                           for kind, path in files.items()}
@@ -141,8 +144,8 @@ def test_jobs_n_gives_the_results_of_jobs_1_in_plan_order(tmp_path):
         folder = tmp_path / f"j{jobs}"
         folder.mkdir()
         args = mixed_suites(folder, folder / "stamps.log")
-        r = run_runner(*args, "-j", jobs, "-o", f"junit:{folder / 'out.xml'}",
-                       "-o", f"json:{folder / 'out.json'}")
+        r = run_runner(*args, "-j", jobs, "-o", "junit:out.xml", "-o", "json:out.json",
+                       cwd=folder)
         assert r.returncode == 1, r
         results[jobs] = junit_results(folder / "out.xml")
         report = json.loads((folder / "out.json").read_text())
@@ -161,7 +164,7 @@ def test_jobs_n_runs_suites_at_once_one_line_per_finished_test(tmp_path):
     args = []
     for name in ("s1", "s2", "s3", "s4"):
         args += ["--suite", write_suite(tmp_path, name, log=log)]
-    r = run_runner(*args, "-j", "2", "--no-output")
+    r = run_runner(*args, "-j", "2", "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     spans = intervals(log)
     assert len(spans) == 4
@@ -181,10 +184,10 @@ def test_jobs_n_runs_suites_at_once_one_line_per_finished_test(tmp_path):
 
 def test_jobs_auto_and_bad_jobs(tmp_path, suite_file):
     suite = suite_file(f'<suite name="one"><test>{plugin("passing_test")}</test></suite>')
-    r = run_runner("--suite", suite, "--jobs", "auto", "--no-output")
+    r = run_runner("--suite", suite.name, "--jobs", "auto", "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     for bad in ("0", "-1", "two", "1.5", "100000"):
-        r = run_runner("--suite", suite, "-j", bad, "--no-output")
+        r = run_runner("--suite", suite.name, "-j", bad, "--no-output", cwd=tmp_path)
         assert r.returncode == 2, r
         assert f"--jobs {bad}: expected a whole number" in r.stderr, r
 
@@ -198,7 +201,7 @@ def test_suites_sharing_a_lock_never_overlap_and_the_wait_is_said(tmp_path):
                                         body='<resource lock="robot:left-arm"/>\n  '
                                              '<resource lock="lab:camera"/>')]
     args += ["--suite", write_suite(tmp_path, "free", log=log)]
-    r = run_runner(*args, "-j", "4", "--verbose", "--no-output")
+    r = run_runner(*args, "-j", "4", "--verbose", "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     spans = intervals(log)
     locked = [spans[n] for n in ("arm1", "arm2", "arm3")]
@@ -225,8 +228,8 @@ def test_pool_items_are_distinct_and_reach_the_suite(tmp_path):
         args += ["--suite", write_suite(
             tmp_path, name, log=log, item="${resource.ros_domain}",
             body=f'<resource pool="ros_domain" count="1"/>\n  <test type="exec" '
-                 f'param="{name} ${{resource.ros_domain}} {seen}">{probe}</test>')]
-    r = run_runner(*args, "-j", "4", "--resources", resources, "--no-output")
+                 f'param="{name} ${{resource.ros_domain}} {seen}">./{probe.name}</test>')]
+    r = run_runner(*args, "-j", "4", "--resources", resources.name, "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     spans = intervals(log)
     assert {s[2] for s in spans.values()} == {"11", "12"}, spans
@@ -248,7 +251,7 @@ def test_exclusive_suite_runs_alone(tmp_path):
     for name in ("e1", "e2", "alone", "e3", "e4"):
         attributes = ' exclusive="true"' if name == "alone" else ""
         args += ["--suite", write_suite(tmp_path, name, log=log, attributes=attributes)]
-    r = run_runner(*args, "-j", "4", "--no-output")
+    r = run_runner(*args, "-j", "4", "--no-output", cwd=tmp_path)
     assert r.returncode == 0, r
     spans = intervals(log)
     for name, span in spans.items():
@@ -266,11 +269,11 @@ def test_bad_resources_exit_2_naming_what_and_where(tmp_path, suite_file):
     cases = [
         (suite('<resource lock="left arm"/>'), [],
          'suite.xml:2: <resource lock="left arm">: a lock name has no spaces'),
-        (suite('<resource pool="ros_domain"/>'), ["--resources", resources],
+        (suite('<resource pool="ros_domain"/>'), ["--resources", resources.name],
          'suite.xml:2: pool "ros_domain" does not exist in'),
         (suite('<resource pool="ros_domain"/>'), [],
          'suite.xml:2: pool "ros_domain" does not exist (no --resources'),
-        (suite('<resource pool="gpus" count="2"/>'), ["--resources", resources],
+        (suite('<resource pool="gpus" count="2"/>'), ["--resources", resources.name],
          'suite.xml:2: pool "gpus" ('),
         (suite('<resource pool="port" default="a b/c"/>'), [],
          'suite.xml:2: default="...": item "b/c" is not an id'),
@@ -287,18 +290,19 @@ def test_bad_resources_exit_2_naming_what_and_where(tmp_path, suite_file):
     ]
     for text, extra, expected in cases:
         path = suite_file(text)
-        r = run_runner("--suite", path, *extra, "--no-output")
+        r = run_runner("--suite", path.name, *extra, "--no-output", cwd=tmp_path)
         assert r.returncode == 2, (expected, r)
         assert expected in r.stderr, (expected, r)
-    r = run_runner("--suite", suite_file(suite('<resource pool="gpus" count="2"/>')),
-                   "--resources", resources, "--no-output")
+    r = run_runner("--suite", suite_file(suite('<resource pool="gpus" count="2"/>')).name,
+                   "--resources", resources.name, "--no-output", cwd=tmp_path)
     assert "and could never run" in r.stderr, r
     for text in ("{", '{"version": {"major": 2}, "local": [{}]}',
                  '{"version": {"major": 1}, "local": [{"gpus": [{"id": "a"}, {"id": "a"}]}]}'):
         resources.write_text(text)
-        r = run_runner("--suite", suite_file(suite("")), "--resources", resources, "--no-output")
+        r = run_runner("--suite", suite_file(suite("")).name, "--resources", resources.name,
+                       "--no-output", cwd=tmp_path)
         assert r.returncode == 2, r
-        assert f"--resources {resources}:" in r.stderr, r
+        assert f"--resources {resources.name}:" in r.stderr, r
 
 
 def test_ctrl_c_during_jobs_2_interrupts_both_and_leaves_nothing(tmp_path, marker):
@@ -310,7 +314,8 @@ def test_ctrl_c_during_jobs_2_interrupts_both_and_leaves_nothing(tmp_path, marke
             tmp_path, name, log=log, tests=0,
             body=f'<test name="{name}-wait" param="--seconds 60">{plugin("waiting_test")}</test>')]
     out = tmp_path / "out.xml"
-    proc = start_runner(*args, "-j", "2", "-o", f"junit:{out}", env=marked(marker))
+    proc = start_runner(*args, "-j", "2", "-o", "junit:out.xml", cwd=tmp_path,
+                        env=marked(marker))
     try:
         deadline = time.monotonic() + 60
         while time.monotonic() < deadline:
@@ -348,8 +353,8 @@ def test_fixture_collapse_during_jobs_2_stops_only_its_suite(tmp_path, marker):
   <test name="s-next">{plugin("passing_test")}</test>
 </suite>''')
     out = tmp_path / "out.xml"
-    r = run_runner("--suite", collapsing, "--suite", steady, "-j", "2", "-o", f"junit:{out}",
-                   env=marked(marker), timeout=90)
+    r = run_runner("--suite", collapsing.name, "--suite", steady.name, "-j", "2",
+                   "-o", "junit:out.xml", cwd=tmp_path, env=marked(marker), timeout=90)
     assert r.returncode == 1, r
     states = {test: state for _, test, state in junit_results(out)}
     assert states["s-wait"] == "passed" and states["s-next"] == "passed", states
@@ -364,10 +369,10 @@ def test_fail_fast_with_jobs_starts_no_suite_after_a_failure(tmp_path, suite_fil
     rest = [suite_file(f'<suite name="rest{i}"><test>{plugin("passing_test")}</test></suite>',
                        name=f"rest{i}.xml") for i in range(3)]
     out = tmp_path / "out.xml"
-    args = ["--suite", first]
+    args = ["--suite", first.name]
     for path in rest:
-        args += ["--suite", path]
-    r = run_runner(*args, "-j", "1", "--fail-fast", "-o", f"junit:{out}")
+        args += ["--suite", path.name]
+    r = run_runner(*args, "-j", "1", "--fail-fast", "-o", "junit:out.xml", cwd=tmp_path)
     assert r.returncode == 1, r
     assert [s for _, _, s in junit_results(out)] == ["failure", "skipped", "skipped", "skipped"]
 
@@ -388,11 +393,11 @@ class TestCase:
 """)
     suite = suite_file(f"""<suite name="py">
   <resource pool="ros_domain"/>
-  <test param="${{resource.ros_domain}}">{script}</test>
+  <test param="${{resource.ros_domain}}">{script.name}</test>
 </suite>""")
     for isolation in ("process", "none"):
-        r = run_runner("--suite", suite, "--resources", resources, "--isolation", isolation,
-                       "-v", "--no-output")
+        r = run_runner("--suite", suite.name, "--resources", resources.name,
+                       "--isolation", isolation, "-v", "--no-output", cwd=tmp_path)
         assert r.returncode == 0, r
         assert "domain=42 param=42" in r.stdout, (isolation, r)
     assert "RTF_RESOURCE_ROS_DOMAIN" not in os.environ
@@ -409,8 +414,8 @@ def test_live_status_line_only_on_a_terminal(tmp_path):
         args += ["--suite", write_suite(tmp_path, name, log=log)]
     leader, follower = pty.openpty()
     proc = subprocess.Popen([RUNNER, *map(str, args), "-j", "2", "--no-output"],
-                            stdout=follower, stderr=follower, stdin=subprocess.DEVNULL,
-                            start_new_session=True)
+                            cwd=tmp_path, stdout=follower, stderr=follower,
+                            stdin=subprocess.DEVNULL, start_new_session=True)
     os.close(follower)
     seen = b""
     deadline = time.monotonic() + 60

@@ -64,10 +64,10 @@ def test_same_named_tests_and_a_mid_run_rename_are_attributed_right_everywhere(
   <test type="python">renaming.py</test>
 </suite>""")
     out = {kind: tmp_path / f"r.{kind}" for kind in ("txt", "xml", "tap", "json", "html")}
-    r = run_runner("--isolation", isolation, "--suite", suite,
-                   "--output", f"text:{out['txt']}", "--output", f"junit:{out['xml']}",
-                   "--output", f"tap:{out['tap']}", "--output", f"json:{out['json']}",
-                   "--output", f"html:{out['html']}", cwd=tmp_path, timeout=90)
+    r = run_runner("--isolation", isolation, "--suite", suite.name,
+                   "--output", "text:r.txt", "--output", "junit:r.xml",
+                   "--output", "tap:r.tap", "--output", "json:r.json",
+                   "--output", "html:r.html", cwd=tmp_path, timeout=90)
     assert r.returncode == 1, r
     expected_lines = [("FAILED" if failed else "passed", f"{key} ({name})")
                       for key, (name, failed, _) in zip(IDS, EXPECTED)]
@@ -145,8 +145,8 @@ def test_each_repetition_has_its_own_id_in_the_json_and_the_shapes_stay(
   <test type="python">second.py</test>
 </suite>""")
     json_file, xml, tap = tmp_path / "r.json", tmp_path / "r.xml", tmp_path / "r.tap"
-    r = run_runner("--isolation", isolation, "--suite", suite, "--output", f"json:{json_file}",
-                   "--output", f"junit:{xml}", "--output", f"tap:{tap}", cwd=tmp_path, timeout=90)
+    r = run_runner("--isolation", isolation, "--suite", suite.name, "--output", "json:r.json",
+                   "--output", "junit:r.xml", "--output", "tap:r.tap", cwd=tmp_path, timeout=90)
     assert r.returncode == 1, r
     validate_ctrf(json_file)
     tests = json.loads(json_file.read_text())["results"]["tests"]
@@ -191,7 +191,7 @@ def test_the_web_page_shows_the_repetition_each_message_came_in(tmp_path, isolat
   <test type="python" repetition="3">second.py</test>
   <test type="python">second.py</test>
 </suite>""")
-    run = WebRun("--isolation", isolation, "-s", suite, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("--isolation", isolation, "-s", suite.name, "--web-linger", "60", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays")
         snapshot = json.loads(request(run.port, "/snapshot")[2])

@@ -40,7 +40,7 @@ def quick_test(folder, name, body="exit 0\n"):
 class WebRun:
     """The runner started with the web page on a free port; its output read by a thread."""
 
-    def __init__(self, *args, cwd=None, env=None):
+    def __init__(self, *args, cwd, env=None):
         self.proc = start_runner("-w", "--web-port", "0", "--no-output", *args, cwd=cwd, env=env)
         self.lines = queue.Queue()
         self.stdout = []
