@@ -10,7 +10,7 @@ from conftest import BUILD_DIR, SOURCE_DIR
 
 def test_the_script_makes_the_report_picture(tmp_path):
     picture = tmp_path / "html-report.png"
-    done = subprocess.run([sys.executable, str(SOURCE_DIR / "scripts" / "html-report-screenshot.py"),
+    done = subprocess.run([sys.executable, "-B", str(SOURCE_DIR / "scripts" / "html-report-screenshot.py"),
                            "--build", str(BUILD_DIR), "--output", str(picture),
                            "--workdir", str(tmp_path)],
                           capture_output=True, text=True, timeout=240)
