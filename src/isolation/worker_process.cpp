@@ -45,9 +45,9 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
     theirChannel.reset();
     outputWrite.reset();
     statusWrite.reset();
-    platform::setNonBlocking(channel_.get());
-    platform::setNonBlocking(output_fd_.get());
-    platform::setNonBlocking(status_fd_.get());
+    platform::setNewNonBlocking(channel_.get());
+    platform::setNewNonBlocking(output_fd_.get());
+    platform::setNewNonBlocking(status_fd_.get());
 
     if (!waitForPid || learnPid(10.0)) {
         return true;
@@ -69,13 +69,23 @@ bool WorkerProcess::learnPid(double seconds) {
     return pid_ > 0;
 }
 
-void WorkerProcess::readChannel(std::vector<WireRecord>& records) {
+namespace {
+
+// Read in 64 KiB: less means the pipe was emptied, and the next poll says when more comes.
+constexpr long kReadSize = 65536;
+
+}  // namespace
+
+void WorkerProcess::readChannel(std::vector<WireRecord>& records, bool all) {
     std::string bytes;
     for (;;) {
         bytes.clear();
-        long n = platform::readSome(channel_.get(), bytes);
+        long n = platform::readSome(channel_.get(), bytes, kReadSize);
         if (n > 0) {
             events_.feed(bytes);
+            if (n < kReadSize && !all) {
+                break;
+            }
             continue;
         }
         if (n == 0) {
@@ -99,13 +109,16 @@ void WorkerProcess::readChannel(std::vector<WireRecord>& records) {
     }
 }
 
-void WorkerProcess::readOutput() {
+void WorkerProcess::readOutput(bool all) {
     std::string bytes;
     for (;;) {
         bytes.clear();
-        long n = platform::readSome(output_fd_.get(), bytes);
+        long n = platform::readSome(output_fd_.get(), bytes, kReadSize);
         if (n > 0) {
             output_.append(bytes);
+            if (n < kReadSize && !all) {
+                break;
+            }
             continue;
         }
         if (n == 0) {
@@ -117,16 +130,19 @@ void WorkerProcess::readOutput() {
 
 void WorkerProcess::drainOutput() {
     if (output_fd_.valid()) {
-        readOutput();
+        readOutput(true);
     }
 }
 
 void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     std::string bytes;
     long n;
-    while ((n = platform::readSome(status_fd_.get(), bytes)) > 0) {
+    while ((n = platform::readSome(status_fd_.get(), bytes, kReadSize)) > 0) {
         statuses_.feed(bytes);
         bytes.clear();
+        if (n < kReadSize) {
+            break;  // the end of file, if it came, is seen on the next poll
+        }
     }
     bool gone = n == 0;
     bool reported = false;
@@ -143,10 +159,10 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     if (gone) {
         // Everything the worker wrote before it ended is in the pipes now: take it all.
         if (channel_.valid()) {
-            readChannel(records);
+            readChannel(records, true);
         }
         if (output_fd_.valid()) {
-            readOutput();
+            readOutput(true);
         }
         status_fd_.reset();
         exited_ = true;
@@ -183,10 +199,10 @@ bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int
         return false;
     }
     if (ready[0]) {
-        readChannel(records);
+        readChannel(records, false);
     }
     if (ready[1]) {
-        readOutput();
+        readOutput(false);
     }
     if (ready[2]) {
         readStatus(records);

@@ -65,8 +65,10 @@ private:
     bool learnPid(double seconds);
     // pump() without the backlog.
     bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
-    void readChannel(std::vector<WireRecord>& records);
-    void readOutput();
+    // `all`: until nothing is left (the worker ended); else one read unless it filled the
+    // buffer (the next poll tells when more came).
+    void readChannel(std::vector<WireRecord>& records, bool all);
+    void readOutput(bool all);
     void readStatus(std::vector<WireRecord>& records);
 
     platform::FileDescriptor channel_, output_fd_, status_fd_;

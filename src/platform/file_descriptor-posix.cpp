@@ -36,6 +36,10 @@ void setNonBlocking(int fd, bool on) {
     }
 }
 
+void setNewNonBlocking(int fd) {
+    ::fcntl(fd, F_SETFL, O_NONBLOCK);
+}
+
 void setCloseOnExec(int fd, bool on) {
     int flags = ::fcntl(fd, F_GETFD);
     if (flags >= 0) {

@@ -45,6 +45,9 @@ void closeDescriptorsFrom(int first);
 int noSigpipeSendFlags();
 
 void setNonBlocking(int fd, bool on = true);
+// The same for a descriptor just made (a pipe's or a socket pair's end: no other status flag
+// set), in one system call instead of two.
+void setNewNonBlocking(int fd);
 void setCloseOnExec(int fd, bool on = true);
 
 // Writes everything (waiting while a non-blocking fd is full). False when the reader is gone.

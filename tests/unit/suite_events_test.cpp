@@ -115,6 +115,27 @@ TEST(SuiteEvents, WakesOncePerBatch) {
     EXPECT_EQ(wakes, 2);
 }
 
+// A running test's start and checks wait for its end (or the scheduler's next look, which takes
+// them without a wake-up): one wake-up a test.
+TEST(SuiteEvents, ARunningTestWakesOnlyAtItsEnd) {
+    Named test("t");
+    int wakes = 0;
+    SuiteEvents queue([&wakes] { ++wakes; });
+    TestResult result;
+    result.addListener(&queue);
+    result.startTest(&test);
+    result.addReport(&test, TestMessage("one"));
+    EXPECT_EQ(wakes, 0);
+    EXPECT_EQ(queue.take().size(), 2u);  // the look every SuiteEvents::kLookMs
+    result.addReport(&test, TestMessage("two"));
+    EXPECT_EQ(wakes, 0);
+    result.endTest(&test);
+    EXPECT_EQ(wakes, 1);
+    EXPECT_EQ(queue.take().size(), 2u);
+    result.startTest(&test);
+    EXPECT_EQ(wakes, 1);
+}
+
 TEST(SuiteEvents, PassedToAResultItKeepsNothingAndWakesNoOne) {
     Named test("t");
     int wakes = 0;

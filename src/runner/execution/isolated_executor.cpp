@@ -88,8 +88,11 @@ void IsolatedExecutor::interrupt() {
 TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestResult& result) {
     self.clearCriticalError();
     EventRelay relay(self, result);
-    drain(wakeRead_.get());
-    interrupted_ = false;
+    // interrupt() sets the flag before it writes the byte: without the flag, nothing to drain.
+    if (interrupted_) {
+        drain(wakeRead_.get());
+        interrupted_ = false;
+    }
 
     WorkRequest request;
     request.name = spec.name;

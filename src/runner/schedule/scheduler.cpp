@@ -359,8 +359,10 @@ void Scheduler::run(TestResult& result) {
             break;
         }
         if (!changed) {
+            // While suites run, a look every kLookMs takes the events of their running tests.
             std::vector<bool> ready;
-            platform::waitReadable({wakeRead_.get()}, 1000, ready);
+            platform::waitReadable({wakeRead_.get()}, running_ > 0 ? SuiteEvents::kLookMs : 1000,
+                                   ready);
         }
     }
     result.endTestRunner();

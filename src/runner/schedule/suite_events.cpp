@@ -31,6 +31,7 @@ std::vector<SuiteEvents::Event> SuiteEvents::take() {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<Event> taken;
     taken.swap(events_);
+    woken_ = false;
     return taken;
 }
 
@@ -39,15 +40,23 @@ void SuiteEvents::onEvent(const RunEvent& event) {
         direct_->publish(event);
         return;
     }
-    bool first = false;
+    bool wake = false;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        first = events_.empty();
         events_.push_back(event);
         events_.back().data.time = steadySeconds();  // when it happened (see replay)
+        const ResultEvent::Kind kind = event.data.kind;
+        if (kind == ResultEvent::Kind::StartTest) {
+            inTest_ = true;
+        } else if (kind == ResultEvent::Kind::EndTest) {
+            inTest_ = false;
+        }
+        // One wake-up per batch: the scheduler takes them all at once. A running test's
+        // events wait for its end, or for the scheduler's next look (kLookMs).
+        wake = !woken_ && !inTest_;
+        woken_ = woken_ || wake;
     }
-    // One wake-up per batch: the scheduler takes them all at once.
-    if (first && wake_) {
+    if (wake && wake_) {
         wake_();
     }
 }

@@ -19,8 +19,14 @@ class SuiteEvents : public TestListener {
 public:
     using Event = RunEvent;
 
-    // `wake`: called (on the reporting thread) after each event, to wake the scheduler.
+    // `wake`: called (on the reporting thread) to wake the scheduler: once per batch of events,
+    // and, while a test runs, not before it ends (see kLookMs).
     explicit SuiteEvents(std::function<void()> wake) : wake_(std::move(wake)) {}
+
+    // How long the scheduler may leave events of a running test kept (its start, its checks):
+    // it looks this often while suites run. Waking it for each one cost two thread switches
+    // and five system calls a test, for a line no one can read at a thousand tests a second.
+    static constexpr int kLookMs = 100;
 
     // The events since the last call, oldest first.
     std::vector<Event> take();
@@ -35,6 +41,8 @@ private:
     TestResult* direct_ = nullptr;
     std::mutex mutex_;
     std::vector<Event> events_;
+    bool woken_ = false;   // the scheduler was woken for what events_ holds
+    bool inTest_ = false;  // between a StartTest and its EndTest
 };
 
 // Hands `event` to every listener of `result`, as if it had been reported there.
