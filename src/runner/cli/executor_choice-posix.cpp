@@ -1,10 +1,5 @@
 #include "runner/cli/executor_choice.h"
 
-#include <cstdio>
-
-#include "platform/process.h"
-#include "runner/cli/program_name.h"
-#include "runner/execution/in_process_executor.h"
 #include "runner/execution/isolated_executor.h"
 
 namespace robottestingframework {
@@ -12,21 +7,7 @@ namespace runner {
 
 std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error) {
     if (options.isolation == Isolation::None) {
-        std::fprintf(stderr,
-                     "%s: warning: --isolation none: a test that crashes, exits or blocks in "
-                     "native code ends or holds the run; a timeout can only ask it to stop\n",
-                     programName);
-        // Daemons the tests leave (out of their process groups) are adopted, and end with us.
-        platform::becomeSubreaper();
-        auto inProcess = std::make_unique<InProcessExecutor>();
-        if (options.jobs > 1) {
-            std::fprintf(stderr,
-                         "%s: warning: --isolation none runs one suite at a time (tests share "
-                         "the runner's process); --jobs %u is not used\n",
-                         programName, options.jobs);
-            options.jobs = 1;
-        }
-        return inProcess;
+        return inProcessExecutor(options);
     }
     isolation::IsolationOptions isolationOptions;
     isolationOptions.verbose = options.verbose;

@@ -2,11 +2,6 @@
 // built for Windows yet (README: Platforms).
 #include "runner/cli/executor_choice.h"
 
-#include <cstdio>
-
-#include "runner/cli/program_name.h"
-#include "runner/execution/in_process_executor.h"
-
 namespace robottestingframework {
 namespace runner {
 
@@ -17,18 +12,7 @@ std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& erro
             "in the runner's process with --isolation none";
         return nullptr;
     }
-    std::fprintf(stderr,
-                 "%s: warning: --isolation none: a test that crashes, exits or blocks in "
-                 "native code ends or holds the run; a timeout can only ask it to stop\n",
-                 programName);
-    if (options.jobs > 1) {
-        std::fprintf(stderr,
-                     "%s: warning: --isolation none runs one suite at a time (tests share "
-                     "the runner's process); --jobs %u is not used\n",
-                     programName, options.jobs);
-        options.jobs = 1;
-    }
-    return std::make_unique<InProcessExecutor>();
+    return inProcessExecutor(options);
 }
 
 }  // namespace runner

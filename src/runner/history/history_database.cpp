@@ -3,8 +3,6 @@
 #include <sqlite3.h>
 
 #include <chrono>
-#include <cstring>
-#include <fstream>
 #include <thread>
 
 #include "runner/history/history_error.h"
@@ -146,13 +144,6 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
             throw;
         }
     }
-}
-
-bool looksLikeHistoryFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[16] = {};
-    in.read(magic, sizeof(magic));
-    return in.gcount() == sizeof(magic) && std::memcmp(magic, "SQLite format 3", 16) == 0;
 }
 
 bool historyBuiltIn() {

@@ -1,8 +1,6 @@
 // A build without SQLite (Windows here: Debian has no SQLite for MinGW): --history is refused
 // when the options are read (historyBuiltIn), so nothing below is reached but through
 // --durations naming a history file, which HistoryDatabase refuses with a message that says why.
-#include <cstring>
-#include <fstream>
 
 #include "runner/history/history_database.h"
 #include "runner/history/history_error.h"
@@ -27,13 +25,6 @@ HistoryDatabase::HistoryDatabase(const std::string& path, Mode) : path_(path) {
 }
 
 HistoryDatabase::~HistoryDatabase() = default;
-
-bool looksLikeHistoryFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[16] = {};
-    in.read(magic, sizeof(magic));
-    return in.gcount() == sizeof(magic) && std::memcmp(magic, "SQLite format 3", 16) == 0;
-}
 
 bool historyBuiltIn() {
     return false;

@@ -1,0 +1,31 @@
+#include "runner/cli/executor_choice.h"
+
+#include <cstdio>
+
+#include "platform/process.h"
+#include "runner/cli/program_name.h"
+#include "runner/execution/in_process_executor.h"
+
+namespace robottestingframework {
+namespace runner {
+
+std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
+    std::fprintf(stderr,
+                 "%s: warning: --isolation none: a test that crashes, exits or blocks in "
+                 "native code ends or holds the run; a timeout can only ask it to stop\n",
+                 programName);
+    // Daemons the tests leave (out of their process groups) are adopted, and end with us
+    // (where the platform can: not on Windows).
+    platform::becomeSubreaper();
+    if (options.jobs > 1) {
+        std::fprintf(stderr,
+                     "%s: warning: --isolation none runs one suite at a time (tests share "
+                     "the runner's process); --jobs %u is not used\n",
+                     programName, options.jobs);
+        options.jobs = 1;
+    }
+    return std::make_unique<InProcessExecutor>();
+}
+
+}  // namespace runner
+}  // namespace robottestingframework
