@@ -37,13 +37,31 @@ usage() {
     exit 2
 }
 
+# Every build compiles through ccache (scripts/install-deps.sh installs it), one cache for
+# all the build folders: the portable-POSIX build differs from the main build only in its
+# platform files, so on a fresh machine it compiles those and takes the rest from the main
+# build's objects. Paths are taken relative to the repository and the build folder is not
+# hashed (an object built with -g names it), or nothing would be shared between folders. The
+# cache stays in the build tree (build/ccache) unless the user has one (CCACHE_DIR).
+# Set up when first configuring, after install-deps.sh.
+launcher=()
+ccache_dir=$root/$dir/ccache
+use_ccache() {
+    if [[ ${#launcher[@]} -eq 0 ]] && command -v ccache >/dev/null; then
+        launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+        export CCACHE_BASEDIR=$root CCACHE_NOHASHDIR=1
+        export CCACHE_DIR=${CCACHE_DIR:-$ccache_dir}
+    fi
+}
+
 # configure <build dir> [cmake options...]: fails on any CMake warning, so none creeps in.
 configure() {
     local dir=$1
     shift
     local log
+    use_ccache
     log=$(mktemp)
-    if ! cmake -S "$root" -B "$dir" -G Ninja -Wdev -DRTF_WARNINGS_AS_ERRORS=ON "$@" 2>&1 |
+    if ! cmake -S "$root" -B "$dir" -G Ninja -Wdev -DRTF_WARNINGS_AS_ERRORS=ON "${launcher[@]}" "$@" 2>&1 |
         tee "$log"; then
         rm -f "$log"
         echo "run.sh: configuring $dir failed" >&2
@@ -151,16 +169,10 @@ sanitizer_job() {
 # no prctl, memfd_create, eventfd, pipe2, close_range, SOCK_SEQPACKET, pidfd). Runs the unit
 # tests and the end-to-end tests of isolation, interrupts, fixtures and hostile input, so the
 # macOS code paths run on every `./run.sh test`. Only the platform files differ from the main
-# build, so with ccache (CCACHE_NOHASHDIR, below) the build is mostly cache hits.
+# build, so through ccache (above) the build is mostly cache hits.
 portable_job() {
-    local launcher=()
-    if command -v ccache >/dev/null; then
-        launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-    fi
-    configure build-portable -DRTF_PORTABLE_POSIX=ON -DRTF_BUILD_BENCH=OFF "${launcher[@]}"
-    # ccache keys an object built with -g by its build folder too: without this, nothing the
-    # main build made would be reused here.
-    if ! CCACHE_NOHASHDIR=1 build build-portable; then
+    configure build-portable -DRTF_PORTABLE_POSIX=ON -DRTF_BUILD_BENCH=OFF
+    if ! build build-portable; then
         echo "run.sh: building build-portable failed" >&2
         failed_total=$((failed_total + 1))
         return 1
@@ -187,17 +199,13 @@ portable_job() {
 # job, so each test's start is quick; the server is stopped at the end.
 windows_job() {
     local out=build-windows
-    local launcher=()
-    if command -v ccache >/dev/null; then
-        launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-    fi
     if ! scripts/windows-deps.sh "$out"; then
         echo "run.sh: fetching the Windows build's dependencies failed" >&2
         failed_total=$((failed_total + 1))
         return 1
     fi
     configure "$out" -DCMAKE_TOOLCHAIN_FILE="$root/cmake/mingw-w64.cmake" \
-        -DRTF_BUILD_BENCH=OFF -DRTF_BUILD_EXAMPLES=OFF "${launcher[@]}"
+        -DRTF_BUILD_BENCH=OFF -DRTF_BUILD_EXAMPLES=OFF
     if ! build "$out"; then
         echo "run.sh: building $out failed" >&2
         failed_total=$((failed_total + 1))

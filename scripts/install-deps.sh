@@ -15,7 +15,7 @@ packages=(
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
     python3-yaml libsqlite3-dev
-    gcovr tini
+    gcovr tini ccache
     clang libclang-rt-14-dev
 )
 # Optional: the Windows job cross-builds with MinGW-w64 (the posix flavour: C++ threads), runs
