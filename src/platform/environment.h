@@ -7,14 +7,6 @@
 namespace robottestingframework {
 namespace platform {
 
-// What separates the folders of a list such as PATH or RTF_PLUGIN_PATH (a drive letter's colon
-// is part of a Windows path).
-#ifdef _WIN32
-constexpr char pathListSeparator = ';';
-#else
-constexpr char pathListSeparator = ':';
-#endif
-
 // NAME=VALUE in this process's environment, replacing any value it had.
 void setEnvironment(const std::string& name, const std::string& value);
 // NAME no longer in this process's environment.

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 
+#include "dll/library_naming.h"
 #include "platform/environment.h"
 #include "runner/cli/command_line_suites.h"
 #include "runner/cli/output_paths.h"
@@ -32,12 +33,12 @@ bool usePluginPath(const std::vector<std::string>& folders) {
                          folder.c_str());
             return false;
         }
-        path += (path.empty() ? "" : std::string(1, platform::pathListSeparator)) +
+        path += (path.empty() ? "" : std::string(1, plugin::pathListSeparator())) +
                 std::filesystem::absolute(folder, error).lexically_normal().string();
     }
     const char* before = std::getenv("RTF_PLUGIN_PATH");
     if (before != nullptr && *before != '\0') {
-        path += platform::pathListSeparator + std::string(before);
+        path += plugin::pathListSeparator() + std::string(before);
     }
     platform::setEnvironment("RTF_PLUGIN_PATH", path);
     return true;
