@@ -89,11 +89,34 @@ def _hosts_ruby(args, cwd):
     return False
 
 
+def _named_relatively(args, cwd):
+    """Fails a test that names a file inside `cwd` by its absolute path: users run the runner
+    from their suite's folder and name its files relatively, and a test that does not would
+    miss what only relative names break (a test about absolute names passes them as
+    AbsoluteName, which says so)."""
+    if cwd is None:
+        return
+    folders = {str(cwd).rstrip(os.sep) + os.sep, os.path.realpath(cwd) + os.sep}
+    for arg in args:
+        if isinstance(arg, AbsoluteName):
+            continue
+        named = [folder for folder in folders if folder in str(arg)]
+        if named:
+            pytest.fail(f"runner argument {arg!r} names a file in the run's folder {named[0]} by "
+                        "its absolute path: name it relative to cwd, as users do")
+
+
+class AbsoluteName(str):
+    """A runner argument that names a file by its absolute path on purpose (a test of
+    absolute names)."""
+
+
 def runner_environment(args, env, inherit=True, cwd=None):
     """The environment of one run of the runner in `cwd`: ours with `env` applied (only `env`
     when not `inherit`). Under the sanitizer job (ctest in build-asan/, tests/sanitizers/), a
     runner that hosts the Ruby VM runs without leak checks: LeakSanitizer crashes on the VM's
     thread at exit. ASan and UBSan stay on."""
+    _named_relatively(args, cwd)
     full_env = dict(os.environ) if inherit else {}
     if env:
         full_env.update(env)
