@@ -2,10 +2,15 @@
 in a job object. The chaos suite, from its folder with relative paths: a passing and a failing
 test, an access violation named by its exception code, a test spinning past its timeout (killed,
 the run goes on), a test that exits, and a test that leaves a child process which must be gone
-after it; every report format read back on Linux, and the runner's exit codes."""
+after it; every report format read back on Linux, and the runner's exit codes; Ctrl-C."""
+import os
+import signal
+import subprocess
+import time
 import xml.etree.ElementTree as ET
 
-from conftest import copy_plugins, run_runner, validate_ctrf, validate_junit, validate_tap
+from conftest import (RUNNER, WINE, copy_plugins, run_runner, validate_ctrf, validate_junit,
+                      validate_tap)
 
 CHAOS = """<?xml version="1.0" encoding="UTF-8"?>
 <suite name="Chaos">
@@ -109,3 +114,32 @@ def test_exit_codes(tmp_path):
     assert "timed out after 1 s" in timed.stdout and "1 passed, 1 failed" in timed.stdout, timed
     usage = run_runner("--no-such-option", cwd=suites)
     assert usage.returncode == 2, usage
+
+
+def test_ctrl_c_stops_the_run_with_reports_written(tmp_path):
+    copy_plugins(tmp_path, "leaves_child.dll", "hang_spin.dll", "passing_test.dll", "sleeper.exe")
+    env = {**os.environ, "WINEDEBUG": "-all"}
+    proc = subprocess.Popen([WINE, str(RUNNER), "-t", "leaves_child.dll", "-p",
+                             "--child sleeper.exe --pid-file child.pid", "-t", "hang_spin.dll",
+                             "-t", "passing_test.dll", "-o", "junit:r.xml"],
+                            cwd=tmp_path, env=env, text=True, stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, stdin=subprocess.DEVNULL)
+    try:
+        # Ctrl-C once the first test ran (its file written): the spinning test runs next.
+        # Wine turns SIGINT into CTRL_C_EVENT.
+        deadline = time.monotonic() + 60
+        while not (tmp_path / "child.pid").exists() and time.monotonic() < deadline:
+            time.sleep(0.2)
+        assert (tmp_path / "child.pid").exists(), "the first test did not run"
+        time.sleep(1)
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
+    assert proc.returncode == 130, (proc.returncode, out, err)
+    assert "interrupted; stopping the running test" in out + err, (out, err)
+    assert "1 passed, 2 failed" in out and "2 interrupted" in out, (out, err)
+    validate_junit(tmp_path / "r.xml")
+    assert "interrupted" in (tmp_path / "r.xml").read_text()
