@@ -36,8 +36,13 @@ public:
     // Ends the server and, through it, every worker and their descendants. Waits (bounded).
     void stop();
 
+    // Windows has no fork: there the runner starts each worker itself from this program
+    // (WorkerProcess), and "the server" is only where the worker is; start() checks it exists.
+    const std::string& workerPath() const { return workerPath_; }
+
 private:
     platform::FileDescriptor control_;
+    std::string workerPath_;
     pid_t pid_ = -1;
     std::mutex mutex_;
 };

@@ -4,6 +4,7 @@
 
 #include <sys/types.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@
 #include "platform/file_descriptor.h"
 
 namespace robottestingframework {
+namespace platform {
+class JobProcess;  // Windows (platform/job_process.h)
+}  // namespace platform
 namespace isolation {
 
 // The last bytes a worker printed (64 KiB), bounded so a chatty test cannot fill the runner's
@@ -75,6 +79,10 @@ private:
     WireDecoder events_, statuses_;
     std::vector<WireRecord> backlog_;  // received while waiting for the pid
     OutputTail output_;
+    // Windows: the worker in its job object, started by us (no fork server), and the pipe its
+    // request and fixture calls go out on. Unused on POSIX.
+    std::shared_ptr<platform::JobProcess> job_;
+    platform::FileDescriptor calls_;
     pid_t pid_ = -1;
     bool exited_ = false;
     bool corrupt_ = false;

@@ -1,10 +1,8 @@
 #include "languages/test_loader.h"
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 
+#include "languages/executable_file.h"
 #include "languages/language_loaders.h"
 #include "languages/script_module_loading.h"
 
@@ -84,9 +82,7 @@ std::string typeFromFile(const std::string& path) {
     if (!type.empty()) {
         return type;
     }
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0 && S_ISREG(info.st_mode) &&
-        ::access(path.c_str(), X_OK) == 0) {
+    if (isExecutableFile(path)) {
         return "exec";
     }
     return {};

@@ -4,11 +4,6 @@
 namespace robottestingframework {
 namespace languages {
 
-std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error) {
-    error = "'" + path + "': exec tests are not built for Windows yet";
-    return nullptr;
-}
-
 std::unique_ptr<LoadedFixture> loadProcessFixture(const std::string& path, std::string& error) {
     error = "'" + path + "': the process fixture is not built for Windows yet";
     return nullptr;

@@ -5,12 +5,10 @@
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/TestResult.h>
 
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include "languages/exec/exec_process.h"
 #include "languages/exec/tap_parser.h"
 #include "languages/exec/tap_records.h"
+#include "languages/executable_file.h"
 #include "languages/language_loaders.h"
 #include "languages/output_tail.h"
 #include "platform/signal_name.h"
@@ -262,9 +260,7 @@ private:
 }  // namespace
 
 std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
-        ::access(path.c_str(), X_OK) != 0) {
+    if (!isExecutableFile(path)) {
         error = path + " is not an executable file";
         return nullptr;
     }

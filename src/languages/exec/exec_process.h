@@ -6,12 +6,16 @@
 #include <chrono>
 #include <cstddef>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace robottestingframework {
+namespace platform {
+class JobProcess;  // Windows (platform/job_process.h)
+}  // namespace platform
 namespace languages {
 
 struct ExecOutcome {
@@ -42,6 +46,7 @@ public:
 private:
     std::mutex mutex_;
     pid_t pid_ = -1;
+    std::shared_ptr<platform::JobProcess> job_;  // Windows: the running program's job
     bool terminate_ = false;
     std::chrono::steady_clock::time_point terminatedAt_;
 };

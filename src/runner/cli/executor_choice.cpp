@@ -5,6 +5,7 @@
 #include "platform/process.h"
 #include "runner/cli/program_name.h"
 #include "runner/execution/in_process_executor.h"
+#include "runner/execution/isolated_executor.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -25,6 +26,21 @@ std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
         options.jobs = 1;
     }
     return std::make_unique<InProcessExecutor>();
+}
+
+// The same on every platform: the isolated executor hides how workers start (a fork server on
+// POSIX, a job object per worker on Windows).
+std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error) {
+    if (options.isolation == Isolation::None) {
+        return inProcessExecutor(options);
+    }
+    isolation::IsolationOptions isolationOptions;
+    isolationOptions.verbose = options.verbose;
+    auto isolated = std::make_unique<isolation::IsolatedExecutor>(isolationOptions);
+    if (!isolated->start(error)) {
+        return nullptr;
+    }
+    return isolated;
 }
 
 }  // namespace runner

@@ -17,8 +17,7 @@ namespace runner {
 // becomes 1). Nullptr with `error` when process isolation cannot start.
 std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error);
 
-// --isolation none on every platform (executor_choice.cpp): the warnings, and one suite at a
-// time. chooseExecutor's files (executor_choice-<platform>.cpp) call it.
+// --isolation none: the warnings, and one suite at a time. chooseExecutor calls it.
 std::unique_ptr<TestExecutor> inProcessExecutor(Options& options);
 
 }  // namespace runner

@@ -11,7 +11,6 @@
 #include "platform/clock.h"
 #include "platform/process.h"
 #include "platform/signal_name.h"
-#include "runner/execution/isolated_fixture.h"
 
 #include "isolation/worker_process.h"
 
@@ -34,8 +33,9 @@ std::string said(const EventRelay& relay) {
 }
 
 void drain(int fd) {
-    char buffer[64];
-    while (::read(fd, buffer, sizeof(buffer)) > 0) {
+    std::string bytes;
+    while (platform::readSome(fd, bytes, 64) > 0) {
+        bytes.clear();
     }
 }
 
@@ -192,22 +192,6 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     }
     relay.end(worker.output().take());
     return relay.status();
-}
-
-std::unique_ptr<FixtureManager> IsolatedExecutor::makeFixture(const runner::FixtureSpec& spec,
-                                                              std::string& error) {
-    WorkRequest request;
-    request.role = WorkRequest::Role::Fixture;
-    request.param = spec.param;
-    request.name = spec.plugin;
-    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
-                                 request.type, error)) {
-        return nullptr;
-    }
-    if (!start(error)) {
-        return nullptr;
-    }
-    return std::unique_ptr<FixtureManager>(new IsolatedFixture(server_, request, options_));
 }
 
 }  // namespace isolation

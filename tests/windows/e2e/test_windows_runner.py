@@ -92,10 +92,3 @@ def test_history_says_it_is_not_built_in(tmp_path):
     assert run.returncode == 2, run
     assert "--history h.db: the run history is not built into this runner" in run.stderr, run
     assert not (tmp_path / "h.db").exists()
-
-
-def test_process_isolation_says_to_use_isolation_none(tmp_path):
-    copy_plugins(tmp_path, "passing_test.dll")
-    run = run_runner("-t", "passing_test.dll", "--no-output", cwd=tmp_path)
-    assert run.returncode == 2, run
-    assert "not built for Windows yet" in run.stderr and "--isolation none" in run.stderr, run

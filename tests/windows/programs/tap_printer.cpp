@@ -1,0 +1,13 @@
+// An exec test (Windows): prints TAP, one passing check per argument and a plan; "fail" as an
+// argument makes that check fail.
+#include <cstdio>
+#include <cstring>
+
+int main(int argc, char** argv) {
+    std::printf("1..%d\n", argc - 1);
+    for (int i = 1; i < argc; ++i) {
+        const bool ok = std::strcmp(argv[i], "fail") != 0;
+        std::printf("%s %d - %s\n", ok ? "ok" : "not ok", i, argv[i]);
+    }
+    return 0;
+}
