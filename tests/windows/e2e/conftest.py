@@ -61,6 +61,16 @@ def stop_runner(proc):
         proc.wait(timeout=30)
 
 
+def run_with_ctrl_c(ready_file, *args, cwd, timeout=120):
+    """The Windows runner with `args` started by console_ctrl_c.exe (RTF_CTRL_C), which sends it
+    a console Ctrl-C once `ready_file` (relative to `cwd`) exists."""
+    full_env = {**os.environ, "WINEDEBUG": "-all"}
+    proc = subprocess.run([WINE, os.environ["RTF_CTRL_C"], str(ready_file), windows_path(RUNNER),
+                           *map(str, args)], cwd=cwd, env=full_env, capture_output=True,
+                          text=True, timeout=timeout, stdin=subprocess.DEVNULL)
+    return Run(proc)
+
+
 def copy_plugins(folder, *names):
     """The test plug-ins `names` (file names in RTF_TEST_PLUGIN_DIR) copied into `folder`."""
     folder.mkdir(parents=True, exist_ok=True)
