@@ -170,5 +170,5 @@ def test_a_port_in_use_exits_2_naming_it(tmp_path):
         run = run_runner("-w", "--web-port", port, "--no-output", "--isolation", "none",
                          "-t", "t.lua", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"--web-port {port}" in run.stderr, run
+    assert f"--web-port {port}: cannot listen on 127.0.0.1:{port}" in run.stderr, run
     assert "1 passed" not in run.stdout, run
