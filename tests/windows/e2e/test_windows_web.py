@@ -75,9 +75,14 @@ class Output:
         pytest.fail(f"no line matching {pattern.pattern!r}\n{self.text()}")
 
     def text(self):
-        for thread in self._threads:
-            thread.join(timeout=0 if any(t.is_alive() for t in self._threads) else 5)
+        """What was read so far (all of it once the runner has ended: see finished)."""
         return "".join(self.lines)
+
+    def finished(self):
+        """Everything the runner printed, once it has ended and its pipes are read out."""
+        for thread in self._threads:
+            thread.join(timeout=10)
+        return self.text()
 
 
 def get(url, timeout=20):
@@ -154,8 +159,8 @@ def test_the_page_is_served_and_its_event_stream_delivers_the_run(tmp_path):
         assert states == {"waiting": "passed", "passing": "passed", "failing": "failed"}, text
         assert '"state":"finished"' in text and "the gripper slipped" in text, text
 
-        assert proc.wait(timeout=60) == 1, output.text()  # a test failed
-        assert "2 passed, 1 failed" in output.text(), output.text()
+        assert proc.wait(timeout=60) == 1, output.finished()  # a test failed
+        assert "2 passed, 1 failed" in output.finished(), output.finished()
     finally:
         go.touch()
         stop_runner(proc)
