@@ -1,5 +1,5 @@
 """The live web page on Windows (-w/--web-port: cpp-httplib over Winsock, in
-RobotTestingFrameworkWeb.dll, which the runner loads): served on 127.0.0.1 under Wine and
+libRobotTestingFrameworkWeb.dll, which the runner loads): served on 127.0.0.1 under Wine and
 fetched from Linux with urllib, its event stream delivering the run's results as they happen.
 The run is a Lua suite from its own folder (--isolation none); its first test waits for a file
 the test writes once the page has shown it running."""
