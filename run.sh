@@ -213,12 +213,19 @@ windows_job() {
     fi
     export WINEPREFIX=$root/$out/wine WINEDEBUG=-all WINEDLLOVERRIDES="mscoree,mshtml="
     mkdir -p "$WINEPREFIX"
-    # Made once, and the server kept for the job (stopped below, whatever the tests did).
-    timeout 300 /usr/lib/wine/wine64 wineboot --init
+    # One wineserver for the whole job, started with -p before any Wine program: -p only
+    # applies to a server it starts, and the one a program starts (Debian's -p0) exits with its
+    # last program, failing one starting at that moment ("wine client error:0: recvmsg:
+    # Connection reset by peer"). A server left by an earlier job is ended first.
+    /usr/lib/wine/wineserver -k 2>/dev/null || true
+    /usr/lib/wine/wineserver -w
     /usr/lib/wine/wineserver -p
+    timeout 300 /usr/lib/wine/wine64 wineboot --init
     local status=0
     run_ctest windows "$out" || status=1
-    /usr/lib/wine/wineserver -k || true
+    # Ended by the tests' last (windows.wineserver_stop); again here whatever the tests did.
+    /usr/lib/wine/wineserver -k 2>/dev/null || true
+    /usr/lib/wine/wineserver -w
     return $status
 }
 

@@ -3,7 +3,8 @@
 # CMake files link them the same way:
 #   pugixml::pugixml   pugixml from Debian's source package, a static library
 #   rtf_lua            Lua 5.4 from Debian's source package, a static library (its C API)
-#   CLI11::CLI11, nlohmann_json::nlohmann_json, httplib::httplib   the copied headers
+#   httplib::httplib   cpp-httplib's header-only httplib.h, from Debian's source package
+#   CLI11::CLI11, nlohmann_json::nlohmann_json   the copied headers
 #   GTest::gtest, GTest::gtest_main   GoogleTest built from /usr/src/googletest
 set(RTF_WINDOWS_DEPS_DIR ${PROJECT_BINARY_DIR}/deps CACHE PATH
     "Where scripts/windows-deps.sh put the Windows build's third-party sources and headers")
@@ -39,12 +40,19 @@ if(NOT EXISTS ${header_dir}/CLI/CLI.hpp OR NOT EXISTS ${header_dir}/nlohmann/jso
     message(FATAL_ERROR "${header_dir} lacks CLI11 or nlohmann-json: run "
                         "scripts/windows-deps.sh ${PROJECT_BINARY_DIR}")
 endif()
-foreach(name CLI11::CLI11 nlohmann_json::nlohmann_json httplib::httplib)
+foreach(name CLI11::CLI11 nlohmann_json::nlohmann_json)
     string(REPLACE "::" "_" target rtf_${name})
     add_library(${target} INTERFACE)
     target_include_directories(${target} SYSTEM INTERFACE ${header_dir})
     add_library(${name} ALIAS ${target})
 endforeach()
+
+# Over Winsock (ws2_32), which its header asks for with a pragma MinGW ignores.
+rtf_windows_dep_folder(httplib_dir cpp-httplib-*)
+add_library(rtf_httplib INTERFACE)
+target_include_directories(rtf_httplib SYSTEM INTERFACE ${httplib_dir})
+target_link_libraries(rtf_httplib INTERFACE ws2_32)
+add_library(httplib::httplib ALIAS rtf_httplib)
 
 if(RTF_BUILD_TESTS)
     set(BUILD_GMOCK OFF CACHE BOOL "" FORCE)

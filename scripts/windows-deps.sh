@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # windows-deps.sh BUILD_DIR: the third-party code the Windows build (cmake/mingw-w64.cmake)
 # compiles or includes, fetched into BUILD_DIR/deps/ and never into the repository:
-#   - pugixml and Lua 5.4: Debian 12's source packages (`apt-get source`), through an apt
+#   - pugixml, Lua 5.4 and cpp-httplib: Debian 12's source packages (`apt-get source`; Debian's
+#     installed httplib.h declares only, its code being in libcpp-httplib.so, while the source
+#     has the header-only httplib.h the Windows build compiles), through an apt
 #     configuration of its own under BUILD_DIR/deps/apt/ (its sources.list with deb-src lines,
 #     its lists and caches): the machine's /etc/apt and /var/lib/apt are never written;
-#   - CLI11, nlohmann-json and cpp-httplib: the headers Debian installed, copied alone into
+#   - CLI11 and nlohmann-json: the headers Debian installed, copied alone into
 #     BUILD_DIR/deps/include/, so the cross compiler never sees /usr/include (glibc's headers).
 # Quick when done: each part is fetched once.
 set -euo pipefail
@@ -17,7 +19,7 @@ deps=$(cd "$1/deps" && pwd)
 
 # The header-only libraries, as installed by scripts/install-deps.sh.
 mkdir -p "$deps/include"
-for header in /usr/include/CLI /usr/include/nlohmann /usr/include/httplib.h; do
+for header in /usr/include/CLI /usr/include/nlohmann; do
     if [[ ! -e "$header" ]]; then
         echo "windows-deps: $header is missing (scripts/install-deps.sh installs it)" >&2
         exit 1
@@ -25,9 +27,12 @@ for header in /usr/include/CLI /usr/include/nlohmann /usr/include/httplib.h; do
     cp -a "$header" "$deps/include/"
 done
 
+# Installed httplib.h copied here by earlier versions of this script: not the one to compile.
+rm -f "$deps/include/httplib.h"
+
 # Source packages: their name, and the folder `apt-get source` unpacks them to.
-packages=(pugixml lua5.4)
-folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h")
+packages=(pugixml lua5.4 cpp-httplib)
+folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h" "cpp-httplib-*/httplib.h")
 missing=()
 for i in "${!packages[@]}"; do
     # shellcheck disable=SC2086 # the pattern is meant to expand
@@ -36,7 +41,7 @@ for i in "${!packages[@]}"; do
     fi
 done
 if ((${#missing[@]} == 0)); then
-    echo "windows-deps: pugixml, Lua 5.4 and the header-only libraries are in $deps"
+    echo "windows-deps: pugixml, Lua 5.4, cpp-httplib and the header-only libraries are in $deps"
     exit 0
 fi
 

@@ -47,8 +47,13 @@ struct LanguageModule {
 }  // namespace languages
 }  // namespace robottestingframework
 
-// The entry point every module defines (and the only symbol test_loader looks up).
+// The entry point every module defines (and the only symbol test_loader looks up): exported
+// from the module's DLL on Windows, visible from its shared object elsewhere.
 #define RTF_LANGUAGE_MODULE_ENTRY "rtf_language_module"
-extern "C" __attribute__((visibility("default")))
-const robottestingframework::languages::LanguageModule*
+#ifdef _WIN32
+#define RTF_LANGUAGE_MODULE_EXPORT __declspec(dllexport)
+#else
+#define RTF_LANGUAGE_MODULE_EXPORT __attribute__((visibility("default")))
+#endif
+extern "C" RTF_LANGUAGE_MODULE_EXPORT const robottestingframework::languages::LanguageModule*
 rtf_language_module();

@@ -1,7 +1,5 @@
 #include "web/web_server.h"
 
-#include <sys/socket.h>
-
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -11,6 +9,7 @@
 
 #include <httplib.h>
 
+#include "web/exclusive_port.h"
 #include "web/page_assets.h"
 
 namespace robottestingframework {
@@ -76,12 +75,8 @@ bool WebServer::start(const std::string& host, unsigned int port, std::string& e
     httplib::Server& server = *server_;
     // Each open page holds a thread for its event stream.
     server.new_task_queue = [] { return new httplib::ThreadPool(16); };
-    // SO_REUSEADDR only: httplib's default adds SO_REUSEPORT, with which a second server on
-    // the same port would share it instead of being told the port is in use.
-    server.set_socket_options([](socket_t sock) {
-        int yes = 1;
-        ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof(yes));
-    });
+    server.set_socket_options(
+        [](socket_t sock) { claimPortAlone(static_cast<std::uintptr_t>(sock)); });
     server.set_keep_alive_timeout(2);
     server.set_payload_max_length(0);
     server.set_default_headers({{"Content-Security-Policy", contentSecurityPolicy},

@@ -6,6 +6,7 @@ Environment (tests/windows/CMakeLists.txt): RTF_TESTRUNNER, RTF_TEST_PLUGIN_DIR,
 RTF_SOURCE_DIR, RTF_BUILD_DIR, WINEPREFIX."""
 import json
 import os
+import signal
 import subprocess
 from pathlib import Path
 
@@ -41,6 +42,32 @@ def run_runner(*args, cwd, env=None, timeout=120):
     proc = subprocess.run([WINE, str(RUNNER), *map(str, args)], cwd=cwd, env=full_env,
                           capture_output=True, text=True, timeout=timeout,
                           stdin=subprocess.DEVNULL)
+    return Run(proc)
+
+
+def start_runner(*args, cwd, env=None):
+    """The Windows runner under Wine started without waiting (for tests that talk to it while
+    it runs): a Popen in a session of its own (stop_runner ends the whole group), text pipes."""
+    full_env = {**os.environ, "WINEDEBUG": "-all", **(env or {})}
+    return subprocess.Popen([WINE, str(RUNNER), *map(str, args)], cwd=cwd, env=full_env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            stdin=subprocess.DEVNULL, start_new_session=True, text=True)
+
+
+def stop_runner(proc):
+    """Kills a runner start_runner started, if it still runs (the wineserver stays)."""
+    if proc.poll() is None:
+        os.killpg(proc.pid, signal.SIGKILL)
+        proc.wait(timeout=30)
+
+
+def run_with_ctrl_c(ready_file, *args, cwd, timeout=120):
+    """The Windows runner with `args` started by console_ctrl_c.exe (RTF_CTRL_C), which sends it
+    a console Ctrl-C once `ready_file` (relative to `cwd`) exists."""
+    full_env = {**os.environ, "WINEDEBUG": "-all"}
+    proc = subprocess.run([WINE, os.environ["RTF_CTRL_C"], str(ready_file), windows_path(RUNNER),
+                           *map(str, args)], cwd=cwd, env=full_env, capture_output=True,
+                          text=True, timeout=timeout, stdin=subprocess.DEVNULL)
     return Run(proc)
 
 
