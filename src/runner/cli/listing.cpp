@@ -85,8 +85,8 @@ std::string listText(const std::vector<SuiteSpec>& suites, const std::vector<uns
             text += "  " + idOf(suite, test) + "\n";
             const std::string type = typeOf(test);
             text += "      type " + (type.empty() ? std::string("(unknown)") : type) +
-                    ", plug-in " + (test.path.empty() ? test.plugin + " (not found)" : test.path) +
-                    "\n";
+                    ", plug-in " +
+                    (test.path.empty() ? test.plugin + " (not found)" : test.path.str()) + "\n";
             if (!test.param.empty()) {
                 text += "      param " + shown(test.param) + "\n";
             }
@@ -113,8 +113,8 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
         const SuiteSpec& suite = suites[s];
         nlohmann::json fixtures = nlohmann::json::array();
         for (const auto& fixture : suite.fixtures) {
-            fixtures.push_back({{"plugin", fixture.plugin},
-                                {"path", fixture.path},
+            fixtures.push_back({{"plugin", fixture.plugin.str()},
+                                {"path", fixture.path.str()},
                                 {"type", fixture.type},
                                 {"param", shown(fixture.param)}});
         }
@@ -123,8 +123,8 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
             tests.push_back({{"id", idOf(suite, test)},
                              {"name", PluginTest::displayName(test)},
                              {"type", typeOf(test)},
-                             {"plugin", test.plugin},
-                             {"path", test.path},
+                             {"plugin", test.plugin.str()},
+                             {"path", test.path.str()},
                              {"param", shown(test.param)},
                              {"environment", shown(test.environment)},
                              {"tags", test.tags},

@@ -11,7 +11,7 @@ PluginTest::PluginTest(const TestSpec& spec, TestExecutor& executor)
 }
 
 std::string PluginTest::displayName(const TestSpec& spec) {
-    return spec.name.empty() ? spec.plugin : spec.name;
+    return (spec.name.empty() ? spec.plugin : spec.name).str();
 }
 
 void PluginTest::run(TestResult& result) {

@@ -4,12 +4,14 @@
 #include <string>
 #include <vector>
 
+#include "runner/model/shared_string.h"
+
 namespace robottestingframework {
 namespace runner {
 
 // Where a piece of the model came from, for error messages ("suite.xml:12").
 struct SourceLocation {
-    std::string file;
+    SharedString file;  // one string for every element of one file
     unsigned int line = 0;
     std::string toString() const;
 };
@@ -21,27 +23,29 @@ struct VariableValue {
     std::string origin;  // "--var", "vars.env:3", "suite.xml:4"
 };
 
+// A suite's tests share their plug-in's strings (SharedString): 10 000 tests of one plug-in hold
+// its path once.
 struct TestSpec {
-    std::string plugin;  // as written: a path or a bare name
-    std::string path;    // resolved file; empty when it could not be found
-    std::string type;    // "dll", "python", "lua", "ruby", "exec"; empty: from the file
-    std::string name;    // optional name="..." from the suite; else the plug-in's name
+    SharedString plugin;  // as written: a path or a bare name
+    SharedString path;    // resolved file; empty when it could not be found
+    SharedString type;    // "dll", "python", "lua", "ruby", "exec"; empty: from the file
+    SharedString name;    // optional name="..." from the suite; else the plug-in's name
     // Its id in its suite (model/test_id.h), given once the suite is read; "SUITE/id" is the
     // name every output and option uses for it.
     std::string id;
-    std::string param;
-    std::string environment;
+    SharedString param;           // --param's, when the test has none, is shared by all
+    SharedString environment;     // the suite's and the command line's, shared when it adds none
     unsigned int repetition = 1;  // 0 in a suite file without one: --repetition, else 1
     double timeout = 0;           // seconds; 0: none (issue 3 fills the precedence)
     std::vector<std::string> depends;
     std::vector<std::string> tags;  // its own and its suite's
-    std::string skipReason;         // non-empty: skipped with this reason, never run
+    SharedString skipReason;        // non-empty: skipped with this reason, never run
     SourceLocation where;
 };
 
 struct FixtureSpec {
-    std::string plugin;
-    std::string path;
+    SharedString plugin;
+    SharedString path;
     std::string type;  // "dll", "python", "process"; empty: from the file
     std::string param;
     SourceLocation where;

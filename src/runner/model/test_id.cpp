@@ -121,7 +121,7 @@ void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
 std::string testId(const SuiteSpec& suite, const TestSpec& test) {
     // A spec made without a suite file (the unit tests) has no id yet: its name or plug-in.
     if (test.id.empty()) {
-        return suite.name + "/" + (test.name.empty() ? test.plugin : test.name);
+        return suite.name + "/" + ((test.name.empty() ? test.plugin : test.name).str());
     }
     return suite.name + "/" + test.id;
 }

@@ -62,7 +62,7 @@ std::string findUnknownDependency(const std::vector<SuiteSpec>& suites) {
 namespace {
 
 std::string label(const TestSpec& test) {
-    const std::string name = test.name.empty() ? test.plugin : test.name;
+    const std::string& name = (test.name.empty() ? test.plugin : test.name).str();
     return name + " (" + test.where.toString() + ")";
 }
 

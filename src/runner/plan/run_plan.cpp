@@ -77,15 +77,24 @@ std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
 }
 
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides) {
+    // What comes from the suite and the command line alone is one string for all its tests.
+    const SharedString param = overrides.param;
+    std::string suiteWide = suite.environment;
+    append(suiteWide, overrides.environment);
+    const SharedString environment = suiteWide;
     for (auto& test : suite.tests) {
         if (test.param.empty()) {
-            test.param = overrides.param;
+            test.param = param;
         }
         // Suite first, then the test's own, then the command line.
-        std::string environment = suite.environment;
-        append(environment, test.environment);
-        append(environment, overrides.environment);
-        test.environment = environment;
+        if (test.environment.empty()) {
+            test.environment = environment;
+        } else {
+            std::string own = suite.environment;
+            append(own, test.environment);
+            append(own, overrides.environment);
+            test.environment = own;
+        }
         if (test.repetition == 0) {
             test.repetition = overrides.repetition == 0 ? 1 : overrides.repetition;
         }

@@ -255,13 +255,18 @@ private:
         return type;
     }
 
-    // Suites often list one plug-in many times: look each name up once.
-    std::string resolve(const std::string& plugin) const {
+    // Suites often list one plug-in many times: look each name up once, and give every test
+    // naming it the same two strings.
+    const std::pair<SharedString, SharedString>& pluginAndPath(const std::string& plugin) const {
         auto known = resolved_.find(plugin);
-        if (known != resolved_.end()) {
-            return known->second;
+        if (known == resolved_.end()) {
+            known = resolved_
+                        .emplace(plugin,
+                                 std::make_pair(SharedString(plugin),
+                                                SharedString(plugin::findPlugin(plugin, folder_))))
+                        .first;
         }
-        return resolved_[plugin] = plugin::findPlugin(plugin, folder_);
+        return known->second;
     }
 
 public:
@@ -586,7 +591,9 @@ private:
             }
             fixture.param = before;
         }
-        fixture.path = resolve(fixture.plugin);
+        const auto& named = pluginAndPath(fixture.plugin);
+        fixture.plugin = named.first;
+        fixture.path = named.second;
         return fixture;
     }
 
@@ -608,9 +615,11 @@ private:
         };
         TestSpec test;
         test.where = where(node);
-        test.plugin = plugin;
+        const auto& named = pluginAndPath(plugin);
+        test.plugin = named.first;
+        test.path = named.second;
         pugi::xml_node typed = overrides.attribute("type") ? overrides : node;
-        test.type = typeOf(typed, testTypes);
+        test.type = types_.intern(typeOf(typed, testTypes));
         test.param = value("param");
         test.environment = value("environment");
         test.name = trim(value("name"));
@@ -624,7 +633,6 @@ private:
         }
         test.depends = splitList(value("depends"));
         test.tags = splitList(value("tags"));
-        test.path = resolve(test.plugin);
         return test;
     }
 
@@ -692,13 +700,14 @@ public:
 
 private:
     const std::string& text_;
-    std::string path_;
+    SharedString path_;  // every SourceLocation of this file holds it
     std::string folder_;
     std::vector<std::string>& warnings_;
     variables::VariableTable& table_;
     std::vector<std::size_t> newlines_;
     std::vector<std::string> usedInTestFiles_;
-    mutable std::unordered_map<std::string, std::string> resolved_;
+    mutable std::unordered_map<std::string, std::pair<SharedString, SharedString>> resolved_;
+    StringPool types_;  // "dll", "python", ...: one string each for all the tests
 };
 
 variables::VariableTable tableOf(const std::vector<variables::Variable>& given) {
