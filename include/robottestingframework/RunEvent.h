@@ -14,6 +14,10 @@ struct RunEvent {
     ResultEvent data;
     const Test* test = nullptr;        // the test it is about (a suite's events: the suite)
     const TestSuite* suite = nullptr;  // for StartSuite and EndSuite: the suite
+    // When it happened (steady clock, seconds since its epoch), if a relay kept it a while:
+    // under -j N a suite's events wait while the scheduler's thread runs another suite, and a
+    // collector times them when they happened, not when they arrived. 0: now.
+    double happened = 0;
 };
 
 }  // namespace robottestingframework

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -147,9 +148,9 @@ public:
     void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
     void addAttachment(const Test* test, const Attachment& attachment) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
-    // Takes the events that carry a message or a payload as they are: a check it does not keep
-    // is not copied, a measurement or attachment is shared, not made again. A subclass that
-    // overrides the named handlers gets them all, as in RTF 2.x.
+    // Hands the event to the named handlers (a subclass may override them, as in RTF 2.x), with
+    // the time it happened and what it carries at hand: a measurement or attachment the event
+    // carries is shared, not made again.
     void onEvent(const RunEvent& event) override;
 
 private:
@@ -165,17 +166,21 @@ private:
     static constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     double now() const;
-    // `payload`: the measurement or attachment the event carries, if any.
-    void record(ResultEvent::Kind kind, const Test* test, TestMessage msg, bool passed = true,
-                const ResultEvent* payload = nullptr);
-    // Whether record() would drop this event unseen (a passed check it does not keep).
-    bool dropsCheck(ResultEvent::Kind kind, const Test* test);
+    // Keeps one event of `test` where it belongs (its record, else the open suite's), copying
+    // only what it keeps: a passed check it does not keep is dropped unseen. `measurement` and
+    // `attachment`: what the event carries, if anything.
+    void record(ResultEvent::Kind kind, const Test* test, TestMessage&& msg, bool passed = true,
+                std::shared_ptr<const Measurement> measurement = nullptr,
+                std::shared_ptr<const Attachment> attachment = nullptr);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
     // Cuts a test's output to its tail once the run's output budget is spent.
     void keepWithinBudget(std::string& output);
 
     std::chrono::steady_clock::time_point origin_;
+    // The event onEvent is handing to the named handlers, while it does (else null): when it
+    // happened, and the measurement or attachment it carries, shared rather than copied.
+    const RunEvent* delivering_ = nullptr;
     std::chrono::system_clock::time_point wallOrigin_;
     double start_ = 0;
     double end_ = -1;

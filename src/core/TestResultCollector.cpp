@@ -1,7 +1,6 @@
 #include <robottestingframework/TestResultCollector.h>
 
 #include <algorithm>
-#include <typeinfo>
 
 #include <robottestingframework/RunEvent.h>
 #include <robottestingframework/Test.h>
@@ -72,24 +71,10 @@ void TestResultCollector::reset() {
     fixturesFailed_ = 0;
 }
 
-namespace {
-
-// When the event being handed to the listeners on this thread happened (steady clock,
-// seconds), if a relay kept it a while: under -j N a suite's events wait while the scheduler's
-// thread runs another suite, and their times are when they happened, not when they arrived.
-// 0: now.
-thread_local double t_eventHappened = 0;
-
-}  // namespace
-
-// The relay that replays kept events says when each happened (runner/schedule/suite_events.cpp).
-void setReplayedEventTime(double steadySeconds) {
-    t_eventHappened = steadySeconds;
-}
-
 double TestResultCollector::now() const {
-    if (t_eventHappened > 0) {
-        return t_eventHappened - std::chrono::duration<double>(origin_.time_since_epoch()).count();
+    if (delivering_ != nullptr && delivering_->happened > 0) {
+        return delivering_->happened -
+               std::chrono::duration<double>(origin_.time_since_epoch()).count();
     }
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
 }
@@ -163,67 +148,32 @@ TestResultCollector::OpenTest* TestResultCollector::findOpen(const Test* test) {
     return nullptr;
 }
 
-bool TestResultCollector::dropsCheck(Kind kind, const Test* test) {
-    // Most events of a passing test are checks: without the log they need not be copied.
-    return kind == Kind::Check && !keepChecks_ && !(keepEvents_ && keepLog_) &&
-           findOpen(test) != nullptr;
-}
-
 void TestResultCollector::onEvent(const RunEvent& event) {
-    // Exactly this class: a subclass may have overridden the named handlers.
-    if (typeid(*this) != typeid(TestResultCollector)) {
+    const RunEvent* outer = delivering_;  // a handler may publish again (a subclass's own)
+    delivering_ = &event;
+    try {
         TestListener::onEvent(event);
-        return;
+    } catch (...) {
+        delivering_ = outer;
+        throw;
     }
-    const ResultEvent& data = event.data;
-    switch (data.kind) {
-        case Kind::Report:
-        case Kind::Check:
-        case Kind::Failure:
-        case Kind::Error:
-        case Kind::Skipped:
-        case Kind::Crash:
-        case Kind::Timeout:
-        case Kind::Interrupted:
-            if (!dropsCheck(data.kind, event.test)) {
-                record(data.kind, event.test, data.message, data.passed);
-            }
-            return;
-        case Kind::Measurement:
-            if (data.measurement) {
-                record(data.kind, event.test, TestMessage(describeMeasurement(*data.measurement)),
-                       data.passed, &data);
-                return;
-            }
-            break;
-        case Kind::Attachment:
-            if (data.attachment) {
-                record(data.kind, event.test, TestMessage(describeAttachment(*data.attachment)),
-                       true, &data);
-                return;
-            }
-            break;
-        default:
-            break;
-    }
-    TestListener::onEvent(event);
+    delivering_ = outer;
 }
 
-void TestResultCollector::record(Kind kind, const Test* test, TestMessage msg, bool passed,
-                                 const ResultEvent* payload) {
+void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg, bool passed,
+                                 std::shared_ptr<const Measurement> measurement,
+                                 std::shared_ptr<const Attachment> attachment) {
     // A test's own event goes to its record (and its repetition); anything else open (a
     // fixture's report from a watcher thread, a collapse) belongs to the suite.
     const OpenTest* open = findOpen(test);
     TestRecord* owner = open != nullptr ? &suites_[open->suite].tests[open->index] : nullptr;
     const bool logged = keepEvents_ && keepLog_;
     if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
-        return;
+        return;  // most events of a passing test are checks: nothing of them is copied
     }
     ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
-    if (payload != nullptr) {
-        event.measurement = payload->measurement;
-        event.attachment = payload->attachment;
-    }
+    event.measurement = std::move(measurement);
+    event.attachment = std::move(attachment);
     if (owner != nullptr) {
         event.repetition = open->repetition;
         if (kind == Kind::Output) {
@@ -289,21 +239,33 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
 }
 
 void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
-    record(event.kind, test, event.message, event.passed, &event);
+    record(event.kind, test, TestMessage(event.message), event.passed, event.measurement,
+           event.attachment);
 }
 
 void TestResultCollector::addMeasurement(const Test* test, const Measurement& measurement,
                                          bool passed) {
-    ResultEvent payload;
-    payload.measurement = std::make_shared<const Measurement>(measurement);
+    // The event being delivered carries this very measurement: shared (10 000 tests of three
+    // measurements keep one object each, not two). A subclass's own: copied.
+    std::shared_ptr<const Measurement> kept;
+    if (delivering_ != nullptr && delivering_->data.measurement.get() == &measurement) {
+        kept = delivering_->data.measurement;
+    } else {
+        kept = std::make_shared<const Measurement>(measurement);
+    }
     record(Kind::Measurement, test, TestMessage(describeMeasurement(measurement)), passed,
-           &payload);
+           std::move(kept));
 }
 
 void TestResultCollector::addAttachment(const Test* test, const Attachment& attachment) {
-    ResultEvent payload;
-    payload.attachment = std::make_shared<const Attachment>(attachment);
-    record(Kind::Attachment, test, TestMessage(describeAttachment(attachment)), true, &payload);
+    std::shared_ptr<const Attachment> kept;
+    if (delivering_ != nullptr && delivering_->data.attachment.get() == &attachment) {
+        kept = delivering_->data.attachment;
+    } else {
+        kept = std::make_shared<const Attachment>(attachment);
+    }
+    record(Kind::Attachment, test, TestMessage(describeAttachment(attachment)), true, nullptr,
+           std::move(kept));
 }
 
 void TestResultCollector::renameTest(const Test* test, const std::string& name) {

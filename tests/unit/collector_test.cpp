@@ -1,3 +1,4 @@
+#include <chrono>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -650,6 +651,98 @@ TEST(TestResultCollector, ASubclassStillHearsEachEventThroughItsOwnHandler) {
     EXPECT_EQ(c.reports, 2);
     ASSERT_EQ(c.suites().at(0).tests.at(0).events.size(), 2u);
     EXPECT_EQ(c.suites()[0].tests[0].events[1].message.getMessage(), "two");
+}
+
+namespace {
+
+double steadySeconds() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+RunEvent eventAbout(const Test* test, ResultEvent::Kind kind, const std::string& text,
+                    double happened) {
+    RunEvent event;
+    event.test = test;
+    event.data.kind = kind;
+    event.data.message = TestMessage(text);
+    event.happened = happened;
+    return event;
+}
+
+// A collector as an RTF 2.x user may extend it, hearing checks and giving its own measurement.
+class RescalingCollector : public TestResultCollector {
+public:
+    void addCheck(const Test* test, TestMessage msg, bool passed) override {
+        ++checks;
+        TestResultCollector::addCheck(test, std::move(msg), passed);
+    }
+    void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override {
+        Measurement inMillimetres = measurement;
+        inMillimetres.value *= 1000;
+        inMillimetres.unit = "mm";
+        TestResultCollector::addMeasurement(test, inMillimetres, passed);
+    }
+    int checks = 0;
+};
+
+}  // namespace
+
+// A relay (-j N) hands on a suite's events later than they happened: each is timed when it
+// happened, whichever thread hands it on; an event given directly is timed when it arrives.
+TEST(TestResultCollector, TimesARelayedEventWhenItHappenedAndADirectOneWhenItArrives) {
+    const double origin = steadySeconds();  // the collector's clock starts a little later
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named t("relayed");
+    std::thread relay([&] {
+        result.publish(eventAbout(&t, ResultEvent::Kind::StartTest, "", origin + 100));
+        result.publish(eventAbout(&t, ResultEvent::Kind::Report, "kept a while", origin + 101));
+    });
+    relay.join();
+    result.addReport(&t, TestMessage("direct"));
+    result.publish(eventAbout(&t, ResultEvent::Kind::EndTest, "", origin + 102.5));
+    const TestRecord& record = c.suites().at(0).tests.at(0);
+    EXPECT_NEAR(record.start, 100, 1);
+    EXPECT_NEAR(record.duration, 2.5, 0.001);
+    ASSERT_EQ(record.events.size(), 2u);
+    EXPECT_NEAR(record.events[0].time, 101, 1);
+    EXPECT_LT(record.events[1].time, 50);  // now, not the relayed event's time
+}
+
+TEST(TestResultCollector, ASubclassHearsEveryCheckEvenThoseTheCollectorDoesNotKeep) {
+    RescalingCollector c;
+    c.setKeepEventLog(false);
+    c.setKeepChecks(false);
+    TestResult result;
+    result.addListener(&c);
+    Named t("checking");
+    result.startTest(&t);
+    result.addCheck(&t, TestMessage("fine"), true);
+    result.addCheck(&t, TestMessage("fine again"), true);
+    result.endTest(&t);
+    EXPECT_EQ(c.checks, 2);
+    EXPECT_TRUE(c.suites().at(0).tests.at(0).events.empty());
+}
+
+TEST(TestResultCollector, KeepsTheMeasurementASubclassGivesNotTheOneTheEventCarries) {
+    RescalingCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named t("measuring");
+    result.startTest(&t);
+    RunEvent event = eventAbout(&t, ResultEvent::Kind::Measurement, "", 0);
+    event.data.measurement = std::make_shared<const Measurement>(Measurement{"error", 0.5, "m"});
+    result.publish(event);
+    result.endTest(&t);
+    const std::vector<ResultEvent>& events = c.suites().at(0).tests.at(0).events;
+    ASSERT_EQ(events.size(), 1u);
+    ASSERT_NE(events[0].measurement, nullptr);
+    EXPECT_NE(events[0].measurement.get(), event.data.measurement.get());
+    EXPECT_EQ(events[0].measurement->value, 500);
+    EXPECT_EQ(events[0].measurement->unit, "mm");
+    EXPECT_EQ(events[0].message.getMessage(), "error = 500 mm");
 }
 
 TEST(TestResultCollector, WithoutChecksKeptAPassedCheckLeavesNoEventAndAFailedOneItsFailure) {

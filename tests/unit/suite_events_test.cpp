@@ -2,11 +2,14 @@
 // scheduler's thread takes them and replays them to the run's listeners.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestSuite.h>
 
 #include "runner/schedule/suite_events.h"
@@ -171,4 +174,29 @@ TEST(SuiteEvents, RepetitionsTravelAsTheirOwnKindWithIndexAndCount) {
     EXPECT_EQ(taken[0].data.kind, Kind::Repetition);
     EXPECT_EQ(taken[0].data.repetition, 2u);
     EXPECT_EQ(taken[0].data.repetitions, 3u);
+}
+
+// Under -j N a suite's events wait while the scheduler's thread runs another suite: replayed
+// later, each is still timed in the records when it happened (the timeline's lanes, the
+// durations), not when it was handed on.
+TEST(SuiteEvents, ReplayedEventsAreTimedWhenTheyHappened) {
+    using namespace std::chrono_literals;
+    Named test("kept");
+    SuiteEvents events([] {});
+    TestResult lane;
+    lane.addListener(&events);
+    TestResultCollector collector;
+    TestResult run;
+    run.addListener(&collector);
+    lane.startTest(&test);
+    std::this_thread::sleep_for(200ms);
+    lane.endTest(&test);
+    std::this_thread::sleep_for(300ms);  // the scheduler's thread is busy elsewhere
+    const double handedOn = collector.duration();
+    for (const SuiteEvents::Event& event : events.take()) {
+        runner::replay(event, run);
+    }
+    const TestRecord& record = collector.suites().at(0).tests.at(0);
+    EXPECT_GE(record.duration, 0.19);
+    EXPECT_LE(record.start + record.duration, handedOn - 0.25);
 }

@@ -4,10 +4,6 @@
 
 namespace robottestingframework {
 
-// In the collector (TestResultCollector.cpp): the time the event now handed on happened, so a
-// kept event is timed when it happened (0: now).
-void setReplayedEventTime(double steadySeconds);
-
 namespace runner {
 
 namespace {
@@ -19,12 +15,10 @@ double steadySeconds() {
 
 }  // namespace
 
-// A kept event carries in `data.time` when it happened (see onEvent): the collector times
-// it so, and the reports' start times, durations and timeline lanes are the suite's own.
+// A kept event carries when it happened (RunEvent::happened, see onEvent): the collector
+// times it so, and the reports' start times, durations and timeline lanes are the suite's own.
 void replay(const SuiteEvents::Event& event, TestResult& result) {
-    setReplayedEventTime(event.data.time);
     result.publish(event);
-    setReplayedEventTime(0);
 }
 
 std::vector<SuiteEvents::Event> SuiteEvents::take() {
@@ -44,7 +38,7 @@ void SuiteEvents::onEvent(const RunEvent& event) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         events_.push_back(event);
-        events_.back().data.time = steadySeconds();  // when it happened (see replay)
+        events_.back().happened = steadySeconds();  // when it happened (see replay)
         const ResultEvent::Kind kind = event.data.kind;
         if (kind == ResultEvent::Kind::StartTest) {
             inTest_ = true;
