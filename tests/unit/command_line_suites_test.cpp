@@ -46,7 +46,7 @@ protected:
     std::vector<std::string> pluginsOf(const SuiteSpec& suite) {
         std::vector<std::string> plugins;
         for (const auto& test : suite.tests) {
-            plugins.push_back(fs::path(test.plugin).lexically_relative(dir_).string());
+            plugins.push_back(fs::path(test.plugin.str()).lexically_relative(dir_).string());
         }
         return plugins;
     }

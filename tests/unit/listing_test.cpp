@@ -68,8 +68,8 @@ TEST(Listing, ATestShowsItsParamTagsTimeoutAndRepetitionWhenGiven) {
 TEST(Listing, APluginNotFoundIsSaidAsWritten) {
     SuiteSpec suite = armSuite();
     suite.tests.resize(1);
-    suite.tests[0].path.clear();
-    suite.tests[0].type.clear();
+    suite.tests[0].path = {};
+    suite.tests[0].type = {};
     suite.tests[0].plugin = "reach_missing";
     const std::string text = listText({suite});
     EXPECT_NE(text.find("      type (unknown), plug-in reach_missing (not found)\n"),
@@ -80,7 +80,7 @@ TEST(Listing, APluginNotFoundIsSaidAsWritten) {
 TEST(Listing, ATestWithoutANameIsListedByItsPlugin) {
     SuiteSpec suite = armSuite();
     suite.tests.resize(1);
-    suite.tests[0].name.clear();
+    suite.tests[0].name = {};
     EXPECT_NE(listText({suite}).find("  arm/reach\n"), std::string::npos);
 }
 
@@ -104,7 +104,7 @@ TEST(Listing, WhatASuiteTakesIsOneLine) {
 TEST(Listing, EachSuiteShowsItsShardWhenSharded) {
     SuiteSpec leg = armSuite();
     leg.name = "leg";
-    leg.where.file.clear();
+    leg.where.file = {};
     const std::string text = listText({armSuite(), leg}, {1, 0}, 2);
     EXPECT_NE(text.find("suite arm (arm.xml)  [shard 1 of 2]\n"), std::string::npos) << text;
     EXPECT_NE(text.find("suite leg  [shard 0 of 2]\n"), std::string::npos) << text;
@@ -174,7 +174,7 @@ TEST(Listing, VariablesAreListedWithWhereTheyCameFrom) {
                        VariableValue{"speed", "2", "arm.xml:3"}};
     SuiteSpec leg = armSuite();
     leg.name = "leg";
-    leg.where.file.clear();
+    leg.where.file = {};
     EXPECT_EQ(listVariablesText({suite, leg}),
               "suite arm (arm.xml)\n"
               "  robot = icub  (--var)\n"
