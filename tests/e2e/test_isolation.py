@@ -216,7 +216,7 @@ def test_unknown_dependency_is_a_configuration_error(suite_file):
 </suite>''')
     r = run_runner("--suite", suite.name, "--no-output", timeout=30, cwd=suite.parent)
     assert r.returncode == 2, r
-    assert f"{suite}:3" in r.stderr and "unknown dependency 'nobody'" in r.stderr, r
+    assert f"{suite.name}:3" in r.stderr and "unknown dependency 'nobody'" in r.stderr, r
     assert "passed" not in r.stdout
 
 

@@ -67,9 +67,9 @@ def test_var_beats_var_files_which_beat_the_suite(tmp_path):
 
     run = run_runner(*args, "--list-vars", cwd=tmp_path)
     assert run.returncode == 0, run
-    assert f"a = suite  ({suite}:2)" in run.stdout, run
-    assert f"b = first  ({first}:2)" in run.stdout, run
-    assert f"c = second  ({second}:1)" in run.stdout, run
+    assert f"a = suite  ({suite.name}:2)" in run.stdout, run
+    assert f"b = first  ({first.name}:2)" in run.stdout, run
+    assert f"c = second  ({second.name}:1)" in run.stdout, run
     assert "d = cli  (--var)" in run.stdout, run
 
 
@@ -123,7 +123,7 @@ def test_an_undefined_variable_names_file_line_and_the_close_ones(tmp_path):
 """)
     run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:4: undefined variable ${{robot_prot}}; did you mean ${{robot_port}}?" \
+    assert f"{suite.name}:4: undefined variable ${{robot_prot}}; did you mean ${{robot_port}}?" \
         in run.stderr, run
 
 
@@ -136,7 +136,7 @@ def test_a_variable_that_refers_to_itself_names_the_cycle(tmp_path):
 """)
     run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: variable ${{a}} refers to itself: a -> b -> a" in run.stderr, run
+    assert f"{suite.name}:2: variable ${{a}} refers to itself: a -> b -> a" in run.stderr, run
 
 
 @pytest.mark.parametrize("value, expected", [
@@ -155,7 +155,7 @@ def test_a_malformed_var_file_line_names_file_line_and_column(tmp_path):
     bad = write(tmp_path / "robot.env", "# ok\nrobot=icub\nport 10001\n")
     run = run_runner("--test", ECHO, "--var-file", bad.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"--var-file {bad}:3: no '=' in 'port 10001'" in run.stderr, run
+    assert f"--var-file {bad.name}:3: no '=' in 'port 10001'" in run.stderr, run
     run = run_runner("--test", ECHO, "--var-file", "none.env", "--no-output",
                      cwd=tmp_path)
     assert run.returncode == 2, run
@@ -217,7 +217,8 @@ def test_a_missing_test_file_names_the_path_and_the_suite_line(tmp_path):
 """)
     run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:3: <test file=\"tests/nope.xml\">: {tmp_path}/tests/nope.xml: cannot read " \
+    # The test file is named from the suite's folder, as given (here the run's folder).
+    assert f"{suite.name}:3: <test file=\"tests/nope.xml\">: ./tests/nope.xml: cannot read " \
            "the test file" in run.stderr, run
 
 
@@ -227,8 +228,8 @@ def test_a_file_that_is_not_a_test_names_the_path_and_the_suite_line(tmp_path):
                                           '</suite>\n')
     run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: in the test file named here: {other}:1: the root element is <suite>; " \
-           "a test file holds one <test>" in run.stderr, run
+    assert f"{suite.name}:2: in the test file named here: ./{other.name}:1: the root element " \
+           "is <suite>; a test file holds one <test>" in run.stderr, run
 
 
 def test_an_undefined_variable_in_a_test_file_names_both_files(tmp_path):
@@ -237,7 +238,7 @@ def test_an_undefined_variable_in_a_test_file_names_both_files(tmp_path):
                                           '\n</suite>\n')
     run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: in the test file named here: {tmp_path}/tests/left_arm.xml:1: " \
+    assert f"{suite.name}:2: in the test file named here: ./tests/left_arm.xml:1: " \
            "undefined variable ${robot}" in run.stderr, run
 
 
