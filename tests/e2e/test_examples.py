@@ -154,7 +154,8 @@ def test_the_quick_start_example_run(tmp_path, mark):
     purpose: the one example run that starts outside the suites' folder)."""
     started = time.monotonic()
     run = run_runner(*[arg for suite in SUITES for arg in ("--suite", EXAMPLES / suite)],
-                     "--resources", ports_file(tmp_path), "--verbose", "--output", "text:example.txt", "--output",
+                     "--resources", ports_file(tmp_path).name, "--verbose", "--output",
+                     "text:example.txt", "--output",
                      "junit:example.xml", "--output", "tap:example.tap", "--output",
                      "json:example.json", "--output", "html:example.html", cwd=tmp_path,
                      timeout=60, env={"RTF_E2E_MARK": mark})

@@ -85,16 +85,19 @@ def world(tmp_path, processes, name="world.xml"):
 
 
 def suite(tmp_path, fixtures, tests=None, name="suite.xml"):
+    """Writes a suite file in tmp_path; returns its name relative to tmp_path, the folder the
+    runner runs in (as users name their suite)."""
     tests = tests if tests is not None else [plugin("passing_test")]
     text = '<suite name="process world">\n' + "\n".join(fixtures) + "\n" + "\n".join(
         t if str(t).startswith("<") else f"<test>{t}</test>" for t in tests) + "\n</suite>\n"
     path = tmp_path / name
     path.write_text(text)
-    return path
+    return path.relative_to(tmp_path)
 
 
 def process_fixture(world_path, param=""):
-    return f'<fixture type="process" param="{param}">{world_path}</fixture>'
+    """The fixture of the world file `world_path`, named relative to the suite beside it."""
+    return f'<fixture type="process" param="{param}">{world_path.name}</fixture>'
 
 
 def run(mark, *args, **kwargs):
@@ -180,7 +183,7 @@ def test_a_process_that_never_becomes_ready_fails_the_suite_with_the_deadline(tm
   </process>""")
     junit = tmp_path / "out.xml"
     # No --verbose: the failure alone must tell the whole story.
-    r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), "-o", junit,
+    r = run(mark, "-s", suite(tmp_path, [process_fixture(w)]), "-o", junit.name,
             "--output-type", "junit", cwd=tmp_path)
     assert r.returncode == 1, r
     assert ("process 'stuck' did not become ready: a line of output matching '^ready$' did not "
@@ -203,7 +206,7 @@ def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, 
     s = suite(tmp_path, [process_fixture(w)],
               [waiting(3), plugin("passing_test"), plugin("passing_test")])
     began = time.monotonic()
-    r = run(mark, "-s", s, "-o", junit, "--output-type", "junit", cwd=tmp_path)
+    r = run(mark, "-s", s, "-o", junit.name, "--output-type", "junit", cwd=tmp_path)
     assert r.returncode == 1, r
     assert time.monotonic() - began < 10, r
     reason = "process 'motor driver' exited with status 5"

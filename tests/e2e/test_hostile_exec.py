@@ -38,12 +38,13 @@ print(json.dumps({"code": proc.returncode, "stdout": proc.stdout.decode(errors="
 """
 
 
-def measured_run(*args):
+def measured_run(*args, cwd):
+    """Runs the runner in the folder `cwd`, as run_runner does, and measures it."""
     env = dict(os.environ)
     if SANITIZED:
         env["ASAN_OPTIONS"] = env.get("ASAN_OPTIONS", "") + ":quarantine_size_mb=1:thread_local_quarantine_size_kb=64"
     result = subprocess.run([sys.executable, "-c", MEASURE, RUNNER, *map(str, args)],
-                            capture_output=True, text=True, timeout=120, env=env)
+                            capture_output=True, text=True, timeout=120, env=env, cwd=cwd)
     assert result.returncode == 0, result.stderr
     return json.loads(result.stdout)
 
@@ -81,7 +82,8 @@ def test_huge_output_keeps_the_last_64_kib_and_the_verdict(tmp_path, isolation):
                            "head -c 50000000 /dev/zero | tr '\\0' x\n"
                            "echo\necho the last line\nexit 0\n")
     junit = tmp_path / "out.xml"
-    r = measured_run("--isolation", isolation, "--test", path, "--output", f"junit:{junit}")
+    r = measured_run("--isolation", isolation, "--test", path.name, "--output",
+                     f"junit:{junit.name}", cwd=tmp_path)
     assert r["code"] == 0, r
     assert "1 passed, 0 failed" in r["stdout"], r
     assert "unreadable" not in r["stdout"] + r["stderr"]
@@ -100,8 +102,8 @@ def test_endless_output_under_a_timeout_stays_bounded(tmp_path, isolation):
     path = shell(tmp_path, "echo started >&2\nexec yes 'hello robot'\n")
     junit = tmp_path / "out.xml"
     began = time.monotonic()
-    r = measured_run("--isolation", isolation, "--timeout", "3", "--test", path,
-                     "--output", f"junit:{junit}")
+    r = measured_run("--isolation", isolation, "--timeout", "3", "--test", path.name,
+                     "--output", f"junit:{junit.name}", cwd=tmp_path)
     assert time.monotonic() - began < 60
     assert r["code"] == 1, r
     assert r["maxrss_kb"] < MEMORY_BOUND_KB, r["maxrss_kb"]
@@ -120,7 +122,8 @@ def test_a_tap_flood_is_counted_not_listed_and_keeps_its_verdict(tmp_path, isola
                    "  for (i = 1; i <= 300000; i++)\n"
                    "    print (i == 250000 ? \"not ok \" : \"ok \") i \" - step \" i\n}\n")
     junit = tmp_path / "out.xml"
-    r = measured_run("--isolation", isolation, "--test", path, "--output", f"junit:{junit}")
+    r = measured_run("--isolation", isolation, "--test", path.name, "--output",
+                     f"junit:{junit.name}", cwd=tmp_path)
     assert r["code"] == 1, r
     assert r["maxrss_kb"] < MEMORY_BOUND_KB, r["maxrss_kb"]
     case, out = junit_case(junit)
@@ -136,8 +139,8 @@ def test_a_10_mb_tap_line_is_cut(tmp_path, isolation):
     path = shell(tmp_path, "echo 1..1\nprintf 'ok 1 - '\n"
                            "head -c 10000000 /dev/zero | tr '\\0' y\necho\n")
     junit = tmp_path / "out.xml"
-    r = measured_run("--isolation", isolation, "-v", "--test", path,
-                     "--output", f"junit:{junit}")
+    r = measured_run("--isolation", isolation, "-v", "--test", path.name,
+                     "--output", f"junit:{junit.name}", cwd=tmp_path)
     assert r["code"] == 0, r
     assert r["maxrss_kb"] < MEMORY_BOUND_KB, r["maxrss_kb"]
     assert junit.stat().st_size < 200 * 1024
@@ -167,8 +170,8 @@ def assert_kept_what_it_said(junit, status):
 def test_a_timed_out_exec_test_keeps_its_points_and_output(tmp_path, isolation):
     path = shell(tmp_path, STOPPED_HALF_WAY)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--timeout", "2", "-v", "--test", path,
-                   "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--timeout", "2", "-v", "--test", path.name,
+                   "--output", f"junit:{junit.name}", timeout=60, cwd=tmp_path)
     assert r.returncode == 1, r
     assert_kept_what_it_said(junit, "timed out")
 
@@ -179,8 +182,8 @@ def test_an_interrupted_exec_test_keeps_its_points_and_output(tmp_path, marker, 
                                                               signum):
     path = shell(tmp_path, STOPPED_HALF_WAY)
     junit = tmp_path / "out.xml"
-    proc = start_runner("--isolation", isolation, "-v", "--test", path,
-                        "--output", f"junit:{junit}", env=marked(marker), cwd=tmp_path)
+    proc = start_runner("--isolation", isolation, "-v", "--test", path.name,
+                        "--output", f"junit:{junit.name}", env=marked(marker), cwd=tmp_path)
     ready = tmp_path / "check.ready"
     deadline = time.monotonic() + 30
     while not ready.exists():
@@ -200,7 +203,7 @@ def test_an_interrupted_exec_test_keeps_its_points_and_output(tmp_path, marker, 
 def test_an_unclosed_yaml_block_ends_at_the_next_test_line(tmp_path, isolation):
     path = shell(tmp_path, "echo 1..2\necho 'not ok 1 - torque'\necho '  ---'\n"
                            "echo '  message: too high'\necho 'ok 2 - speed'\n")
-    r = run_runner("--isolation", isolation, "--detail", "--no-output", "--test", path,
+    r = run_runner("--isolation", isolation, "--detail", "--no-output", "--test", path.name,
                    cwd=tmp_path)
     assert r.returncode == 1, r  # not ok 1: the unclosed block itself fails nothing (TAP 14)
     assert "YAML block not closed" not in r.output, r
@@ -212,7 +215,7 @@ def test_an_unclosed_yaml_block_ends_at_the_next_test_line(tmp_path, isolation):
 @pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_bail_out_names_its_line(tmp_path, isolation):
     path = shell(tmp_path, "echo 1..3\necho 'ok 1 - power'\necho 'Bail out! no robot'\n")
-    r = run_runner("--isolation", isolation, "--no-output", "--test", path, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--no-output", "--test", path.name, cwd=tmp_path)
     assert r.returncode == 1, r
     assert f"Bail out! no robot [{path}:3]" in r.output, r
 
@@ -234,7 +237,7 @@ def test_deeply_nested_subtests_pass_in_bounded_time(tmp_path):
     stream.write_text(nested_tap(1000))
     path = shell(tmp_path, f"cat '{stream}'\n")
     began = time.monotonic()
-    r = run_runner("--no-output", "--test", path, timeout=60, cwd=tmp_path)
+    r = run_runner("--no-output", "--test", path.name, timeout=60, cwd=tmp_path)
     assert r.returncode == 0, r
     assert "1 passed" in r.stdout, r
     # Was 7.8 s before parsing was linear; now a fraction of a second (generous for a busy CI).
@@ -246,7 +249,7 @@ def test_deeply_nested_subtests_pass_in_bounded_time(tmp_path):
 @pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_a_missing_interpreter_is_named(tmp_path, isolation):
     path = program(tmp_path, "check.sh", "#!/no/such/interp -x\necho hi\n")
-    r = run_runner("--isolation", isolation, "--no-output", "--test", path, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--no-output", "--test", path.name, cwd=tmp_path)
     assert r.returncode == 1, r
     assert "its interpreter /no/such/interp" in r.output, r
     assert str(path) in r.output, r
@@ -257,7 +260,7 @@ def test_a_missing_interpreter_is_named(tmp_path, isolation):
 @pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_an_exec_test_dies_with_a_runner_killed_by_sigkill(tmp_path, marker, isolation):
     path = shell(tmp_path, "touch \"$0.ready\"\nexec sleep 60\n")
-    proc = start_runner("--isolation", isolation, "--no-output", "--test", path,
+    proc = start_runner("--isolation", isolation, "--no-output", "--test", path.name,
                         env=marked(marker), cwd=tmp_path)
     ready = tmp_path / "check.ready"
     deadline = time.monotonic() + 30
@@ -275,7 +278,7 @@ def test_daemons_of_exec_tests_do_not_survive_the_run(tmp_path, marker, isolatio
     path = shell(tmp_path, "setsid sh -c 'echo $$ > \"$1\"; exec sleep 60' sh \"$0.daemon\" "
                            "</dev/null >/dev/null 2>&1 &\n"
                            "while [ ! -s \"$0.daemon\" ]; do sleep 0.05; done\nexit 0\n")
-    r = run_runner("--isolation", isolation, "--no-output", "--test", path,
+    r = run_runner("--isolation", isolation, "--no-output", "--test", path.name,
                    env=marked(marker), cwd=tmp_path)
     assert r.returncode == 0, r
     assert leftover_processes(marker) == []
@@ -283,11 +286,11 @@ def test_daemons_of_exec_tests_do_not_survive_the_run(tmp_path, marker, isolatio
 
 def test_isolation_none_warns_what_it_cannot_guarantee(tmp_path):
     path = shell(tmp_path, "exit 0\n")
-    r = run_runner("--isolation", "none", "--no-output", "--test", path, cwd=tmp_path)
+    r = run_runner("--isolation", "none", "--no-output", "--test", path.name, cwd=tmp_path)
     assert r.returncode == 0, r
     warnings = [line for line in r.stderr.splitlines() if "--isolation none" in line]
     assert len(warnings) == 1, r
-    r = run_runner("--no-output", "--test", path, cwd=tmp_path)
+    r = run_runner("--no-output", "--test", path.name, cwd=tmp_path)
     assert "--isolation none" not in r.stderr, r
 
 
@@ -324,8 +327,8 @@ def test_a_script_that_exits_at_once_is_an_error_not_a_green_run(tmp_path, isola
     path = tmp_path / name
     path.write_text(text)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}",
-                   cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--test", path.name, "--output",
+                   f"junit:{junit.name}", cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip(f"this build leaves {language} out")
     assert r.returncode == 1, r
@@ -348,8 +351,8 @@ class TestCase:
         robottestingframework.testCheck(True, "done")
 """)
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--test", path, "--output", f"junit:{junit}",
-                   cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--test", path.name, "--output",
+                   f"junit:{junit.name}", cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves Python out")
     assert r.returncode == 0, r
@@ -371,8 +374,8 @@ class TestCase:
         robottestingframework.testReport("woke up by itself")
 """)
     began = time.monotonic()
-    r = run_runner("--isolation", "none", "--timeout", "2", "-v", "--no-output", "--test", path,
-                   timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", "none", "--timeout", "2", "-v", "--no-output", "--test",
+                   path.name, timeout=60, cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves Python out")
     assert time.monotonic() - began < 20, r  # was 30 s: the sleep ran to its end
@@ -389,8 +392,8 @@ def test_children_left_behind_are_stopped_without_waiting_the_whole_grace(tmp_pa
     tests = "\n".join(f'  <test type="exec" name="leaver {i}">{leaver}</test>' for i in range(5))
     (tmp_path / "suite.xml").write_text(f'<suite name="leavers">\n{tests}\n</suite>\n')
     junit = tmp_path / "r.xml"
-    r = run_runner("--isolation", isolation, "--suite", tmp_path / "suite.xml",
-                   "--output", f"junit:{junit}", cwd=tmp_path, timeout=60)
+    r = run_runner("--isolation", isolation, "--suite", "suite.xml",
+                   "--output", f"junit:{junit.name}", cwd=tmp_path, timeout=60)
     assert r.returncode == 0, r
     times = [float(c.get("time")) for c in ET.parse(junit).getroot().iter("testcase")]
     # Each took at least the 1 s grace before; now a few milliseconds (a loaded machine aside).

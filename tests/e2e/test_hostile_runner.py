@@ -17,8 +17,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import (BUILD_DIR, RUNNER, _marked_processes, junit_state, leftover_processes,
-                      marked, plugin, run_runner, start_runner)
+from conftest import (BUILD_DIR, RUNNER, AbsoluteName, _marked_processes, junit_state,
+                      leftover_processes, marked, plugin, run_runner, start_runner)
 
 PASSING = plugin("passing_test")
 ACTOR = Path(__file__).parent / "world" / "actor.py"
@@ -90,7 +90,8 @@ def test_an_output_to_a_fifo_nobody_reads_is_an_error_not_a_hang(tmp_path):
 def device(tmp_path, name, minor):
     """/dev/NAME, or as root a node of the same device in tmp_path: a runner without the fix
     replaces the node it is given, and as root it could replace the system's. Named by its
-    absolute path, as users name a device (/dev/null), whichever folder the runner is in."""
+    absolute path, as users name a device (/dev/null), whichever folder the runner is in: pass
+    it as AbsoluteName."""
     if os.geteuid() != 0:
         return Path("/dev") / name
     node = tmp_path / name
@@ -100,7 +101,7 @@ def device(tmp_path, name, minor):
 
 def test_a_write_error_is_exit_two_and_the_device_stays(tmp_path):
     full = device(tmp_path, "full", 7)
-    run = run_runner("--test", PASSING, "--output", f"junit:{full}", cwd=tmp_path)
+    run = run_runner("--test", PASSING, "--output", AbsoluteName(f"junit:{full}"), cwd=tmp_path)
     assert run.returncode == 2, run
     assert f"cannot write {full}: No space left on device" in run.stderr, run
     assert stat.S_ISCHR(os.stat(full).st_mode)
@@ -108,8 +109,8 @@ def test_a_write_error_is_exit_two_and_the_device_stays(tmp_path):
 
 def test_an_output_to_dev_null_is_written_through(tmp_path):
     null = device(tmp_path, "null", 3)
-    run = run_runner("--test", PASSING, "--output", f"junit:{null}", "--output",
-                     f"text:{null}", cwd=tmp_path)
+    run = run_runner("--test", PASSING, "--output", AbsoluteName(f"junit:{null}"), "--output",
+                     AbsoluteName(f"text:{null}"), cwd=tmp_path)
     assert run.returncode == 0, run
     assert stat.S_ISCHR(os.stat(null).st_mode)
 
@@ -118,7 +119,7 @@ def test_an_output_named_like_the_suite_file_is_refused(tmp_path):
     suite = passing_suite(tmp_path)
     before = suite.read_text()
     # Each spelling of the suite file's path, the absolute one too.
-    for output in (f"junit:{suite}", "text:./suite.xml", "suite.xml"):
+    for output in (AbsoluteName(f"junit:{suite}"), "text:./suite.xml", "suite.xml"):
         run = run_runner("--suite", suite.name, "--output", output, cwd=tmp_path)
         assert run.returncode == 2, (output, run)
         assert f"is the suite file {suite.name}; the output would replace it" in run.stderr, run
@@ -130,9 +131,9 @@ def test_an_output_named_like_a_test_is_refused(tmp_path):
     test.write_text("raise SystemExit('must not run')\n")
     copy = tmp_path / "libcopy.so"
     shutil.copy(PASSING, copy)
-    # The test as given and the output as another spelling of its path.
+    # The test as given and the output as another spelling of its path (the absolute one).
     for args in (["--test", test.name, "--output", "text:./check.py"],
-                 ["--test", f"./{copy.name}", "--output", f"junit:{copy}"]):
+                 ["--test", f"./{copy.name}", "--output", AbsoluteName(f"junit:{copy}")]):
         run = run_runner(*args, cwd=tmp_path)
         assert run.returncode == 2, run
         assert "the output would replace it" in run.stderr and "is the test" in run.stderr, run

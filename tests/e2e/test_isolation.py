@@ -78,8 +78,8 @@ def test_nothing_a_test_does_takes_the_run_down(tmp_path, marker):
     nasty, broken, after = nasty_suites(tmp_path)
     junit = tmp_path / "out.xml"
     text = tmp_path / "out.txt"
-    r = run_runner("--suite", nasty, "--suite", broken, "--suite", after,
-                   "--output", f"junit:{junit}", "--output", f"text:{text}",
+    r = run_runner("--suite", nasty.name, "--suite", broken.name, "--suite", after.name,
+                   "--output", f"junit:{junit.name}", "--output", f"text:{text.name}",
                    timeout=90, env=marked(marker), cwd=tmp_path)
     assert r.returncode == 1, r
     validate_junit(junit)
@@ -106,7 +106,8 @@ def test_nothing_a_test_does_takes_the_run_down(tmp_path, marker):
 
 def test_the_closing_line_counts_every_state(tmp_path, marker):
     nasty, _, _ = nasty_suites(tmp_path)
-    r = run_runner("--suite", nasty, "--no-output", timeout=90, env=marked(marker), cwd=tmp_path)
+    r = run_runner("--suite", nasty.name, "--no-output", timeout=90, env=marked(marker),
+                   cwd=tmp_path)
     assert r.returncode == 1, r
     passed = sum(1 for row in NASTY if row[3] == "passed")
     assert f"{passed} passed, {len(NASTY) - passed} failed" in r.stdout.splitlines()[-1], r
@@ -130,8 +131,8 @@ def test_critical_error_skips_the_rest_of_the_suite(tmp_path, isolation, suite_f
 </suite>''')
     other = suite_file(f'<suite name="other"><test name="elsewhere">{plugin("passing_test")}</test></suite>', "other.xml")
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--suite", suite, "--suite", other,
-                   "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--suite", suite.name, "--suite", other.name,
+                   "--output", f"junit:{junit.name}", timeout=60, cwd=tmp_path)
     assert r.returncode == 1, r
     validate_junit(junit)
     cases = junit_cases(junit)
@@ -153,8 +154,8 @@ def test_fail_fast_stops_the_run_at_the_first_failure(tmp_path, isolation, suite
 </suite>''')
     other = suite_file(f'<suite name="two"><test name="skipped2">{plugin("passing_test")}</test></suite>', "two.xml")
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--fail-fast", "--suite", suite, "--suite", other,
-                   "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--fail-fast", "--suite", suite.name, "--suite",
+                   other.name, "--output", f"junit:{junit.name}", timeout=60, cwd=tmp_path)
     assert r.returncode == 1, r
     validate_junit(junit)
     cases = junit_cases(junit)
@@ -166,8 +167,8 @@ def test_fail_fast_stops_the_run_at_the_first_failure(tmp_path, isolation, suite
         assert "--fail-fast" in (problem.text or ""), name
     assert "skipped: --fail-fast, bad failed" in r.stdout and "skipped: skipped" not in r.stdout, r
     # Without --fail-fast everything runs.
-    r = run_runner("--isolation", isolation, "--suite", suite, "--suite", other,
-                   "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--suite", suite.name, "--suite", other.name,
+                   "--output", f"junit:{junit.name}", timeout=60, cwd=tmp_path)
     assert junit_cases(junit)["skipped2"][0] == "passed"
 
 
@@ -181,8 +182,8 @@ def test_depends_runs_only_after_its_dependency_passed(tmp_path, isolation, suit
   <test name="on_plugin" depends="{plugin("failing_test")}">{plugin("passing_test")}</test>
 </suite>''')
     junit = tmp_path / "out.xml"
-    r = run_runner("--isolation", isolation, "--suite", suite, "--output", f"junit:{junit}",
-                   timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--suite", suite.name, "--output",
+                   f"junit:{junit.name}", timeout=60, cwd=tmp_path)
     assert r.returncode == 1, r
     cases = junit_cases(junit)
     assert cases["on_good"][0] == "passed", r
@@ -201,7 +202,8 @@ def test_depends_on_a_plugin_named_without_its_folder(tmp_path, suite_file):
   <test name="x" depends="failing_test">{plugin("passing_test")}</test>
 </suite>''')
     junit = tmp_path / "out.xml"
-    r = run_runner("--suite", suite, "--output", f"junit:{junit}", timeout=60, cwd=tmp_path)
+    r = run_runner("--suite", suite.name, "--output", f"junit:{junit.name}", timeout=60,
+                   cwd=tmp_path)
     status, problem = junit_cases(junit)["x"]
     assert status == "skipped" and "failing_test" in problem.text, r
 
@@ -212,9 +214,9 @@ def test_unknown_dependency_is_a_configuration_error(suite_file):
   <test name="lost"
         depends="nobody">{plugin("passing_test")}</test>
 </suite>''')
-    r = run_runner("--suite", suite, "--no-output", timeout=30, cwd=suite.parent)
+    r = run_runner("--suite", suite.name, "--no-output", timeout=30, cwd=suite.parent)
     assert r.returncode == 2, r
-    assert f"{suite}:3" in r.stderr and "unknown dependency 'nobody'" in r.stderr, r
+    assert f"{suite.name}:3" in r.stderr and "unknown dependency 'nobody'" in r.stderr, r
     assert "passed" not in r.stdout
 
 
@@ -228,7 +230,7 @@ def test_the_most_specific_timeout_wins(tmp_path, where, expect, marker, suite_f
 </suite>''')
     junit = tmp_path / "out.xml"
     command = "1" if where == "command" else "30"
-    r = run_runner("--suite", suite, "--timeout", command, "--output", f"junit:{junit}",
+    r = run_runner("--suite", suite.name, "--timeout", command, "--output", f"junit:{junit.name}",
                    timeout=60, env=marked(marker), cwd=tmp_path)
     assert r.returncode == 1, r
     status, problem = junit_cases(junit)["hung"]
@@ -245,7 +247,7 @@ def test_a_timeout_bounds_setup_and_teardown_too(tmp_path, marker, suite_file):
     script.write_text("import time\nclass TestCase:\n    def setup(self, param):\n"
                       "        time.sleep(60)\n        return True\n    def run(self):\n"
                       "        pass\n")
-    r = run_runner("--test", script, "--timeout", "1", "--no-output", timeout=30,
+    r = run_runner("--test", script.name, "--timeout", "1", "--no-output", timeout=30,
                    env=marked(marker), cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("no Python in this build")
@@ -264,7 +266,7 @@ def test_in_process_timeout_stops_a_test_that_listens(tmp_path):
 @pytest.mark.parametrize("isolation", ["process", "none"])
 def test_repetition_runs_every_time(tmp_path, isolation, suite_file):
     suite = suite_file(f'<suite name="r"><test name="rep" repetition="3">{plugin("passing_test")}</test></suite>')
-    r = run_runner("--isolation", isolation, "--suite", suite, "--no-output", "-v", timeout=30,
+    r = run_runner("--isolation", isolation, "--suite", suite.name, "--no-output", "-v", timeout=30,
                    cwd=tmp_path)
     assert r.returncode == 0, r
     for k in (1, 2, 3):
@@ -277,7 +279,7 @@ def test_a_crash_in_repetition_two_stops_the_later_ones(tmp_path, marker, suite_
   <test name="next">{plugin("passing_test")}</test>
 </suite>''')
     junit = tmp_path / "out.xml"
-    r = run_runner("--suite", suite, "--output", f"junit:{junit}", "-v", timeout=30,
+    r = run_runner("--suite", suite.name, "--output", f"junit:{junit.name}", "-v", timeout=30,
                    env=marked(marker), cwd=tmp_path)
     assert r.returncode == 1, r
     cases = junit_cases(junit)
@@ -354,8 +356,9 @@ def test_a_script_that_names_itself_is_named_so_in_every_output(tmp_path, isolat
     script.write_text(RENAMING_SCRIPTS[ext])
     junit = tmp_path / "out.xml"
     text = tmp_path / "out.txt"
-    r = run_runner("--isolation", isolation, "--test", script, "--output", f"junit:{junit}",
-                   "--output", f"text:{text}", timeout=60, cwd=tmp_path)
+    r = run_runner("--isolation", isolation, "--test", script.name, "--output",
+                   f"junit:{junit.name}", "--output", f"text:{text.name}", timeout=60,
+                   cwd=tmp_path)
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves the language out")
     assert r.returncode == 1, r

@@ -63,8 +63,8 @@ def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker
     later.write_text(f'<suite name="later"><test name="never">{plugin("passing_test")}</test></suite>')
     junit = tmp_path / "out.xml"
     text = tmp_path / "out.txt"
-    proc = start_runner("--isolation", isolation, "--suite", suite, "--suite", later,
-                        "--output", f"junit:{junit}", "--output", f"text:{text}",
+    proc = start_runner("--isolation", isolation, "--suite", suite.name, "--suite", later.name,
+                        "--output", f"junit:{junit.name}", "--output", f"text:{text.name}",
                         env=marked(marker), cwd=tmp_path)
     # The fixture is checked before each test: the second check comes before "hung".
     wait_for(lambda: lines(log).count("check world") >= 2, what="the blocking test")
@@ -90,8 +90,8 @@ def test_a_second_ctrl_c_ends_at_once_and_leaves_nothing(tmp_path, marker, isola
   <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
 </suite>''')
     junit = tmp_path / "out.xml"
-    proc = start_runner("--isolation", isolation, "--suite", suite, "--output",
-                        f"junit:{junit}", env=marked(marker), cwd=tmp_path)
+    proc = start_runner("--isolation", isolation, "--suite", suite.name, "--output",
+                        f"junit:{junit.name}", env=marked(marker), cwd=tmp_path)
     # The runner (and server), the test's process and its child: wait for the child.
     expected = 4 if isolation == "process" else 2
     wait_for(lambda: len(_marked_processes(marker)) >= expected, what="the sleeping child")
@@ -110,7 +110,7 @@ def test_sigkill_of_the_runner_leaves_no_process(tmp_path, marker):
     suite.write_text(f'''<suite name="killed">
   <test name="stubborn" param="--hang">{plugin("fork_sleeper")}</test>
 </suite>''')
-    proc = start_runner("--suite", suite, "--no-output", env=marked(marker), cwd=tmp_path)
+    proc = start_runner("--suite", suite.name, "--no-output", env=marked(marker), cwd=tmp_path)
     # Runner, fork server, worker, the worker's child.
     wait_for(lambda: len(_marked_processes(marker)) >= 4, what="the sleeping child")
     proc.kill()
@@ -123,7 +123,7 @@ def test_an_interrupted_exec_test_leaves_no_child_in_process(tmp_path, marker):
     script = tmp_path / "sleepy.sh"
     script.write_text(f"#!/bin/sh\nsleep 60 &\ntouch {started}\nsleep 60\n")
     script.chmod(0o755)
-    proc = start_runner("--isolation", "none", "--test", script, "--no-output",
+    proc = start_runner("--isolation", "none", "--test", script.name, "--no-output",
                         env=marked(marker), cwd=tmp_path)
     wait_for(started.exists, what="the script")
     proc.send_signal(signal.SIGINT)
@@ -137,7 +137,7 @@ def test_an_exec_test_that_leaves_a_child_behind_leaves_nothing_in_process(tmp_p
     script = tmp_path / "leaver.sh"
     script.write_text("#!/bin/sh\nsleep 60 >/dev/null 2>&1 &\nexit 0\n")
     script.chmod(0o755)
-    proc = start_runner("--isolation", "none", "--test", script, "--no-output",
+    proc = start_runner("--isolation", "none", "--test", script.name, "--no-output",
                         env=marked(marker), cwd=tmp_path)
     code, out, err = finish(proc)
     assert code == 0, (code, out, err)

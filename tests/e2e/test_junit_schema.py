@@ -34,7 +34,7 @@ def report(tmp_path_factory):
 </suite>
 """)
     out = folder / "report.xml"
-    run = run_runner("-s", suite, "-o", f"junit:{out}", "-v", cwd=folder)
+    run = run_runner("-s", suite.name, "-o", f"junit:{out.name}", "-v", cwd=folder)
     assert run.returncode == 1, run
     return out
 

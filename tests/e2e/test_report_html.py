@@ -57,7 +57,7 @@ def test_page_from_file_url_filters_searches_and_shows_test_text_as_text(tmp_pat
   <test>{plugin("nasty_text_test")}</test>
 </suite>""")
     out = tmp_path / "r.html"
-    run = run_runner("-s", suite, "-t", plugin("printing_test"), "-o", f"html:{out}",
+    run = run_runner("-s", suite.name, "-t", plugin("printing_test"), "-o", f"html:{out.name}",
                      cwd=tmp_path)
     assert run.returncode == 1, run
     html = out.read_text()

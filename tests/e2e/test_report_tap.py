@@ -19,7 +19,7 @@ def test_suites_are_subtests_with_a_point_per_test_and_diagnostics(tmp_path, sui
   <test>{plugin("nasty_text_test")}</test>
 </suite>""")
     out = tmp_path / "r.tap"
-    run = run_runner("-s", suite, "-t", plugin("printing_test"), "-o", f"tap:{out}",
+    run = run_runner("-s", suite.name, "-t", plugin("printing_test"), "-o", f"tap:{out.name}",
                      cwd=tmp_path)
     assert run.returncode == 1, run
     text = out.read_text()
@@ -51,7 +51,7 @@ def test_output_type_tap_and_the_default_file_name(tmp_path):
     assert parsed["ok"] and parsed["pass"] == 1, parsed
 
     out = tmp_path / "plain"
-    run = run_runner("-t", plugin("passing_test"), "-o", out, "--output-type", "tap",
+    run = run_runner("-t", plugin("passing_test"), "-o", out.name, "--output-type", "tap",
                      cwd=tmp_path)
     assert run.returncode == 0, run
     assert validate_tap(out)["pass"] == 1
@@ -68,7 +68,7 @@ def test_skipped_tests_carry_the_reason_and_a_failed_fixture_bails_out(tmp_path,
   <test>{plugin("passing_test")}</test>
 </suite>""", name="fine.xml")
     out = tmp_path / "r.tap"
-    run = run_runner("-s", broken, "-s", fine, "-o", f"tap:{out}", cwd=tmp_path)
+    run = run_runner("-s", broken.name, "-s", fine.name, "-o", f"tap:{out.name}", cwd=tmp_path)
     assert run.returncode == 1, run
     parsed = validate_tap(out)
     inner = points_at(parsed, 1)
@@ -84,7 +84,7 @@ def test_skipped_tests_carry_the_reason_and_a_failed_fixture_bails_out(tmp_path,
 def test_crashes_and_bytes_that_are_not_utf8_stay_valid_tap(tmp_path):
     out = tmp_path / "r.tap"
     run = run_runner("-t", plugin("crash_segv"), "-t", plugin("bad_bytes_test"),
-                     "-o", f"tap:{out}", cwd=tmp_path)
+                     "-o", f"tap:{out.name}", cwd=tmp_path)
     assert run.returncode == 1, run
     out.read_bytes().decode("utf-8")  # strict: no stray byte left
     parsed = validate_tap(out)

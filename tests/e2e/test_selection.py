@@ -37,11 +37,11 @@ def suites(tmp_path):
 """)
     legs = tmp_path / "legs.xml"
     legs.write_text(f"""<suite name="legs">
-  <fixture type="process">{world}</fixture>
+  <fixture type="process">{world.name}</fixture>
   <test name="knee" tags="leg,slow">{PASSING}</test>
 </suite>
 """)
-    return ["--suite", arm, "--suite", legs]
+    return ["--suite", arm.name, "--suite", legs.name]
 
 
 def ran(run):
@@ -76,7 +76,8 @@ def test_selection_by_tags_and_names(tmp_path, args, expected):
 def test_not_selected_is_not_run_nor_reported(tmp_path, isolation, marker):
     junit = tmp_path / "junit.xml"
     run = run_runner(*suites(tmp_path), "--isolation", isolation, "--tag", "arm",
-                     "--output", f"junit:{junit}", cwd=tmp_path, env=marked(marker), timeout=60)
+                     "--output", f"junit:{junit.name}", cwd=tmp_path, env=marked(marker),
+                     timeout=60)
     assert run.returncode == 0, run
     assert ran(run) == ["left", "right"], run
     assert "legs" not in run.stdout and "head" not in run.stdout, run

@@ -35,13 +35,13 @@ def test_a_suite_variable_reaches_plugin_param_environment_and_timeout(tmp_path,
   <variable name="limit">30</variable>
 </suite>
 """)
-    run = run_runner("--suite", suite, "--isolation", isolation, "-v", "--no-output",
+    run = run_runner("--suite", suite.name, "--isolation", isolation, "-v", "--no-output",
                      cwd=tmp_path)
     assert run.returncode == 0, run
     assert "[--expect-param] [icubSim]" in run.output, run
     assert "environment [--robot icubSim]" in run.output, run
 
-    run = run_runner("--suite", suite, "--isolation", isolation, "-v", "--no-output",
+    run = run_runner("--suite", suite.name, "--isolation", isolation, "-v", "--no-output",
                      "--var", "robot=icub", cwd=tmp_path)
     assert run.returncode == 0, run
     assert "[--expect-param] [icub]" in run.output, run
@@ -59,16 +59,17 @@ def test_var_beats_var_files_which_beat_the_suite(tmp_path):
 """)
     first = write(tmp_path / "first.env", "# first\nb=first\nc=first\nd=first\n")
     second = write(tmp_path / "second.env", "c = second\nd=second\n")
-    args = ["--suite", suite, "--var-file", first, "--var-file", second, "--var", "d=cli"]
+    args = ["--suite", suite.name, "--var-file", first.name, "--var-file", second.name, "--var",
+            "d=cli"]
     run = run_runner(*args, "--list", cwd=tmp_path)
     assert run.returncode == 0, run
     assert "param suite-first-second-cli" in run.stdout, run
 
     run = run_runner(*args, "--list-vars", cwd=tmp_path)
     assert run.returncode == 0, run
-    assert f"a = suite  ({suite}:2)" in run.stdout, run
-    assert f"b = first  ({first}:2)" in run.stdout, run
-    assert f"c = second  ({second}:1)" in run.stdout, run
+    assert f"a = suite  ({suite.name}:2)" in run.stdout, run
+    assert f"b = first  ({first.name}:2)" in run.stdout, run
+    assert f"c = second  ({second.name}:1)" in run.stdout, run
     assert "d = cli  (--var)" in run.stdout, run
 
 
@@ -77,7 +78,7 @@ def test_environment_and_literal_dollar_braces(tmp_path):
   <test param="--home ${{env:RTF_E2E_HOME}} $${{kept}} ${{{{also}}">{ECHO}</test>
 </suite>
 """)
-    run = run_runner("--suite", suite, "--list", cwd=tmp_path, env={"RTF_E2E_HOME": "/home/r"})
+    run = run_runner("--suite", suite.name, "--list", cwd=tmp_path, env={"RTF_E2E_HOME": "/home/r"})
     assert run.returncode == 0, run
     assert "param --home /home/r ${kept} ${also}" in run.stdout, run
 
@@ -96,17 +97,17 @@ def test_a_suite_variable_reaches_the_world_file_and_var_beats_it(tmp_path, isol
     world = world_saying_speed(tmp_path)
     suite = write(tmp_path / "suite.xml", f"""<suite name="s">
   <variable name="speed">7</variable>
-  <fixture type="process">{world}</fixture>
+  <fixture type="process">{world.name}</fixture>
   <test>{plugin("passing_test")}</test>
 </suite>
 """)
     log = tmp_path / "logs" / "p.log"
-    run = run_runner("--suite", suite, "--isolation", isolation, "--no-output", cwd=tmp_path,
+    run = run_runner("--suite", suite.name, "--isolation", isolation, "--no-output", cwd=tmp_path,
                      env=marked(marker), timeout=60)
     assert run.returncode == 0, run
     assert "v=7" in log.read_text(), run
 
-    run = run_runner("--suite", suite, "--isolation", isolation, "--no-output", "--var",
+    run = run_runner("--suite", suite.name, "--isolation", isolation, "--no-output", "--var",
                      "speed=9", cwd=tmp_path, env=marked(marker), timeout=60)
     assert run.returncode == 0, run
     assert "v=9" in log.read_text(), run
@@ -120,9 +121,9 @@ def test_an_undefined_variable_names_file_line_and_the_close_ones(tmp_path):
   <test param="--port ${{robot_prot}}">{ECHO}</test>
 </suite>
 """)
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:4: undefined variable ${{robot_prot}}; did you mean ${{robot_port}}?" \
+    assert f"{suite.name}:4: undefined variable ${{robot_prot}}; did you mean ${{robot_port}}?" \
         in run.stderr, run
 
 
@@ -133,9 +134,9 @@ def test_a_variable_that_refers_to_itself_names_the_cycle(tmp_path):
   <test>{ECHO}</test>
 </suite>
 """)
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: variable ${{a}} refers to itself: a -> b -> a" in run.stderr, run
+    assert f"{suite.name}:2: variable ${{a}} refers to itself: a -> b -> a" in run.stderr, run
 
 
 @pytest.mark.parametrize("value, expected", [
@@ -152,10 +153,10 @@ def test_a_malformed_var_is_a_usage_error_with_the_position(tmp_path, value, exp
 
 def test_a_malformed_var_file_line_names_file_line_and_column(tmp_path):
     bad = write(tmp_path / "robot.env", "# ok\nrobot=icub\nport 10001\n")
-    run = run_runner("--test", ECHO, "--var-file", bad, "--no-output", cwd=tmp_path)
+    run = run_runner("--test", ECHO, "--var-file", bad.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"--var-file {bad}:3: no '=' in 'port 10001'" in run.stderr, run
-    run = run_runner("--test", ECHO, "--var-file", tmp_path / "none.env", "--no-output",
+    assert f"--var-file {bad.name}:3: no '=' in 'port 10001'" in run.stderr, run
+    run = run_runner("--test", ECHO, "--var-file", "none.env", "--no-output",
                      cwd=tmp_path)
     assert run.returncode == 2, run
     assert "none.env: cannot read the variable file" in run.stderr, run
@@ -214,9 +215,10 @@ def test_a_missing_test_file_names_the_path_and_the_suite_line(tmp_path):
   <test file="tests/nope.xml"/>
 </suite>
 """)
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:3: <test file=\"tests/nope.xml\">: {tmp_path}/tests/nope.xml: cannot read " \
+    # The test file is named from the suite's folder, as given (here the run's folder).
+    assert f"{suite.name}:3: <test file=\"tests/nope.xml\">: ./tests/nope.xml: cannot read " \
            "the test file" in run.stderr, run
 
 
@@ -224,19 +226,19 @@ def test_a_file_that_is_not_a_test_names_the_path_and_the_suite_line(tmp_path):
     other = write(tmp_path / "other.xml", "<suite name='x'><test>a.so</test></suite>\n")
     suite = write(tmp_path / "suite.xml", '<suite name="s">\n  <test file="other.xml"/>\n'
                                           '</suite>\n')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: in the test file named here: {other}:1: the root element is <suite>; " \
-           "a test file holds one <test>" in run.stderr, run
+    assert f"{suite.name}:2: in the test file named here: ./{other.name}:1: the root element " \
+           "is <suite>; a test file holds one <test>" in run.stderr, run
 
 
 def test_an_undefined_variable_in_a_test_file_names_both_files(tmp_path):
     left_arm(tmp_path)
     suite = write(tmp_path / "suite.xml", '<suite name="s">\n  <test file="tests/left_arm.xml"/>'
                                           '\n</suite>\n')
-    run = run_runner("--suite", suite, "--no-output", cwd=tmp_path)
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert f"{suite}:2: in the test file named here: {tmp_path}/tests/left_arm.xml:1: " \
+    assert f"{suite.name}:2: in the test file named here: ./tests/left_arm.xml:1: " \
            "undefined variable ${robot}" in run.stderr, run
 
 
@@ -245,7 +247,7 @@ def test_a_var_read_only_by_a_test_file_is_not_called_unused(tmp_path):
     suite = write(tmp_path / "suite.xml", '<suite name="s">\n  <variable name="robot">r'
                                           '</variable>\n  <test file="tests/left_arm.xml"/>\n'
                                           '</suite>\n')
-    run = run_runner("--suite", suite, "--var", "part=wrist", "--var", "nobody=1", "--list",
+    run = run_runner("--suite", suite.name, "--var", "part=wrist", "--var", "nobody=1", "--list",
                      cwd=tmp_path)
     assert run.returncode == 0, run
     assert "param --expect-param r --part wrist\n" in run.stdout, run

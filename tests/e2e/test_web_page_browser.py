@@ -44,7 +44,7 @@ def test_page_follows_the_run_and_shows_hostile_names_as_text(tmp_path, suite_fi
   <test type="exec">{escape(str(probe))}</test>
   <test type="exec">{escape(str(skipped))}</test>
 </suite>""")
-    run = WebRun("-s", suite, "--web-linger", "120", cwd=tmp_path)
+    run = WebRun("-s", suite.name, "--web-linger", "120", cwd=tmp_path)
     try:
         browser.get(run.url)
         wait = WebDriverWait(browser, 30, poll_frequency=0.05)
@@ -85,7 +85,7 @@ def test_page_follows_the_run_and_shows_hostile_names_as_text(tmp_path, suite_fi
 
 def test_page_opened_after_the_run_shows_the_final_result(tmp_path, browser):
     test = quick_test(tmp_path, "quick one")
-    run = WebRun("-t", test, "--web-linger", "120", cwd=tmp_path)
+    run = WebRun("-t", test.name, "--web-linger", "120", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays")
         browser.get(run.url)
@@ -130,7 +130,7 @@ class FixtureManager:
   <fixture>{escape(str(tmp_path / "world.py"))}</fixture>
   <test type="exec">{escape(str(waiting))}</test>
 </suite>""")
-    run = WebRun("-s", suite, "--isolation", isolation, "--web-linger", "120", cwd=tmp_path)
+    run = WebRun("-s", suite.name, "--isolation", isolation, "--web-linger", "120", cwd=tmp_path)
     try:
         browser.get(run.url)
         wait = WebDriverWait(browser, 30, poll_frequency=0.05)

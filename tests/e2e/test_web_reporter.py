@@ -22,7 +22,7 @@ def blocked_suite(tmp_path, suite_file):
 
 def test_port_0_prints_the_url_and_serves_the_page(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, cwd=tmp_path)
+    run = WebRun("-s", suite.name, cwd=tmp_path)
     try:
         assert run.url == f"http://127.0.0.1:{run.port}/"
         status, headers, body = request(run.port, "/")
@@ -38,7 +38,7 @@ def test_port_0_prints_the_url_and_serves_the_page(tmp_path, suite_file):
 
 def test_status_and_update_follow_the_run(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("-s", suite.name, "--web-linger", "60", cwd=tmp_path)
     try:
         status = poll(lambda: json.loads(request(run.port, "/status")[2])["testStatus"] == [1, 0],
                       what="the first test running")
@@ -64,7 +64,7 @@ def test_status_and_update_follow_the_run(tmp_path, suite_file):
 
 def test_snapshot_and_event_stream_replay_from_last_event_id(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("-s", suite.name, "--web-linger", "60", cwd=tmp_path)
     try:
         poll(lambda: json.loads(request(run.port, "/status")[2])["testStatus"] == [1, 0],
              what="the first test running")
@@ -115,7 +115,7 @@ def test_snapshot_and_event_stream_replay_from_last_event_id(tmp_path, suite_fil
 
 def test_host_header_must_name_this_machine(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, cwd=tmp_path)
+    run = WebRun("-s", suite.name, cwd=tmp_path)
     try:
         for host in ("attacker.example", f"attacker.example:{run.port}", "127.0.0.1.nip.io"):
             status, _, _ = request(run.port, "/status", headers={"Host": host})
@@ -141,7 +141,7 @@ def test_host_header_must_name_this_machine(tmp_path, suite_file):
 
 def test_only_get_is_answered(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, cwd=tmp_path)
+    run = WebRun("-s", suite.name, cwd=tmp_path)
     try:
         for method in ("POST", "PUT", "DELETE", "PATCH", "OPTIONS"):
             status, headers, _ = request(run.port, "/status", method=method)
@@ -155,7 +155,7 @@ def test_only_get_is_answered(tmp_path, suite_file):
 
 def test_runner_exits_when_the_run_ends_even_with_a_page_open(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    run = WebRun("-s", suite, cwd=tmp_path)
+    run = WebRun("-s", suite.name, cwd=tmp_path)
     stream = socket.create_connection(("127.0.0.1", run.port), timeout=10)
     try:
         stream.sendall(f"GET /events HTTP/1.1\r\nHost: 127.0.0.1:{run.port}\r\n\r\n".encode())
@@ -181,8 +181,8 @@ def test_a_port_in_use_exits_2_naming_it(tmp_path):
         taken.bind(("127.0.0.1", 0))
         taken.listen()
         port = taken.getsockname()[1]
-        r = run_runner("-w", "--web-port", port, "--no-output", "-t", quick_test(tmp_path, "t"),
-                       cwd=tmp_path, timeout=60)
+        r = run_runner("-w", "--web-port", port, "--no-output", "-t",
+                       quick_test(tmp_path, "t").name, cwd=tmp_path, timeout=60)
     assert r.returncode == 2, r
     assert f"--web-port {port}" in r.stderr and str(port) in r.stderr, r
     assert "1 passed" not in r.stdout, r
@@ -190,10 +190,10 @@ def test_a_port_in_use_exits_2_naming_it(tmp_path):
 
 def test_a_second_runner_on_the_same_port_exits_2(tmp_path, suite_file):
     suite, go = blocked_suite(tmp_path, suite_file)
-    first = WebRun("-s", suite, cwd=tmp_path)
+    first = WebRun("-s", suite.name, cwd=tmp_path)
     try:
         r = run_runner("-w", "--web-port", first.port, "--no-output", "-t",
-                       quick_test(tmp_path, "t"), cwd=tmp_path, timeout=60)
+                       quick_test(tmp_path, "t").name, cwd=tmp_path, timeout=60)
         assert r.returncode == 2, r
         assert f"--web-port {first.port}" in r.stderr, r
     finally:
@@ -204,14 +204,15 @@ def test_a_second_runner_on_the_same_port_exits_2(tmp_path, suite_file):
 def test_another_host_is_served_with_a_warning(tmp_path):
     port = free_port()
     r = run_runner("-w", "--web-port", port, "--web-host", "127.0.0.2", "--no-output", "-t",
-                   quick_test(tmp_path, "t"), cwd=tmp_path, timeout=60)
+                   quick_test(tmp_path, "t").name, cwd=tmp_path, timeout=60)
     assert r.returncode == 0, r
     assert "warning: --web-host 127.0.0.2" in r.stderr, r
     assert f"live web page at http://127.0.0.2:{port}/" in r.stdout, r
 
 
 def test_web_port_out_of_range_is_a_usage_error(tmp_path):
-    r = run_runner("-w", "--web-port", "70000", "-t", quick_test(tmp_path, "t"), cwd=tmp_path)
+    r = run_runner("-w", "--web-port", "70000", "-t", quick_test(tmp_path, "t").name,
+                   cwd=tmp_path)
     assert r.returncode == 2, r
     assert "--web-port" in r.stderr, r
 
@@ -222,7 +223,7 @@ def test_a_failing_fixture_fails_the_suite_on_the_page(tmp_path, suite_file):
   <fixture param="--log {log} --name B --fail-setup">{plugin("order_fixture")}</fixture>
   <test>{plugin("passing_test")}</test>
 </suite>""")
-    run = WebRun("-s", suite, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("-s", suite.name, "--web-linger", "60", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays")
         snapshot = json.loads(request(run.port, "/snapshot")[2])
@@ -240,7 +241,7 @@ def test_a_failing_fixture_fails_the_suite_on_the_page(tmp_path, suite_file):
 
 def test_verbose_shows_what_the_tests_print(tmp_path):
     test = quick_test(tmp_path, "talker", "echo 'arm moved to 90 deg'\n")
-    run = WebRun("-v", "-t", test, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("-v", "-t", test.name, "--web-linger", "60", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays")
         snapshot = json.loads(request(run.port, "/snapshot")[2])
@@ -258,7 +259,7 @@ def test_a_test_passing_on_a_retry_is_flaky_on_the_page(tmp_path):
     test = quick_test(tmp_path, "wobbly",
                       f"n=$(cat '{counter}' 2>/dev/null || echo 0); n=$((n + 1)); "
                       f"echo $n > '{counter}'; [ $n -le 1 ] && exit 3; exit 0\n")
-    run = WebRun("-t", test, "--retries", "2", "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("-t", test.name, "--retries", "2", "--web-linger", "60", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays")
         snapshot = json.loads(request(run.port, "/snapshot")[2])
@@ -285,7 +286,7 @@ def test_a_test_failing_thousands_of_checks_costs_the_page_little(tmp_path):
     # per kind, and one change kept per test.
     test = tmp_path / "failing.py"
     test.write_text(FAILING_CHECKS)
-    run = WebRun("--isolation", "process", "-t", test, "--web-linger", "60", cwd=tmp_path)
+    run = WebRun("--isolation", "process", "-t", test.name, "--web-linger", "60", cwd=tmp_path)
     try:
         run.wait_for_line("final page stays", timeout=60)
         with open(f"/proc/{run.proc.pid}/status") as status:
