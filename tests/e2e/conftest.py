@@ -96,7 +96,7 @@ def _named_relatively(args, cwd):
     AbsoluteName, which says so)."""
     if cwd is None:
         return
-    folders = {str(cwd).rstrip(os.sep) + os.sep, os.path.realpath(cwd) + os.sep}
+    folders = {os.path.abspath(cwd) + os.sep, os.path.realpath(cwd) + os.sep}
     for arg in args:
         if isinstance(arg, AbsoluteName):
             continue
