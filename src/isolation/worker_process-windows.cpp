@@ -17,8 +17,6 @@ namespace isolation {
 
 namespace {
 
-// Read in 64 KiB: less means the pipe was emptied.
-constexpr long kReadSize = 65536;
 // How often a wait looks at the process besides the pipes.
 constexpr int kPollMs = 20;
 
@@ -68,64 +66,6 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
 
 bool WorkerProcess::learnPid(double) {
     return pid_ > 0;  // known from the start
-}
-
-void WorkerProcess::readChannel(std::vector<WireRecord>& records, bool all) {
-    std::string bytes;
-    for (;;) {
-        bytes.clear();
-        long n = platform::readSome(channel_.get(), bytes, kReadSize);
-        if (n > 0) {
-            events_.feed(bytes);
-            if (n < kReadSize && !all) {
-                break;
-            }
-            continue;
-        }
-        if (n == 0) {
-            channel_.reset();
-        }
-        break;
-    }
-    WireRecord record;
-    for (;;) {
-        WireDecoder::Status status = events_.next(record);
-        if (status == WireDecoder::Status::Record) {
-            records.push_back(std::move(record));
-            record = WireRecord();
-        } else {
-            corrupt_ = corrupt_ || status == WireDecoder::Status::Corrupt;
-            break;
-        }
-    }
-    if (corrupt_) {
-        channel_.reset();
-    }
-}
-
-void WorkerProcess::readOutput(bool all) {
-    std::string bytes;
-    for (;;) {
-        bytes.clear();
-        long n = platform::readSome(output_fd_.get(), bytes, kReadSize);
-        if (n > 0) {
-            output_.append(bytes);
-            if (n < kReadSize && !all) {
-                break;
-            }
-            continue;
-        }
-        if (n == 0) {
-            output_fd_.reset();
-        }
-        break;
-    }
-}
-
-void WorkerProcess::drainOutput() {
-    if (output_fd_.valid()) {
-        readOutput(true);
-    }
 }
 
 void WorkerProcess::readStatus(std::vector<WireRecord>& records) {

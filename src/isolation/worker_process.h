@@ -69,6 +69,8 @@ private:
     bool learnPid(double seconds);
     // pump() without the backlog.
     bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
+    // Read in 64 KiB: less means the pipe was emptied, and the next poll says when more comes.
+    static constexpr long kReadSize = 65536;
     // `all`: until nothing is left (the worker ended); else one read unless it filled the
     // buffer (the next poll tells when more came).
     void readChannel(std::vector<WireRecord>& records, bool all);

@@ -5,8 +5,6 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <map>
-#include <mutex>
 #include <vector>
 
 #include "platform/process.h"
@@ -62,7 +60,9 @@ std::vector<std::string> moduleFolders() {
     return folders;
 }
 
-const LanguageModule* load(const std::string& language, std::string& error) {
+}  // namespace
+
+const LanguageModule* loadLanguageModule(const std::string& language, std::string& error) {
     std::string file = "robottestingframework-" + language + ".so";
     std::vector<std::string> folders = moduleFolders();
     // The first folder that has the file; when none has it, the first one, so that dlerror
@@ -98,23 +98,6 @@ const LanguageModule* load(const std::string& language, std::string& error) {
         return nullptr;
     }
     return module;  // never closed: its objects and interpreter live until the process ends
-}
-
-}  // namespace
-
-const LanguageModule* languageModule(const std::string& language, std::string& error) {
-    static std::mutex mutex;
-    static std::map<std::string, const LanguageModule*> loaded;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto found = loaded.find(language);
-    if (found != loaded.end()) {
-        return found->second;
-    }
-    const LanguageModule* module = load(language, error);
-    if (module != nullptr) {
-        loaded.emplace(language, module);
-    }
-    return module;
 }
 
 std::string unsupportedTypeReason(const std::string& type) {

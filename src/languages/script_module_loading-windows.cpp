@@ -7,8 +7,6 @@
 #include <windows.h>
 
 #include <cstdlib>
-#include <map>
-#include <mutex>
 #include <vector>
 
 #include "platform/process.h"
@@ -85,7 +83,9 @@ std::string lastError(const std::string& what) {
     return what + ": " + (text.empty() ? "error" : text) + " (error " + std::to_string(code) + ")";
 }
 
-const LanguageModule* load(const std::string& language, std::string& error) {
+}  // namespace
+
+const LanguageModule* loadLanguageModule(const std::string& language, std::string& error) {
     const std::string file = "robottestingframework-" + language + ".dll";
     const std::vector<std::string> folders = moduleFolders();
     // The first folder that has the file; when none has it, the first one, so that the error
@@ -120,23 +120,6 @@ const LanguageModule* load(const std::string& language, std::string& error) {
         return nullptr;
     }
     return module;  // never freed: its objects live until the process ends
-}
-
-}  // namespace
-
-const LanguageModule* languageModule(const std::string& language, std::string& error) {
-    static std::mutex mutex;
-    static std::map<std::string, const LanguageModule*> loaded;
-    std::lock_guard<std::mutex> lock(mutex);
-    auto found = loaded.find(language);
-    if (found != loaded.end()) {
-        return found->second;
-    }
-    const LanguageModule* module = load(language, error);
-    if (module != nullptr) {
-        loaded.emplace(language, module);
-    }
-    return module;
 }
 
 std::string unsupportedTypeReason(const std::string& type) {

@@ -13,6 +13,9 @@ namespace languages {
 // loaded. Looked for in $RTF_LANGUAGE_DIR when set, else in the folder the program's libraries
 // sit in (../lib/robottestingframework from the program), else where it was installed.
 const LanguageModule* languageModule(const std::string& language, std::string& error);
+// The platform's part of it (script_module_loading-posix.cpp: dlopen, -windows.cpp:
+// LoadLibrary): finds and loads the module, every time it is called.
+const LanguageModule* loadLanguageModule(const std::string& language, std::string& error);
 
 // The script languages of this build ("python", "lua", "ruby"), each in a module of its own.
 bool isScriptLanguage(const std::string& type);
