@@ -3,13 +3,14 @@
 # then:
 #   ./run.sh example    runs the example suites; reports (text, JUnit, TAP, JSON, HTML) in
 #                       build/example-reports/
-#   ./run.sh test       runs every test (ctest), then the sanitizer job and the portable-POSIX
-#                       job (below); last line "N passed, N failed" over all three
+#   ./run.sh test       runs every test (ctest), then the sanitizer job, the portable-POSIX
+#                       job and the Windows job (below); last line "N passed, N failed" over
+#                       all four
 #   ./run.sh portable   the portable-POSIX job alone: builds build-portable/ with
 #                       -DRTF_PORTABLE_POSIX=ON (the macOS code paths, on Linux) and runs the
 #                       unit tests and the isolation, interrupt, fixture and hostile-input
 #                       end-to-end tests with it
-#   ./run.sh windows    the Windows job (not part of test: the integrator decides): installs
+#   ./run.sh windows    the Windows job alone: installs
 #                       MinGW-w64 and Wine if missing (scripts/install-deps.sh --windows),
 #                       fetches pugixml's and Lua's Debian sources into build-windows/deps/
 #                       (scripts/windows-deps.sh, a private apt configuration), cross-builds
@@ -351,12 +352,13 @@ example)
     exit $status
     ;;
 test)
-    scripts/install-deps.sh
+    scripts/install-deps.sh --windows
     configure "$dir"
     build "$dir"
     run_ctest tests "$dir" || true
     sanitizer_job || true
     portable_job || true
+    windows_job || true
     finish
     ;;
 sanitize)
