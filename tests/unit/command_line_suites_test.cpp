@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "runner/cli/command_line_suites.h"
 #include "runner/suites/suite_file.h"
 
@@ -23,7 +24,8 @@ namespace {
 class TestSources : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("test_sources_" + std::to_string(::getpid()));
+        dir_ = fs::path(build_paths::unitTestTmpDir()) /
+               ("test_sources_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

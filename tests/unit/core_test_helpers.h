@@ -13,6 +13,8 @@
 #include <robottestingframework/TestCase.h>
 #include <robottestingframework/TestResultCollector.h>
 
+#include "build_paths.h"
+
 namespace rtf_test {
 
 using namespace robottestingframework;
@@ -100,7 +102,7 @@ public:
 // A fresh folder under the build tree for one test's files.
 inline std::filesystem::path scratchDir() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::filesystem::path dir = std::filesystem::path(RTF_UNIT_TEST_TMPDIR) /
+    std::filesystem::path dir = std::filesystem::path(build_paths::unitTestTmpDir()) /
                                 (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);

@@ -5,13 +5,15 @@
 
 #include <robottestingframework/dll/DllPluginLoader.h>
 
+#include "build_paths.h"
+
 using robottestingframework::plugin::DllFixturePluginLoader;
 using robottestingframework::plugin::DllPluginLoader;
 
 namespace {
 
 std::string plugin(const std::string& name) {
-    return std::string(RTF_TEST_PLUGIN_DIR) + "/" + name + ".so";
+    return std::string(build_paths::testPluginDir()) + "/" + name + ".so";
 }
 
 }  // namespace

@@ -8,6 +8,8 @@
 
 #include <robottestingframework/dll/DllPluginLoader.h>
 
+#include "build_paths.h"
+
 using robottestingframework::plugin::findPlugin;
 namespace fs = std::filesystem;
 
@@ -16,7 +18,7 @@ namespace {
 class FindPlugin : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) /
+        dir_ = fs::path(build_paths::unitTestTmpDir()) /
                ("find_plugin_" +
                 std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
         fs::remove_all(dir_);

@@ -15,6 +15,7 @@
 #include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "build_paths.h"
 #include "runner/cli/run_history.h"
 #include "runner/history/history_database.h"
 #include "runner/history/history_error.h"
@@ -30,7 +31,7 @@ namespace {
 class History : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("history_" + std::to_string(::getpid()));
+        dir_ = fs::path(build_paths::unitTestTmpDir()) / ("history_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         path_ = (dir_ / "history.db").string();

@@ -25,6 +25,7 @@
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResult.h>
 
+#include "build_paths.h"
 #include "platform/clock.h"
 #include "runner/execution/isolated_executor.h"
 
@@ -36,7 +37,7 @@ using isolation::IsolationOptions;
 namespace {
 
 std::string plugin(const std::string& name) {
-    return std::string(RTF_TEST_PLUGIN_DIR) + "/" + name + ".so";
+    return std::string(build_paths::testPluginDir()) + "/" + name + ".so";
 }
 
 class StandIn : public Test {
@@ -160,7 +161,7 @@ class Isolation : public ::testing::Test {
 protected:
     void SetUp() override {
         marker = freshMarker();
-        options.workerPath = RTF_WORKER_PATH;
+        options.workerPath = build_paths::workerPath();
         options.killGrace = 0.3;
         options.fixtureTimeout = 2.0;
         executor.reset(new IsolatedExecutor(options));
@@ -425,7 +426,7 @@ TEST(IsolationRunnerDeath, NoProcessSurvivesTheRunnerBeingKilled) {
     pid_t runner = ::fork();
     if (runner == 0) {
         IsolationOptions options;
-        options.workerPath = RTF_WORKER_PATH;
+        options.workerPath = build_paths::workerPath();
         IsolatedExecutor executor(options);
         StandIn self("x");
         TestResult result;

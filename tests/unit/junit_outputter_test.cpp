@@ -13,6 +13,7 @@
 #include <robottestingframework/TestRunner.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "build_paths.h"
 #include "core_test_helpers.h"
 
 using namespace rtf_test;
@@ -27,8 +28,9 @@ bool has(const std::string& text, const std::string& part) {
 // xmllint's verdict on `file` against the project's JUnit schema; its messages go to `log`.
 bool validates(const fs::path& file) {
     const fs::path log = file.string() + ".xmllint.log";
-    const std::string command = "xmllint --noout --schema '" + std::string(RTF_JUNIT_SCHEMA) +
-                                "' '" + file.string() + "' > '" + log.string() + "' 2>&1";
+    const std::string command = "xmllint --noout --schema '" +
+                                std::string(build_paths::junitSchema()) + "' '" + file.string() +
+                                "' > '" + log.string() + "' 2>&1";
     const int status = std::system(command.c_str());
     if (status != 0) {
         std::ifstream in(log);

@@ -14,6 +14,7 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestResultCollector.h>
 
+#include "build_paths.h"
 #include "languages/test_loader.h"
 
 namespace rtf_test {
@@ -23,7 +24,8 @@ using namespace robottestingframework;
 // A folder of its own for the running GoogleTest test, emptied first.
 inline std::filesystem::path scriptFolder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    std::filesystem::path folder = std::filesystem::path(RTF_UNIT_TEST_TMPDIR) / "languages" /
+    std::filesystem::path folder = std::filesystem::path(build_paths::unitTestTmpDir()) /
+                                   "languages" /
                                    (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(folder);
     std::filesystem::create_directories(folder);

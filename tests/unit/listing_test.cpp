@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "build_paths.h"
 #include "runner/cli/listing.h"
 
 using namespace robottestingframework::runner;
@@ -149,9 +150,9 @@ TEST(Listing, InvalidUtf8InAParamIsReplacedNotFatal) {
 }
 
 TEST(Listing, TheJsonListIsWrittenToItsFile) {
-    const std::string file =
-        std::string(RTF_UNIT_TEST_TMPDIR) + "/listing_" + std::to_string(::getpid()) + ".json";
-    std::filesystem::create_directories(RTF_UNIT_TEST_TMPDIR);
+    const std::string file = std::string(build_paths::unitTestTmpDir()) + "/listing_" +
+                             std::to_string(::getpid()) + ".json";
+    std::filesystem::create_directories(build_paths::unitTestTmpDir());
     std::string error;
     ASSERT_TRUE(writeListJson(file, {armSuite()}, error)) << error;
     std::ifstream in(file);
@@ -163,8 +164,9 @@ TEST(Listing, TheJsonListIsWrittenToItsFile) {
 
 TEST(Listing, AListThatCannotBeWrittenSaysWhy) {
     std::string error;
-    EXPECT_FALSE(writeListJson(std::string(RTF_UNIT_TEST_TMPDIR) + "/no/such/folder/list.json",
-                               {armSuite()}, error));
+    EXPECT_FALSE(
+        writeListJson(std::string(build_paths::unitTestTmpDir()) + "/no/such/folder/list.json",
+                      {armSuite()}, error));
     EXPECT_FALSE(error.empty());
 }
 

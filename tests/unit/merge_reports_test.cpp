@@ -9,6 +9,7 @@
 
 #include <pugixml.hpp>
 
+#include "build_paths.h"
 #include "runner/reports/merge_reports.h"
 
 using namespace robottestingframework::runner;
@@ -35,7 +36,8 @@ std::string testCase(const std::string& name, const std::string& status) {
 class MergeReports : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("merge_reports_" + std::to_string(::getpid()));
+        dir_ = fs::path(build_paths::unitTestTmpDir()) /
+               ("merge_reports_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <string>
 
+#include "build_paths.h"
 #include "runner/cli/output_paths.h"
 
 using namespace robottestingframework::runner;
@@ -18,7 +19,8 @@ namespace {
 class OutputPaths : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("output_paths_" + std::to_string(::getpid()));
+        dir_ = fs::path(build_paths::unitTestTmpDir()) /
+               ("output_paths_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
         std::ofstream(dir_ / "suite.xml") << "<suite/>";

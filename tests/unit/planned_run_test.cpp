@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "runner/cli/planned_run.h"
 
 using namespace robottestingframework::runner;
@@ -83,7 +84,8 @@ struct Reported {
 class PlannedRunTest : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("planned_run_" + std::to_string(::getpid()));
+        dir_ =
+            fs::path(build_paths::unitTestTmpDir()) / ("planned_run_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -14,16 +14,14 @@
 
 #include <gtest/gtest.h>
 
+#include "build_paths.h"
+
 namespace rtf_process_test {
 
 // An empty folder named after the running test, under the build tree.
 inline std::filesystem::path freshFolder() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-#ifdef RTF_UNIT_TEST_TMPDIR
-    std::filesystem::path base = RTF_UNIT_TEST_TMPDIR;
-#else
-    std::filesystem::path base = std::filesystem::temp_directory_path();
-#endif
+    std::filesystem::path base = build_paths::unitTestTmpDir();
     std::filesystem::path folder =
         base / "process_fixture" / (std::string(info->test_suite_name()) + "." + info->name());
     std::filesystem::remove_all(folder);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "runner/reports/report_reader.h"
 
 using namespace robottestingframework::runner;
@@ -19,7 +20,8 @@ namespace {
 class ReportReader : public ::testing::Test {
 protected:
     void SetUp() override {
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("report_reader_" + std::to_string(::getpid()));
+        dir_ = fs::path(build_paths::unitTestTmpDir()) /
+               ("report_reader_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "runner/reports/rerun_report.h"
 
 using namespace robottestingframework::runner;
@@ -92,7 +93,7 @@ TEST(RerunReport, AReportThatIsNotOneOfThisRunnersIsAnErrorNamingTheOption) {
 }
 
 TEST(RerunReport, AMissingReportIsAnErrorNamingIt) {
-    const std::string path = std::string(RTF_UNIT_TEST_TMPDIR) + "/rerun_report_missing_" +
+    const std::string path = std::string(build_paths::unitTestTmpDir()) + "/rerun_report_missing_" +
                              std::to_string(::getpid()) + ".xml";
     try {
         readFailedTests(path);
@@ -105,7 +106,7 @@ TEST(RerunReport, AMissingReportIsAnErrorNamingIt) {
 
 TEST(RerunReport, AReportIsReadFromItsFile) {
     const fs::path dir =
-        fs::path(RTF_UNIT_TEST_TMPDIR) / ("rerun_report_" + std::to_string(::getpid()));
+        fs::path(build_paths::unitTestTmpDir()) / ("rerun_report_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     const std::string path = (dir / "earlier.xml").string();
     std::ofstream(path) << everyState;

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "isolation/wire_format.h"
 #include "runner/cli/options.h"
 #include "runner/schedule/resources.h"
@@ -56,8 +57,8 @@ ResourceSpec pool(const std::string& name, unsigned int count = 1) {
 }
 
 std::string writeFile(const std::string& name, const std::string& text) {
-    std::filesystem::create_directories(RTF_UNIT_TEST_TMPDIR);
-    const std::string path = std::string(RTF_UNIT_TEST_TMPDIR) + "/" + name;
+    std::filesystem::create_directories(build_paths::unitTestTmpDir());
+    const std::string path = std::string(build_paths::unitTestTmpDir()) + "/" + name;
     std::ofstream(path) << text;
     return path;
 }
@@ -169,7 +170,7 @@ TEST(SchedulerResources, ResourceFileIsReadLikeCTestsAndCheckedAgainstSuites) {
           R"({"version": {"major": 1}, "local": [{"gpus": [{"id": "0", "slots": 0}]}]})",
           R"({"version": {"major": 1e999}, "local": []})"}) {
         writeFile("bad.json", bad);
-        EXPECT_THROW(readResourceFile(std::string(RTF_UNIT_TEST_TMPDIR) + "/bad.json"),
+        EXPECT_THROW(readResourceFile(std::string(build_paths::unitTestTmpDir()) + "/bad.json"),
                      std::runtime_error)
             << bad;
     }

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "build_paths.h"
 #include "runner/cli/sharded_run_setup.h"
 
 using namespace robottestingframework::runner;
@@ -33,7 +34,8 @@ protected:
         remember("TMPDIR");
         remember("TEST_TMPDIR");
         ::unsetenv("TEST_TMPDIR");
-        dir_ = fs::path(RTF_UNIT_TEST_TMPDIR) / ("shard_setup_" + std::to_string(::getpid()));
+        dir_ =
+            fs::path(build_paths::unitTestTmpDir()) / ("shard_setup_" + std::to_string(::getpid()));
         fs::remove_all(dir_);
         fs::create_directories(dir_);
     }

@@ -8,6 +8,7 @@
 
 #include <robottestingframework/TestResult.h>
 
+#include "build_paths.h"
 #include "runner/model/shared_string.h"
 #include "runner/model/test_executor.h"
 #include "runner/plan/run_plan.h"
@@ -95,7 +96,7 @@ TEST(SharedString, TestsOfOnePluginShareItsPathAndTheirSuiteFile) {
 TEST(SharedString, TestsOfOneFoundPluginShareItsResolvedPath) {
     std::vector<std::string> warnings;
     // The test plug-ins of this build are found by their full path.
-    const std::string plugin = std::string(RTF_TEST_PLUGIN_DIR) + "/passing_test.so";
+    const std::string plugin = std::string(build_paths::testPluginDir()) + "/passing_test.so";
     const SuiteSpec suite =
         parseSuite("<suite><test>" + plugin + "</test><test>" + plugin + "</test></suite>",
                    "/nowhere/found.xml", warnings);

@@ -14,6 +14,8 @@
 #include <robottestingframework/dll/SharedLibraryClassFactory.h>
 #include <robottestingframework/dll/Vocab.h>
 
+#include "build_paths.h"
+
 using robottestingframework::FixtureManager;
 using robottestingframework::TestCase;
 using robottestingframework::plugin::DllFixturePluginLoader;
@@ -22,7 +24,7 @@ using robottestingframework::plugin::DllPluginLoader;
 namespace {
 
 std::string plugin(const std::string& name) {
-    return std::string(RTF_TEST_PLUGIN_DIR) + "/" + name + ".so";
+    return std::string(build_paths::testPluginDir()) + "/" + name + ".so";
 }
 
 }  // namespace

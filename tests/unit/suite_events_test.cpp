@@ -95,7 +95,7 @@ TEST(SuiteEvents, ReplayHandsEveryKindToTheListenersUnchanged) {
     run.addListener(&recorder);
     const std::vector<RunEvent> taken = queue.take();
     for (const RunEvent& event : taken) {
-        runner::replay(event, run);
+        run.publish(event);
     }
     ASSERT_EQ(recorder.events.size(), taken.size());
     for (std::size_t i = 0; i < taken.size(); ++i) {
@@ -194,7 +194,7 @@ TEST(SuiteEvents, ReplayedEventsAreTimedWhenTheyHappened) {
     std::this_thread::sleep_for(300ms);  // the scheduler's thread is busy elsewhere
     const double handedOn = collector.duration();
     for (const SuiteEvents::Event& event : events.take()) {
-        runner::replay(event, run);
+        run.publish(event);
     }
     const TestRecord& record = collector.suites().at(0).tests.at(0);
     EXPECT_GE(record.duration, 0.19);

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "build_paths.h"
 #include "languages/exec/tap_parser.h"
 
 using robottestingframework::languages::parseTap;
@@ -14,7 +15,7 @@ using robottestingframework::languages::TapStream;
 namespace {
 
 TapStream parseFile(const std::string& name) {
-    std::ifstream file(std::string(RTF_TAP_CORPUS_DIR) + "/" + name);
+    std::ifstream file(std::string(build_paths::tapCorpusDir()) + "/" + name);
     EXPECT_TRUE(file.good()) << name;
     std::stringstream text;
     text << file.rdbuf();

@@ -11,6 +11,8 @@
 #include <robottestingframework/TestRunner.h>
 #include <robottestingframework/dll/DllPluginLoader.h>
 
+#include "build_paths.h"
+
 using namespace robottestingframework;
 using plugin::DllFixturePluginLoader;
 using plugin::DllPluginLoader;
@@ -19,9 +21,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// RTF_WINDOWS_PLUGIN_DIR holds passing_test.dll, order_fixture.dll and not_a_plugin.dll (no
-// prefix, as MSVC names them) and libfailing_test.dll (MinGW's name).
-const std::string pluginDir = RTF_WINDOWS_PLUGIN_DIR;
+// build_paths::windowsPluginDir() holds passing_test.dll, order_fixture.dll and not_a_plugin.dll
+// (no prefix, as MSVC names them) and libfailing_test.dll (MinGW's name).
+const std::string pluginDir = build_paths::windowsPluginDir();
 
 bool has(const std::string& text, const std::string& part) {
     return text.find(part) != std::string::npos;

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "build_paths.h"
 #include "isolation/request_pipe.h"
 #include "platform/file_descriptor.h"
 #include "platform/job_process.h"
@@ -20,7 +21,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string sleeper() {
-    return fs::absolute(fs::path(RTF_WINDOWS_PLUGIN_DIR) / "sleeper.exe").make_preferred().string();
+    return fs::absolute(fs::path(build_paths::windowsPluginDir()) / "sleeper.exe")
+        .make_preferred()
+        .string();
 }
 
 }  // namespace

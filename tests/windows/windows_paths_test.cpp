@@ -9,6 +9,7 @@
 
 #include <robottestingframework/dll/DllPluginLoader.h>
 
+#include "build_paths.h"
 #include "runner/model/test_id.h"
 
 using robottestingframework::plugin::findPlugin;
@@ -19,7 +20,10 @@ namespace {
 
 // The plug-ins' folder as Windows writes it: "Z:\work\...\plugins".
 std::string windowsPluginDir() {
-    return fs::absolute(RTF_WINDOWS_PLUGIN_DIR).lexically_normal().make_preferred().string();
+    return fs::absolute(build_paths::windowsPluginDir())
+        .lexically_normal()
+        .make_preferred()
+        .string();
 }
 
 bool sameFile(const std::string& found, const std::string& expected) {

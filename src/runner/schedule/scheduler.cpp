@@ -333,7 +333,7 @@ void Scheduler::run(TestResult& result) {
         for (; head < jobs_.size(); ++head) {
             Job& job = *jobs_[head];
             for (const auto& event : job.pending) {
-                replay(event, result);
+                result.publish(event);
             }
             job.pending.clear();
             if (job.state != Job::State::Finished) {
@@ -344,7 +344,7 @@ void Scheduler::run(TestResult& result) {
         collect(changed);  // a suite reported not run is handed on at once
         for (; head < jobs_.size() && jobs_[head]->state == Job::State::Finished; ++head) {
             for (const auto& event : jobs_[head]->pending) {
-                replay(event, result);
+                result.publish(event);
             }
             jobs_[head]->pending.clear();
         }

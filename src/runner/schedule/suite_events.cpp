@@ -15,12 +15,6 @@ double steadySeconds() {
 
 }  // namespace
 
-// A kept event carries when it happened (RunEvent::happened, see onEvent): the collector
-// times it so, and the reports' start times, durations and timeline lanes are the suite's own.
-void replay(const SuiteEvents::Event& event, TestResult& result) {
-    result.publish(event);
-}
-
 std::vector<SuiteEvents::Event> SuiteEvents::take() {
     std::lock_guard<std::mutex> lock(mutex_);
     std::vector<Event> taken;
@@ -38,7 +32,9 @@ void SuiteEvents::onEvent(const RunEvent& event) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
         events_.push_back(event);
-        events_.back().happened = steadySeconds();  // when it happened (see replay)
+        // A kept event carries when it happened: the collector times it so when it is published
+        // later, and the reports' start times, durations and timeline lanes are the suite's own.
+        events_.back().happened = steadySeconds();
         const ResultEvent::Kind kind = event.data.kind;
         if (kind == ResultEvent::Kind::StartTest) {
             inTest_ = true;

@@ -45,8 +45,5 @@ private:
     bool inTest_ = false;  // between a StartTest and its EndTest
 };
 
-// Hands `event` to every listener of `result`, as if it had been reported there.
-void replay(const SuiteEvents::Event& event, TestResult& result);
-
 }  // namespace runner
 }  // namespace robottestingframework
