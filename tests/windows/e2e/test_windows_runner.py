@@ -62,6 +62,27 @@ def test_suite_runs_and_every_report_is_written_and_reads_back(tmp_path):
         "setup arm", "check arm", "check arm", "teardown arm"], (suites / "fixture.log").read_text()
 
 
+def test_what_a_test_prints_in_process_goes_to_the_reports_not_the_console(tmp_path):
+    """Descriptors 1 and 2 pointed at the capture file (platform/output_file-windows.cpp) and
+    read back per test: printf, iostream and stderr reach the JUnit <system-out> of the test
+    that printed them, and the console only with -v."""
+    copy_plugins(tmp_path, "printing_test.dll")
+    run = run_runner("-t", "printing_test.dll", "--isolation", "none", "-o", "junit:r.xml",
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    validate_junit(tmp_path / "r.xml")
+    case = ET.parse(tmp_path / "r.xml").getroot().find(".//testcase")
+    printed = case.findtext("system-out") or ""
+    for line in ("printf line from the test", "iostream line from the test",
+                 "stderr line from the test"):
+        assert line in printed, printed
+    assert "printf line from the test" not in run.stdout, run
+
+    verbose = run_runner("-t", "printing_test.dll", "--isolation", "none", "-v", cwd=tmp_path)
+    assert verbose.returncode == 0, verbose
+    assert "stderr line from the test" in verbose.stdout, verbose
+
+
 def test_plugin_path_is_a_semicolon_list_of_windows_folders(tmp_path):
     copy_plugins(tmp_path / "plugins", "passing_test.dll")
     suites = tmp_path / "suites"
