@@ -79,4 +79,6 @@ foreach(dll ${libstdcxx_dll} ${libgcc_dll} ${RTF_WINPTHREAD_DLL})
                             "(g++-mingw-w64-x86-64-posix)")
     endif()
     file(COPY ${dll} DESTINATION ${CMAKE_RUNTIME_OUTPUT_DIRECTORY})
+    # The installed programs import them too (x86_64-w64-mingw32-objdump -p): in bin/ as well.
+    install(FILES ${dll} DESTINATION ${CMAKE_INSTALL_BINDIR})
 endforeach()

@@ -7,6 +7,7 @@
 #include <io.h>
 #include <windows.h>
 
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include "isolation/request_pipe.h"
 #include "isolation/worker.h"
 #include "platform/job_process.h"
+#include "platform/signal_name.h"
 
 namespace {
 
@@ -22,6 +24,15 @@ namespace {
 LONG WINAPI endWithExceptionCode(EXCEPTION_POINTERS* exception) {
     ::TerminateProcess(::GetCurrentProcess(), exception->ExceptionRecord->ExceptionCode);
     return EXCEPTION_EXECUTE_HANDLER;
+}
+
+// abort() (a test's own, or std::terminate's) raises SIGABRT and then ends the program with
+// status 3, which cannot be told from exit(3): the worker ends with its own code instead, which
+// the runner names SIGABRT as POSIX does. abort() calls the handler on the aborting thread.
+void endAborted(int) {
+    std::fflush(stdout);
+    std::fflush(stderr);
+    ::TerminateProcess(::GetCurrentProcess(), robottestingframework::platform::kAbortExitCode);
 }
 
 }  // namespace
@@ -35,6 +46,7 @@ int main(int argc, char** argv) {
         if (calls >= 0 && events >= 0 && isolation::readRequest(calls, request)) {
             ::SetErrorMode(SEM_FAILCRITICALERRORS | SEM_NOGPFAULTERRORBOX);
             ::SetUnhandledExceptionFilter(endWithExceptionCode);
+            std::signal(SIGABRT, endAborted);
             // Line by line, as on POSIX: what a test printed before it crashed is not lost.
             std::setvbuf(stdout, nullptr, _IOLBF, 4096);
             for (const auto& variable : request.variables) {

@@ -1,6 +1,6 @@
 // Windows: a process ends by an exception, not a signal. Its exit code is the exception code
 // (NTSTATUS), which stands where a signal number stands on POSIX: "0xC0000005", named
-// "access violation".
+// "access violation"; but for a worker's abort(), named "SIGABRT" (kAbortExitCode).
 #include "platform/signal_name.h"
 
 #include <cstdio>
@@ -33,11 +33,15 @@ const ExceptionName kExceptions[] = {
     {0xC000013AUL, "interrupted by Ctrl-C"},
     {0xC0000374UL, "heap corruption"},
     {0xC0000409UL, "stack buffer overrun (fail fast)"},
+    {kAbortExitCode, "aborted"},
 };
 
 }  // namespace
 
 std::string signalName(int signal) {
+    if (static_cast<unsigned long>(signal) == kAbortExitCode) {
+        return "SIGABRT";
+    }
     char text[16];
     std::snprintf(text, sizeof(text), "0x%08lX", static_cast<unsigned long>(signal));
     return text;
@@ -59,6 +63,14 @@ std::string signalDescription(int signal) {
         }
     }
     return "exception";
+}
+
+std::string crashName(int signal) {
+    return signalName(signal) + " (" + signalDescription(signal) + ")";
+}
+
+std::string programKilledBy(int signal) {
+    return "crashed: " + crashName(signal);
 }
 
 }  // namespace platform

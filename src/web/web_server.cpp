@@ -1,9 +1,7 @@
 #include "web/web_server.h"
 
 #include <cctype>
-#include <cerrno>
 #include <chrono>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -11,6 +9,7 @@
 
 #include "web/exclusive_port.h"
 #include "web/page_assets.h"
+#include "web/socket_error.h"
 
 namespace robottestingframework {
 namespace web {
@@ -166,18 +165,19 @@ bool WebServer::start(const std::string& host, unsigned int port, std::string& e
             });
     });
 
-    errno = 0;
+    clearSocketError();
     if (port == 0) {
         int bound = server.bind_to_any_port(host);
         if (bound <= 0) {
-            error = std::string("cannot listen on ") + host + ": " + std::strerror(errno);
+            error = std::string("cannot listen on ") + host + ": " +
+                    socketError("the address is not available");
             return false;
         }
         port_ = static_cast<unsigned int>(bound);
     } else {
         if (!server.bind_to_port(host, static_cast<int>(port))) {
             error = "cannot listen on " + host + ":" + std::to_string(port) + ": " +
-                    (errno != 0 ? std::strerror(errno) : "the address is not available");
+                    socketError("the address is not available");
             return false;
         }
         port_ = port;

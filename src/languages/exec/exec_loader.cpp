@@ -198,8 +198,7 @@ public:
         reporter.summarize();
         std::string status = "exited with status " + std::to_string(outcome.exitStatus);
         if (outcome.signal != 0) {
-            TestMessage crash("killed by " + platform::signalName(outcome.signal), lastLine(err),
-                              path_, 0);
+            TestMessage crash(platform::programKilledBy(outcome.signal), lastLine(err), path_, 0);
             if (getResult()) {
                 getResult()->addCrash(this, crash);  // the state: crashed
             }

@@ -180,8 +180,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
         if (ending.signaled) {
             const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
             relay.add(Kind::Crash,
-                      TestMessage("crashed" + in + ": " + platform::signalName(ending.signal) +
-                                      " (" + platform::signalDescription(ending.signal) + ")",
+                      TestMessage("crashed" + in + ": " + platform::crashName(ending.signal),
                                   said(relay)));
         } else {
             const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();

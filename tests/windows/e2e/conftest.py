@@ -1,9 +1,10 @@
-"""The Windows end-to-end tests: the Windows runner (robottestingframework-testrunner.exe) run
-under Wine on real suite files, from the suite's folder with relative paths; its reports are
+"""The Windows end-to-end tests: the installed Windows runner (robottestingframework-testrunner.exe
+in e2e-installed/bin of the build tree, with the worker, DLLs and Lua module installed beside it)
+run under Wine on real suite files, from the suite's folder with relative paths; its reports are
 read back here, on Linux, with the checkers the Linux end-to-end tests use (xmllint with the
 project's JUnit schema; tap-parser and CTRF's JSON schema from the build tree's node-tools).
-Environment (tests/windows/CMakeLists.txt): RTF_TESTRUNNER, RTF_TEST_PLUGIN_DIR, RTF_WINE,
-RTF_SOURCE_DIR, RTF_BUILD_DIR, WINEPREFIX."""
+Environment (tests/windows/CMakeLists.txt): RTF_TESTRUNNER, RTF_INSTALL_PREFIX,
+RTF_TEST_PLUGIN_DIR, RTF_WINE, RTF_SOURCE_DIR, RTF_BUILD_DIR, WINEPREFIX."""
 import json
 import os
 import signal
@@ -36,10 +37,11 @@ def windows_path(path):
     return "Z:" + str(Path(path).resolve()).replace("/", "\\")
 
 
-def run_runner(*args, cwd, env=None, timeout=120):
-    """The Windows runner under Wine with `args`, in `cwd`; Wine's own chatter is off."""
+def run_runner(*args, cwd, env=None, timeout=120, runner=RUNNER):
+    """The Windows runner (the installed one unless `runner` says) under Wine with `args`, in
+    `cwd`; Wine's own chatter is off."""
     full_env = {**os.environ, "WINEDEBUG": "-all", **(env or {})}
-    proc = subprocess.run([WINE, str(RUNNER), *map(str, args)], cwd=cwd, env=full_env,
+    proc = subprocess.run([WINE, str(runner), *map(str, args)], cwd=cwd, env=full_env,
                           capture_output=True, text=True, timeout=timeout,
                           stdin=subprocess.DEVNULL)
     return Run(proc)

@@ -48,3 +48,17 @@ def test_exe_and_bat_print_tap_that_becomes_checks(tmp_path, isolation):
     text = (suites / "r.txt").read_text()
     # The TAP points became checks: the passing ones are listed too.
     assert "the batch file ran" in text and "second" in text, text
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_crashing_program_is_named_as_a_crashing_worker(tmp_path, isolation):
+    # The same words as a C++ plug-in's crash in a worker (test_windows_isolation.py).
+    copy_plugins(tmp_path, "tap_printer.exe")
+    run = run_runner("-t", "tap_printer.exe", "-p", "first crash", "--isolation", isolation,
+                     "-o", "junit:r.xml", cwd=tmp_path, timeout=180)
+    assert run.returncode == 1, run
+    validate_junit(tmp_path / "r.xml")
+    error = ET.parse(tmp_path / "r.xml").getroot().find(".//testcase/error")
+    assert error is not None and error.get("type") == "crash", run
+    assert error.get("message") == "crashed: 0xC0000005 (access violation)", error.attrib
+    assert "killed by" not in run.output, run

@@ -143,3 +143,26 @@ def test_ctrl_c_stops_the_run_with_reports_written(tmp_path):
     assert "1 passed, 2 failed" in out and "2 interrupted" in out, (out, err)
     validate_junit(tmp_path / "r.xml")
     assert "interrupted" in (tmp_path / "r.xml").read_text()
+
+
+def test_abort_is_named_sigabrt_as_on_posix(tmp_path):
+    # MinGW's abort() ends a program with status 3, as exit(3) does (exit3.dll, next door): the
+    # worker tells the two apart, and the reports name the abort as POSIX does.
+    copy_plugins(tmp_path, "crash_abort.dll", "exit3.dll")
+    run = run_runner("-t", "crash_abort.dll", "-t", "exit3.dll", "-o", "junit:r.xml",
+                     "-o", "text:r.txt", cwd=tmp_path)
+    assert run.returncode == 1, run
+    assert "crashed: SIGABRT (aborted)" in run.stdout, run
+    validate_junit(tmp_path / "r.xml")
+    cases = junit_cases(tmp_path / "r.xml")
+    state, problem = cases["crash_abort.dll"]
+    assert (state, problem.get("type")) == ("error", "crash"), (state, problem.attrib)
+    # The message is the short name; the details keep the whole reason.
+    assert problem.get("message") == "SIGABRT", problem.attrib
+    assert "crashed: SIGABRT (aborted)" in problem.text, problem.text
+    # What it said before it aborted is kept, as for any crash.
+    assert "about to abort" in (tmp_path / "r.txt").read_text()
+    state, problem = cases["exit3.dll"]
+    assert "exited with status 3 before the test ended" in problem.get("message", ""), (
+        problem.attrib)
+    assert "SIGABRT" not in problem.get("message", ""), problem.attrib

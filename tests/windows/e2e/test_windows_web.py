@@ -176,4 +176,7 @@ def test_a_port_in_use_exits_2_naming_it(tmp_path):
                          "-t", "t.lua", cwd=tmp_path)
     assert run.returncode == 2, run
     assert f"--web-port {port}: cannot listen on 127.0.0.1:{port}" in run.stderr, run
+    # Winsock's error (WSAGetLastError), not errno, which Winsock never sets.
+    assert f"127.0.0.1:{port}: the port is in use by another program (Winsock error 10048)" in (
+        run.stderr), run
     assert "1 passed" not in run.stdout, run
