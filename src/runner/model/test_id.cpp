@@ -109,10 +109,15 @@ void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
         }
         // A second test of the same id: "[2]", the next free number, in document order.
         if (!taken.insert(test.id).second) {
-            const std::string base = test.id;
-            unsigned int& k = nextNumber.emplace(base, 2).first->second;
+            // Looked up before it is added: emplace would build (and drop) a node each time.
+            auto next = nextNumber.find(test.id);
+            if (next == nextNumber.end()) {
+                next = nextNumber.emplace(test.id, 2).first;
+            }
+            const std::string& base = next->first;
+            unsigned int& k = next->second;
             do {
-                test.id = base + "[" + std::to_string(k++) + "]";
+                test.id.assign(base).append("[").append(std::to_string(k++)).append("]");
             } while (!taken.insert(test.id).second);
         }
     }
