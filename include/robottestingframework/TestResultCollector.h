@@ -4,8 +4,10 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <robottestingframework/ResultEvent.h>
@@ -14,14 +16,54 @@
 
 namespace robottestingframework {
 
+struct TestRecord;
+
+// One measurement of a test as the records keep it: issue 22's 10 000 tests of three
+// measurements keep 30 000 of these, so it holds no text of its own (its name and unit are the
+// collector's one copy of that pair, shared by every measurement naming it) and no event.
+struct MeasurementRecord {
+    struct Label {
+        std::string name;
+        std::string unit;
+    };
+    std::shared_ptr<const Label> label;  // never null in a collector's records
+    double value = 0;
+    double low = 0;               // when hasLow
+    double high = 0;              // when hasHigh
+    double time = 0;              // seconds since the collector started, when it was received
+    unsigned int repetition = 0;  // as ResultEvent::repetition
+    std::uint32_t position = 0;   // how many of its test's kept events came before it
+    bool hasLow = false;
+    bool hasHigh = false;
+    bool passed = true;  // within its limits
+
+    const std::string& name() const;
+    const std::string& unit() const;
+    Measurement measurement() const;
+    // The Measurement event it was, about `test` (the message describeMeasurement's).
+    ResultEvent event(const TestRecord& test) const;
+};
+
+// Hands out one label per distinct (name, unit): what the records' measurements share.
+class MeasurementLabels {
+public:
+    std::shared_ptr<const MeasurementRecord::Label> intern(const std::string& name,
+                                                           const std::string& unit);
+    void clear() { labels_.clear(); }
+
+private:
+    std::map<std::pair<std::string, std::string>, std::shared_ptr<const MeasurementRecord::Label>>
+        labels_;
+};
+
 // One failed attempt of a test that ran again (--retries).
 struct TestAttempt {
     TestStatus status = TestStatus::Failed;
     TestMessage message;  // what decided its state, if anything did
     std::string output;   // what it printed
     double duration = 0;  // seconds
-    // Its measurement events: the HTML report plots a measurement across attempts.
-    std::vector<ResultEvent> measurements;
+    // Its measurements: the HTML report plots a measurement across attempts.
+    std::vector<MeasurementRecord> measurements;
 };
 
 // One repetition of a test that runs several times (repetition="N"); its id is
@@ -41,10 +83,12 @@ struct TestRecord {
     std::string name;      // the name it gives itself, shown beside the key
     std::string description;
     TestStatus status = TestStatus::Passed;
-    double start = 0;                 // seconds since the collector started
-    double duration = 0;              // seconds
-    std::vector<ResultEvent> events;  // its reports, checks, failures, errors, ... in order
-    std::string output;               // what it printed
+    double start = 0;     // seconds since the collector started
+    double duration = 0;  // seconds
+    // Its reports, checks, failures, errors, ... in order; its measurements are kept apart.
+    std::vector<ResultEvent> events;
+    std::vector<MeasurementRecord> measurements;  // in order, each knowing its place in events
+    std::string output;                           // what it printed
     // The earlier failed attempts, oldest first, when the test ran again (--retries); the
     // state, events and output above are the last attempt's, start and duration all of them.
     std::vector<TestAttempt> attempts;
@@ -58,6 +102,12 @@ struct TestRecord {
         return key.empty() || name == key || (!name.empty() && name[0] == '/') ? std::string()
                                                                                : name;
     }
+    // Its events in arrival order with its measurements among them as Measurement events:
+    // `events` itself when it measured nothing, else `scratch` filled with them.
+    const std::vector<ResultEvent>& eventsInOrder(std::vector<ResultEvent>& scratch) const;
+    // `measured` (its own or an attempt's) as Measurement events, in order.
+    std::vector<ResultEvent> measurementEvents(
+        const std::vector<MeasurementRecord>& measured) const;
     // The message that decided the state (first failure, error, crash, ...), if any.
     const ResultEvent* reason() const;
 };
@@ -149,8 +199,7 @@ public:
     void addAttachment(const Test* test, const Attachment& attachment) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
     // Hands the event to the named handlers (a subclass may override them, as in RTF 2.x), with
-    // the time it happened and what it carries at hand: a measurement or attachment the event
-    // carries is shared, not made again.
+    // the time it happened at hand.
     void onEvent(const RunEvent& event) override;
 
 private:
@@ -168,9 +217,10 @@ private:
     double now() const;
     // Keeps one event of `test` where it belongs (its record, else the open suite's), copying
     // only what it keeps: a passed check it does not keep is dropped unseen. `measurement` and
-    // `attachment`: what the event carries, if anything.
+    // `attachment`: what the event carries, if anything. A test's measurement goes to its
+    // record as a MeasurementRecord (the event log and a suite keep the event).
     void record(ResultEvent::Kind kind, const Test* test, TestMessage&& msg, bool passed = true,
-                std::shared_ptr<const Measurement> measurement = nullptr,
+                const Measurement* measurement = nullptr,
                 std::shared_ptr<const Attachment> attachment = nullptr);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
@@ -179,8 +229,9 @@ private:
 
     std::chrono::steady_clock::time_point origin_;
     // The event onEvent is handing to the named handlers, while it does (else null): when it
-    // happened, and the measurement or attachment it carries, shared rather than copied.
+    // happened.
     const RunEvent* delivering_ = nullptr;
+    MeasurementLabels labels_;  // the names and units of the records' measurements
     std::chrono::system_clock::time_point wallOrigin_;
     double start_ = 0;
     double end_ = -1;

@@ -1,6 +1,8 @@
 #include <robottestingframework/TestResultCollector.h>
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include <robottestingframework/RunEvent.h>
 #include <robottestingframework/Test.h>
@@ -26,6 +28,83 @@ ResultEvent makeEvent(Kind kind, const Test* test, TestMessage msg, bool passed,
 }
 
 }  // namespace
+
+const std::string& MeasurementRecord::name() const {
+    return label->name;
+}
+
+const std::string& MeasurementRecord::unit() const {
+    return label->unit;
+}
+
+Measurement MeasurementRecord::measurement() const {
+    Measurement measured;
+    measured.name = name();
+    measured.value = value;
+    measured.unit = unit();
+    if (hasLow) {
+        measured.low = low;
+    }
+    if (hasHigh) {
+        measured.high = high;
+    }
+    return measured;
+}
+
+ResultEvent MeasurementRecord::event(const TestRecord& test) const {
+    ResultEvent made;
+    made.kind = Kind::Measurement;
+    made.testName = test.name;
+    made.testId = test.id;
+    auto measured = std::make_shared<const Measurement>(measurement());
+    made.message = TestMessage(describeMeasurement(*measured));
+    made.measurement = std::move(measured);
+    made.passed = passed;
+    made.time = time;
+    made.repetition = repetition;
+    return made;
+}
+
+std::shared_ptr<const MeasurementRecord::Label> MeasurementLabels::intern(const std::string& name,
+                                                                          const std::string& unit) {
+    auto key = std::make_pair(name, unit);
+    auto found = labels_.find(key);
+    if (found == labels_.end()) {
+        auto label =
+            std::make_shared<const MeasurementRecord::Label>(MeasurementRecord::Label{name, unit});
+        found = labels_.emplace(std::move(key), std::move(label)).first;
+    }
+    return found->second;
+}
+
+const std::vector<ResultEvent>& TestRecord::eventsInOrder(std::vector<ResultEvent>& scratch) const {
+    if (measurements.empty()) {
+        return events;
+    }
+    scratch.clear();
+    scratch.reserve(events.size() + measurements.size());
+    std::size_t next = 0;
+    for (const MeasurementRecord& measured : measurements) {
+        while (next < events.size() && next < measured.position) {
+            scratch.push_back(events[next++]);
+        }
+        scratch.push_back(measured.event(*this));
+    }
+    while (next < events.size()) {
+        scratch.push_back(events[next++]);
+    }
+    return scratch;
+}
+
+std::vector<ResultEvent> TestRecord::measurementEvents(
+    const std::vector<MeasurementRecord>& measured) const {
+    std::vector<ResultEvent> made;
+    made.reserve(measured.size());
+    for (const MeasurementRecord& one : measured) {
+        made.push_back(one.event(*this));
+    }
+    return made;
+}
 
 const ResultEvent* TestRecord::reason() const {
     if (status == TestStatus::Passed) {
@@ -59,6 +138,7 @@ void TestResultCollector::reset() {
     end_ = -1;
     events_.clear();
     suites_.clear();
+    labels_.clear();
     openSuites_.clear();
     openTests_.clear();
     lastEnded_ = {0, nullptr, none, none};
@@ -161,7 +241,7 @@ void TestResultCollector::onEvent(const RunEvent& event) {
 }
 
 void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg, bool passed,
-                                 std::shared_ptr<const Measurement> measurement,
+                                 const Measurement* measurement,
                                  std::shared_ptr<const Attachment> attachment) {
     // A test's own event goes to its record (and its repetition); anything else open (a
     // fixture's report from a watcher thread, a collapse) belongs to the suite.
@@ -171,8 +251,34 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg,
     if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
         return;  // most events of a passing test are checks: nothing of them is copied
     }
+    if (owner != nullptr && measurement != nullptr) {
+        // Measurements leave the test's state as it is (one outside its limits is followed
+        // by the failure that says so).
+        MeasurementRecord measured;
+        measured.label = labels_.intern(measurement->name, measurement->unit);
+        measured.value = measurement->value;
+        measured.hasLow = measurement->low.has_value();
+        measured.low = measurement->low.value_or(0);
+        measured.hasHigh = measurement->high.has_value();
+        measured.high = measurement->high.value_or(0);
+        measured.time = now();
+        measured.repetition = open->repetition;
+        measured.position = static_cast<std::uint32_t>(owner->events.size());
+        measured.passed = passed;
+        owner->measurements.push_back(std::move(measured));
+        if (!logged) {
+            return;
+        }
+        ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
+        event.measurement = std::make_shared<const Measurement>(*measurement);
+        event.repetition = open->repetition;
+        events_.push_back(std::move(event));
+        return;
+    }
     ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
-    event.measurement = std::move(measurement);
+    if (measurement != nullptr) {
+        event.measurement = std::make_shared<const Measurement>(*measurement);
+    }
     event.attachment = std::move(attachment);
     if (owner != nullptr) {
         event.repetition = open->repetition;
@@ -239,33 +345,25 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
 }
 
 void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
-    record(event.kind, test, TestMessage(event.message), event.passed, event.measurement,
+    record(event.kind, test, TestMessage(event.message), event.passed, event.measurement.get(),
            event.attachment);
 }
 
 void TestResultCollector::addMeasurement(const Test* test, const Measurement& measurement,
                                          bool passed) {
-    // The event being delivered carries this very measurement: shared (10 000 tests of three
-    // measurements keep one object each, not two). A subclass's own: copied.
-    std::shared_ptr<const Measurement> kept;
-    if (delivering_ != nullptr && delivering_->data.measurement.get() == &measurement) {
-        kept = delivering_->data.measurement;
-    } else {
-        kept = std::make_shared<const Measurement>(measurement);
-    }
-    record(Kind::Measurement, test, TestMessage(describeMeasurement(measurement)), passed,
-           std::move(kept));
+    // The message is made only if an event is kept (a suite's, or the event log's): a test's
+    // record keeps a MeasurementRecord, which describes itself when a report asks.
+    const OpenTest* open = findOpen(test);
+    const bool eventKept = open == nullptr || (keepEvents_ && keepLog_);
+    record(Kind::Measurement, test,
+           eventKept ? TestMessage(describeMeasurement(measurement)) : TestMessage(), passed,
+           &measurement);
 }
 
 void TestResultCollector::addAttachment(const Test* test, const Attachment& attachment) {
-    std::shared_ptr<const Attachment> kept;
-    if (delivering_ != nullptr && delivering_->data.attachment.get() == &attachment) {
-        kept = delivering_->data.attachment;
-    } else {
-        kept = std::make_shared<const Attachment>(attachment);
-    }
+    // Few (a test's files, a fixture's logs): each record keeps its own copy.
     record(Kind::Attachment, test, TestMessage(describeAttachment(attachment)), true, nullptr,
-           std::move(kept));
+           std::make_shared<const Attachment>(attachment));
 }
 
 void TestResultCollector::renameTest(const Test* test, const std::string& name) {
@@ -322,14 +420,11 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
     }
     attempt.output = std::move(record.output);
     attempt.duration = record.duration;
-    for (ResultEvent& event : record.events) {
-        if (event.kind == Kind::Measurement) {
-            attempt.measurements.push_back(std::move(event));
-        }
-    }
+    attempt.measurements = std::move(record.measurements);
     record.attempts.push_back(std::move(attempt));
     record.status = TestStatus::Passed;
     record.events.clear();
+    record.measurements.clear();
     record.output.clear();
     record.repetitions.clear();
     retrying_ = lastEnded_;

@@ -200,7 +200,8 @@ void ConsoleListener::endTest(const Test* test) {
     if (verbose_) {
         return;  // its messages were printed as they came
     }
-    for (const ResultEvent& event : record.events) {
+    std::vector<ResultEvent> scratch;  // its measurements among its events
+    for (const ResultEvent& event : record.eventsInOrder(scratch)) {
         if (event.kind == Kind::Report || (event.kind == Kind::Check && !showChecks_)) {
             continue;
         }

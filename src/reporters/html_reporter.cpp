@@ -116,6 +116,9 @@ void appendMeasurementsAndAttachments(std::string& out, const std::vector<Result
 // One test's data. The page's per-test sections (report.js: testSections) read it; a part of
 // the report that adds a section adds its fields here.
 std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& suite) const {
+    // Its measurements among its events, as events: what this format lists.
+    std::vector<ResultEvent> scratch;
+    const std::vector<ResultEvent>& events = test.eventsInOrder(scratch);
     std::string out = "{\"id\":" + std::to_string(test.id);
     // The name is its id in its suite; "shown" the name it gave itself, beside it.
     const std::string& name = test.reportName();
@@ -164,7 +167,7 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
     }
     out += ",\"messages\":[";
     bool firstMessage = true;
-    for (const ResultEvent& event : test.events) {
+    for (const ResultEvent& event : events) {
         if (!settings_.passedChecks && event.kind == Kind::Check && event.passed) {
             continue;
         }
@@ -175,7 +178,7 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
         firstMessage = false;
     }
     out += "]";
-    appendMeasurementsAndAttachments(out, test.events);
+    appendMeasurementsAndAttachments(out, events);
     if (!test.attempts.empty()) {
         out += ",\"attempts\":[";
         for (std::size_t i = 0; i < test.attempts.size(); ++i) {
@@ -184,7 +187,7 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
                    "{\"state\":" + jsonString(toString(attempt.status)) +
                    ",\"duration\":" + number(attempt.duration) +
                    ",\"message\":" + jsonString(messageText(attempt.message));
-            appendMeasurementsAndAttachments(out, attempt.measurements);
+            appendMeasurementsAndAttachments(out, test.measurementEvents(attempt.measurements));
             out += "}";
         }
         out += "]";

@@ -130,6 +130,9 @@ std::string measurementsOf(const std::vector<ResultEvent>& events) {
 // carried in this run.
 void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suite,
                 const std::string& testId, long long origin, bool passedChecks) {
+    // Its measurements among its events, as events: what this format lists.
+    std::vector<ResultEvent> scratch;
+    const std::vector<ResultEvent>& events = test.eventsInOrder(scratch);
     const long long start = origin + milliseconds(test.start);
     out += "{\"testId\":\"" + testId + "\"";
     out += ",\"executionId\":\"" + std::to_string(test.id) + "\"";
@@ -147,7 +150,7 @@ void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suit
     }
     if (const ResultEvent* reason = test.reason()) {
         out += ",\"message\":" + jsonString(reason->message.toString());
-        const std::string trace = traceText(test.events);
+        const std::string trace = traceText(events);
         if (!trace.empty()) {
             out += ",\"trace\":" + jsonString(trace);
         }
@@ -179,7 +182,7 @@ void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suit
         }
         out += "]";
     }
-    const std::string attachments = attachmentsOf(test.events);
+    const std::string attachments = attachmentsOf(events);
     if (!attachments.empty()) {
         out += ",\"attachments\":[" + attachments + "]";
     }
@@ -212,7 +215,7 @@ void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suit
                 ",\"count\":" + std::to_string(repetition.count) +
                 ",\"state\":" + jsonString(toString(repetition.status)) +
                 ",\"duration\":" + std::to_string(milliseconds(repetition.duration));
-            for (const ResultEvent& event : test.events) {
+            for (const ResultEvent& event : events) {
                 if (event.repetition == repetition.index &&
                     stateOf(event.kind) != TestStatus::Passed &&
                     stateOf(event.kind) == repetition.status) {
@@ -231,12 +234,12 @@ void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suit
             out += ",\"timeout\":" + jsonString(reason->message.toString());
         }
     }
-    const std::string measurements = measurementsOf(test.events);
+    const std::string measurements = measurementsOf(events);
     if (!measurements.empty()) {
         out += ",\"measurements\":[" + measurements + "]";
     }
     // Every report and check, whatever -v said, each with its time (ms since the epoch).
-    out += ",\"reports\":" + messageList(test.events, origin, passedChecks, false);
+    out += ",\"reports\":" + messageList(events, origin, passedChecks, false);
     out += "}}}";
 }
 

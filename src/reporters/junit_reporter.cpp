@@ -190,6 +190,9 @@ void appendAttempt(std::string& inner, const char* element, const TestAttempt& a
 
 void appendTestCase(ReportText& out, const TestRecord& test, const std::string& suiteName,
                     bool passedChecks) {
+    // Its measurements among its events, as events: what this format lists.
+    std::vector<ResultEvent> scratch;
+    const std::vector<ResultEvent>& events = test.eventsInOrder(scratch);
     out += "    <testcase";
     // classname/name is the test's id (README: "Test ids"), so CI history follows a test
     // across workspaces; the name it gave itself is a property of the suite ("rtf.name.S.T":
@@ -208,7 +211,7 @@ void appendTestCase(ReportText& out, const TestRecord& test, const std::string& 
         const std::string summary =
             test.status == TestStatus::Crashed ? crashSignal(message) : message;
         inner += std::string("      <") + problem.element + attr("message", summary) +
-                 attr("type", problem.type) + ">" + escape(problems(test.events), false) + "</" +
+                 attr("type", problem.type) + ">" + escape(problems(events), false) + "</" +
                  problem.element + ">\n";
     }
     // Earlier failed attempts follow the final one, as Surefire orders them: <flakyFailure> when
@@ -222,7 +225,7 @@ void appendTestCase(ReportText& out, const TestRecord& test, const std::string& 
             appendAttempt(inner, element, attempt);
         }
     }
-    const std::string output = systemOut(test.events, test.output, passedChecks);
+    const std::string output = systemOut(events, test.output, passedChecks);
     if (!output.empty()) {
         inner += "      <system-out>" + escape(output, false) + "</system-out>\n";
     }

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,8 +28,14 @@ public:
     std::size_t size() const { return size_; }
     // Drops what came after the first `size` bytes (a point taken back).
     void truncate(std::size_t size);
-    // The text with its indentation.
-    void writeTo(ReportText& out) const;
+    // Marks the end of the text so far (a line's end) as the place of lines the writer gives
+    // only when the text is written: TAP writes a test's measurements there from the
+    // collector's records rather than holding their YAML for the whole run.
+    void markLines(std::uint64_t id);
+    // Gives, into `text`, the lines of a mark (unindented, each ending in a newline).
+    using MarkWriter = std::function<void(std::uint64_t id, std::string& text)>;
+    // The text with its indentation; each mark's lines from `marks` (none without).
+    void writeTo(ReportText& out, const MarkWriter& marks = nullptr) const;
     std::string str() const;
 
     // A piece stops growing at this size: the next text starts a new one.
@@ -38,7 +46,13 @@ private:
         unsigned int depth = 0;
         std::string text;
     };
+    // Lines written at `at` bytes (indentation not counted), in order.
+    struct Mark {
+        std::size_t at;
+        std::uint64_t id;
+    };
     std::vector<Piece> pieces_;
+    std::vector<Mark> marks_;
     std::size_t size_ = 0;
 };
 

@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
+#include <unordered_map>
 #include <utility>
+#include <vector>
 
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
@@ -74,15 +77,14 @@ std::string messageLines(const std::vector<std::string>& messages) {
     return text;
 }
 
-// YAML diagnostics for a failed point; strings as JSON literals, which YAML reads as they are.
-// The measurements and attachments of a test as YAML (empty without any).
-std::string records(const std::string& measurements, const std::string& attachments) {
-    return (measurements.empty() ? std::string() : "  measurements:\n" + measurements) +
-           (attachments.empty() ? std::string() : "  attachments:\n" + attachments);
+// The attachments of a test or suite as YAML (empty without any).
+std::string attachmentLines(const std::string& attachments) {
+    return attachments.empty() ? std::string() : "  attachments:\n" + attachments;
 }
 
-std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output,
-                        const std::string& extra = std::string()) {
+// YAML diagnostics for a failed point, up to its end ("  ...", which follows what else the
+// point says); strings as JSON literals, which YAML reads as they are.
+std::string diagnostics(TestStatus status, const TestMessage& reason, const std::string& output) {
     std::string text = "  ---\n";
     text += "  message: " + jsonString(reason.getMessage()) + "\n";
     text += std::string("  severity: ") + severity(status) + "\n";
@@ -96,9 +98,23 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     if (!output.empty()) {
         text += "  output: " + jsonString(output) + "\n";
     }
-    text += extra;
-    text += "  ...\n";
     return text;
+}
+
+// A test's measurements as the YAML list items of its point.
+void measurementLines(const std::vector<MeasurementRecord>& measurements, std::string& text) {
+    for (const MeasurementRecord& measured : measurements) {
+        text += "    - name: " + jsonString(measured.name()) +
+                "\n      value: " + formatNumber(measured.value) +
+                "\n      unit: " + jsonString(measured.unit()) + "\n";
+        if (measured.hasLow) {
+            text += "      low: " + formatNumber(measured.low) + "\n";
+        }
+        if (measured.hasHigh) {
+            text += "      high: " + formatNumber(measured.high) + "\n";
+        }
+        text += std::string("      passed: ") + (measured.passed ? "true" : "false") + "\n";
+    }
 }
 
 }  // namespace
@@ -107,29 +123,41 @@ void TapReporter::closeTest(std::vector<Block>& blocks, const OpenTest& test) {
     Block& block = blocks.back();
     const std::string number = std::to_string(++block.points);
     const std::string name = description(test.name.empty() ? "unnamed test" : test.name);
-    const std::string extra =
-        messageLines(test.messages) + records(test.measurements, test.attachments);
+    const bool extra = !test.messages.empty() || test.measurements > 0 || !test.attachments.empty();
+    // The point and its YAML up to where its measurements go: they are written from the
+    // collector's records with the file (a mark here), not held as text for the whole run.
+    std::string head;
+    bool yaml = true;
     if (test.status == TestStatus::Passed && test.retries > 0) {
         // Flaky: passed on a later attempt. TAP has no such directive; the YAML says it.
-        block.body += "ok " + number + " - " + name +
-                      "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) + "\n" +
-                      extra + "  ...\n";
-        return;
-    }
-    if (!isFailure(test.status)) {
-        block.body += "ok " + number + " - " + name;
+        head = "ok " + number + " - " + name +
+               "\n  ---\n  flaky: true\n  retries: " + std::to_string(test.retries) + "\n";
+    } else if (!isFailure(test.status)) {
+        head = "ok " + number + " - " + name;
         if (test.status == TestStatus::Skipped) {
-            block.body += " # SKIP " + oneLine(test.reason.toString());
+            head += " # SKIP " + oneLine(test.reason.toString());
         }
-        block.body += "\n";
-        if (!extra.empty()) {
-            block.body += "  ---\n" + extra + "  ...\n";
+        head += "\n";
+        yaml = extra;
+        if (yaml) {
+            head += "  ---\n";
         }
-        return;
+    } else {
+        block.failed = true;
+        head = "not ok " + number + " - " + name + "\n" +
+               diagnostics(test.status, test.reason, test.output);
     }
-    block.failed = true;
-    block.body += "not ok " + number + " - " + name + "\n" +
-                  diagnostics(test.status, test.reason, test.output, extra);
+    head += messageLines(test.messages);
+    if (test.measurements > 0) {
+        head += "  measurements:\n";
+    }
+    block.body += head;
+    if (test.measurements > 0) {
+        block.body.markLines(test.id);
+    }
+    if (yaml) {
+        block.body += attachmentLines(test.attachments) + "  ...\n";
+    }
 }
 
 void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts) {
@@ -142,7 +170,7 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     parent.body.appendNested(std::move(suite.body));
     parent.body += "    1.." + std::to_string(suite.points) + "\n";
     const std::string number = std::to_string(++parent.points);
-    const std::string extra = records("", suite.attachments);
+    const std::string extra = attachmentLines(suite.attachments);
     if (suite.fixtureProblems.empty() && !suite.failed) {
         parent.body += "ok " + number + " - " + name + "\n";
         if (!extra.empty()) {
@@ -154,7 +182,7 @@ void TapReporter::closeSuite(std::vector<Block>& blocks, std::vector<std::string
     parent.body += "not ok " + number + " - " + name + "\n";
     if (!suite.fixtureProblems.empty()) {
         const TestMessage& first = suite.fixtureProblems.front();
-        parent.body += diagnostics(TestStatus::Error, first, "", extra);
+        parent.body += diagnostics(TestStatus::Error, first, "") + extra + "  ...\n";
         bailOuts.push_back(oneLine("fixture of " + suite.name + " failed: " + first.toString()));
     } else if (!extra.empty()) {
         parent.body += "  ---\n" + extra + "  ...\n";
@@ -186,7 +214,21 @@ void TapReporter::writeDocument(ReportText& out) {
         bailOuts = &closedBailOuts;
     }
     out += "TAP version 14\n1.." + std::to_string(blocks->front().points) + "\n";
-    blocks->front().body.writeTo(out);
+    // The tests that measured something, by id: their points' marks get their measurements.
+    std::unordered_map<std::uint64_t, const TestRecord*> measured;
+    for (const SuiteRecord& suite : collector_.suites()) {
+        for (const TestRecord& test : suite.tests) {
+            if (!test.measurements.empty()) {
+                measured[test.id] = &test;
+            }
+        }
+    }
+    blocks->front().body.writeTo(out, [&measured](std::uint64_t id, std::string& text) {
+        const auto found = measured.find(id);
+        if (found != measured.end()) {
+            measurementLines(found->second->measurements, text);
+        }
+    });
     // After every result, so none is lost: a consumer stops reading at a bail-out.
     if (!bailOuts->empty()) {
         out += "Bail out! " + bailOuts->front() + "\n";
@@ -330,21 +372,12 @@ TapReporter::OpenTest* TapReporter::openTest(const Test* test) {
     return nullptr;
 }
 
-void TapReporter::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {
-    OpenTest* open = openTest(test);
-    if (open == nullptr) {
-        return;
+void TapReporter::addMeasurement(const Test* test, const Measurement& /*measurement*/,
+                                 bool /*passed*/) {
+    // Counted only: the collector keeps the measurement, and the file is written from it.
+    if (OpenTest* open = openTest(test)) {
+        ++open->measurements;
     }
-    open->measurements += "    - name: " + jsonString(measurement.name) +
-                          "\n      value: " + formatNumber(measurement.value) +
-                          "\n      unit: " + jsonString(measurement.unit) + "\n";
-    if (measurement.low) {
-        open->measurements += "      low: " + formatNumber(*measurement.low) + "\n";
-    }
-    if (measurement.high) {
-        open->measurements += "      high: " + formatNumber(*measurement.high) + "\n";
-    }
-    open->measurements += std::string("      passed: ") + (passed ? "true" : "false") + "\n";
 }
 
 void TapReporter::addAttachment(const Test* test, const Attachment& attachment) {

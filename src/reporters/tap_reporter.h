@@ -59,8 +59,10 @@ private:
         std::string output;
         std::size_t retries = 0;            // earlier failed attempts (--retries)
         std::vector<std::string> messages;  // its reports and checks, "[time] kind: text"
-        // The YAML list items of its measurements and attachments, written with its point.
-        std::string measurements;
+        // How many measurements it gave: the collector keeps them, and the file is written
+        // from its records (issue 22: 10 000 tests held their YAML until the end).
+        std::size_t measurements = 0;
+        // The YAML list items of its attachments, written with its point.
         std::string attachments;
     };
     OpenTest* openTest(const Test* test);

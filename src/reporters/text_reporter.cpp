@@ -78,7 +78,8 @@ void TextReporter::writeDocument(ReportText& text) {
             std::snprintf(word, sizeof(word), "%-11s", statusWord(test.status));
             out += "  " + std::string(word) + " " + shownAs(test.key, test.name) + "  (" +
                    seconds(test.duration) + ")\n";
-            appendEvents(out, test.events, settings_, "      ");
+            std::vector<ResultEvent> scratch;  // its measurements among its events
+            appendEvents(out, test.eventsInOrder(scratch), settings_, "      ");
             if (settings_.reports) {
                 appendOutput(out, test.output, "      ");
             }

@@ -1,5 +1,6 @@
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -617,26 +618,109 @@ public:
 
 }  // namespace
 
-TEST(TestResultCollector, KeepsTheMeasurementAnEventCarriesInsteadOfACopy) {
+TEST(TestResultCollector, KeepsAMeasurementAsACompactRecordWithItsPlaceAmongTheEvents) {
     TestResultCollector c;
     TestResult result;
     result.addListener(&c);
     Named t("measuring");
     result.startTest(&t);
+    result.addReport(&t, TestMessage("before"));
     RunEvent event;
     event.test = &t;
     event.data.kind = ResultEvent::Kind::Measurement;
-    event.data.measurement = std::make_shared<const Measurement>(Measurement{"rate", 99.5, "Hz"});
+    Measurement rate{"rate", 99.5, "Hz"};
+    rate.low = 90;
+    event.data.measurement = std::make_shared<const Measurement>(rate);
     event.data.message = TestMessage(describeMeasurement(*event.data.measurement));
     result.publish(event);
+    result.addReport(&t, TestMessage("after"));
     result.endTest(&t);
     ASSERT_EQ(c.suites().size(), 1u);
-    const std::vector<ResultEvent>& events = c.suites()[0].tests.at(0).events;
-    ASSERT_EQ(events.size(), 1u);
-    // Shared with the event (10 000 tests of 3 measurements: one object each, not two).
-    EXPECT_EQ(events[0].measurement.get(), event.data.measurement.get());
-    EXPECT_EQ(events[0].message.getMessage(), "rate = 99.5 Hz");
-    EXPECT_TRUE(events[0].passed);
+    const TestRecord& test = c.suites()[0].tests.at(0);
+    // Not an event of its own in the record (10 000 tests of 3 measurements): a record.
+    ASSERT_EQ(test.events.size(), 2u);
+    ASSERT_EQ(test.measurements.size(), 1u);
+    EXPECT_EQ(test.measurements[0].name(), "rate");
+    EXPECT_EQ(test.measurements[0].value, 99.5);
+    EXPECT_TRUE(test.measurements[0].hasLow);
+    EXPECT_FALSE(test.measurements[0].hasHigh);
+    // The reports still list it where it came, as the event it was.
+    std::vector<ResultEvent> scratch;
+    const std::vector<ResultEvent>& events = test.eventsInOrder(scratch);
+    ASSERT_EQ(events.size(), 3u);
+    EXPECT_EQ(events[0].message.getMessage(), "before");
+    EXPECT_EQ(events[1].kind, ResultEvent::Kind::Measurement);
+    EXPECT_EQ(events[1].message.getMessage(), "rate = 99.5 Hz (limits [>= 90] Hz)");
+    ASSERT_TRUE(events[1].measurement);
+    EXPECT_EQ(events[1].measurement->low, std::optional<double>(90));
+    EXPECT_FALSE(events[1].measurement->high);
+    EXPECT_TRUE(events[1].passed);
+    EXPECT_EQ(events[2].message.getMessage(), "after");
+}
+
+TEST(TestResultCollector, MeasurementsOfOneNameAndUnitShareOneLabelAndKeepTheirNumbers) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named first("first");
+    Named second("second");
+    Measurement error{"tracking error", 0.1, "rad"};
+    error.low = -0.25;
+    error.high = 1e-07;
+    const double values[] = {0.1, 1.0 / 3.0, -2.5e-300};
+    for (const Named* test : {&first, &second}) {
+        result.startTest(test);
+        for (double value : values) {
+            error.value = value;
+            result.addMeasurement(test, error, error.withinLimits());
+        }
+        result.addMeasurement(test, Measurement{"rate", 100, "Hz"}, true);
+        result.endTest(test);
+    }
+    const TestRecord& a = c.suites().at(0).tests.at(0);
+    const TestRecord& b = c.suites().at(0).tests.at(1);
+    ASSERT_EQ(a.measurements.size(), 4u);
+    ASSERT_EQ(b.measurements.size(), 4u);
+    // One text per (name, unit) for the whole run, not one per measurement.
+    EXPECT_EQ(a.measurements[0].label, a.measurements[1].label);
+    EXPECT_EQ(a.measurements[0].label, b.measurements[2].label);
+    EXPECT_EQ(a.measurements[3].label, b.measurements[3].label);
+    EXPECT_NE(a.measurements[0].label, a.measurements[3].label);
+    EXPECT_EQ(&a.measurements[0].name(), &b.measurements[1].name());
+    for (std::size_t i = 0; i < 3; ++i) {
+        const Measurement back = b.measurements[i].measurement();
+        EXPECT_EQ(back.name, "tracking error");
+        EXPECT_EQ(back.unit, "rad");
+        EXPECT_EQ(back.value, values[i]);  // exactly: doubles, not text
+        EXPECT_EQ(back.low, std::optional<double>(-0.25));
+        EXPECT_EQ(back.high, std::optional<double>(1e-07));
+        EXPECT_EQ(b.measurements[i].passed, error.low <= values[i] && values[i] <= 1e-07);
+    }
+    const Measurement rate = b.measurements[3].measurement();
+    EXPECT_EQ(rate.value, 100);
+    EXPECT_FALSE(rate.low);
+    EXPECT_FALSE(rate.high);
+}
+
+TEST(TestResultCollector, ARetriedTestKeepsEachAttemptsMeasurementsApart) {
+    TestResultCollector c;
+    TestResult result;
+    result.addListener(&c);
+    Named t("retried");
+    result.startTest(&t);
+    result.addMeasurement(&t, Measurement{"rate", 1, "Hz"}, true);
+    result.addFailure(&t, TestMessage("no"));
+    result.endTest(&t);
+    result.retryTest(&t, TestMessage("attempt 2"));
+    result.startTest(&t);
+    result.addMeasurement(&t, Measurement{"rate", 2, "Hz"}, true);
+    result.endTest(&t);
+    const TestRecord& test = c.suites().at(0).tests.at(0);
+    ASSERT_EQ(test.attempts.size(), 1u);
+    ASSERT_EQ(test.attempts[0].measurements.size(), 1u);
+    EXPECT_EQ(test.attempts[0].measurements[0].value, 1);
+    ASSERT_EQ(test.measurements.size(), 1u);
+    EXPECT_EQ(test.measurements[0].value, 2);
 }
 
 TEST(TestResultCollector, ASubclassStillHearsEachEventThroughItsOwnHandler) {
@@ -736,10 +820,10 @@ TEST(TestResultCollector, KeepsTheMeasurementASubclassGivesNotTheOneTheEventCarr
     event.data.measurement = std::make_shared<const Measurement>(Measurement{"error", 0.5, "m"});
     result.publish(event);
     result.endTest(&t);
-    const std::vector<ResultEvent>& events = c.suites().at(0).tests.at(0).events;
+    std::vector<ResultEvent> scratch;
+    const std::vector<ResultEvent>& events = c.suites().at(0).tests.at(0).eventsInOrder(scratch);
     ASSERT_EQ(events.size(), 1u);
     ASSERT_NE(events[0].measurement, nullptr);
-    EXPECT_NE(events[0].measurement.get(), event.data.measurement.get());
     EXPECT_EQ(events[0].measurement->value, 500);
     EXPECT_EQ(events[0].measurement->unit, "mm");
     EXPECT_EQ(events[0].message.getMessage(), "error = 500 mm");

@@ -83,7 +83,8 @@ Outcome runBody(std::function<void()> body) {
     rtf_test::LambdaTest test("t", std::move(body));
     test.run(result);
     Outcome outcome{{}, collector.suites().at(0).tests.at(0).status};
-    for (const ResultEvent& event : collector.suites().at(0).tests.at(0).events) {
+    std::vector<ResultEvent> scratch;
+    for (const ResultEvent& event : collector.suites().at(0).tests.at(0).eventsInOrder(scratch)) {
         outcome.kinds.push_back(event.kind);
     }
     return outcome;

@@ -1,6 +1,7 @@
 // NestedText: a TAP body whose closed subtests are moved into their parent, indented on output.
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <string>
 
 #include "reporters/nested_text.h"
@@ -62,4 +63,31 @@ TEST(NestedText, TextOverAPieceIsWrittenWholeAndIndented) {
     NestedText outer;
     outer.appendNested(std::move(inner));
     EXPECT_EQ(outer.str(), expected);
+}
+
+TEST(NestedText, AMarksLinesAreWrittenWhereItWasAtTheDepthOfItsBlock) {
+    NestedText inner;
+    inner += "ok 1 - a\n  ---\n  measurements:\n";
+    inner.markLines(7);
+    inner += "  ...\nok 2 - b\n";
+    inner.markLines(8);  // taken back with its point
+    const std::size_t kept = inner.size();
+    inner += "not ok 3 - c\n  measurements:\n";
+    inner.markLines(9);
+    inner.truncate(kept);
+    NestedText outer;
+    outer += "TAP\n";
+    outer.markLines(5);
+    outer.appendNested(std::move(inner));
+    robottestingframework::reporters::WholeReportText text;
+    outer.writeTo(text, [](std::uint64_t id, std::string& lines) {
+        lines += "    - id: " + std::to_string(id) + "\n";
+    });
+    EXPECT_EQ(text.take(),
+              "TAP\n    - id: 5\n"
+              "    ok 1 - a\n      ---\n      measurements:\n        - id: 7\n      ...\n"
+              "    ok 2 - b\n        - id: 8\n");
+    EXPECT_EQ(outer.str(),
+              "TAP\n    ok 1 - a\n      ---\n      measurements:\n      ...\n"
+              "    ok 2 - b\n");
 }

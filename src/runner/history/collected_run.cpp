@@ -21,14 +21,10 @@ void appendCollectedRun(RunAppender& appender, const TestResultCollector& collec
             result.duration = test.duration;
             result.attempts = static_cast<unsigned int>(test.attempts.size() + 1);
             appender.addTest(result);
-            for (const ResultEvent& event : test.events) {
-                if (event.kind != ResultEvent::Kind::Measurement || !event.measurement) {
-                    continue;
-                }
-                const Measurement& measured = *event.measurement;
-                appender.addMeasurement({result.test, measured.name, measured.value, measured.unit,
-                                         measured.low.has_value(), measured.low.value_or(0),
-                                         measured.high.has_value(), measured.high.value_or(0)});
+            for (const MeasurementRecord& measured : test.measurements) {
+                appender.addMeasurement({result.test, measured.name(), measured.value,
+                                         measured.unit(), measured.hasLow, measured.low,
+                                         measured.hasHigh, measured.high});
             }
         }
     }
