@@ -71,7 +71,7 @@ def folders(tmp_path):
     copy_plugins(tmp_path / "programs", "world_actor.exe", "sleeper.exe")
     copy_plugins(tmp_path / "plugins", "passing_test.dll", "child_gone.dll")
     suites = tmp_path / "suites"
-    suites.mkdir()
+    (suites / "out").mkdir(parents=True)
     return suites
 
 
