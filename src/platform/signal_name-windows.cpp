@@ -30,6 +30,7 @@ const ExceptionName kExceptions[] = {
     {0xC0000095UL, "integer overflow"},
     {0xC0000096UL, "privileged instruction"},
     {0xC00000FDUL, "stack overflow"},
+    {0xC0000135UL, "a DLL it needs was not found"},
     {0xC000013AUL, "interrupted by Ctrl-C"},
     {0xC0000374UL, "heap corruption"},
     {0xC0000409UL, "stack buffer overrun (fail fast)"},
