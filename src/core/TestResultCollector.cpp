@@ -96,8 +96,27 @@ const std::vector<ResultEvent>& TestRecord::eventsInOrder(std::vector<ResultEven
     return scratch;
 }
 
-std::vector<ResultEvent> TestRecord::measurementEvents(
-    const std::vector<MeasurementRecord>& measured) const {
+MeasurementList::MeasurementList(const MeasurementList& other)
+    : items_(other.items_ == nullptr
+                 ? nullptr
+                 : std::make_unique<std::vector<MeasurementRecord>>(*other.items_)) {}
+
+MeasurementList& MeasurementList::operator=(const MeasurementList& other) {
+    if (this != &other) {
+        MeasurementList copy(other);
+        items_ = std::move(copy.items_);
+    }
+    return *this;
+}
+
+void MeasurementList::push_back(MeasurementRecord record) {
+    if (items_ == nullptr) {
+        items_ = std::make_unique<std::vector<MeasurementRecord>>();
+    }
+    items_->push_back(std::move(record));
+}
+
+std::vector<ResultEvent> TestRecord::measurementEvents(const MeasurementList& measured) const {
     std::vector<ResultEvent> made;
     made.reserve(measured.size());
     for (const MeasurementRecord& one : measured) {

@@ -102,7 +102,7 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
 }
 
 // A test's measurements as the YAML list items of its point.
-void measurementLines(const std::vector<MeasurementRecord>& measurements, std::string& text) {
+void measurementLines(const MeasurementList& measurements, std::string& text) {
     for (const MeasurementRecord& measured : measurements) {
         text += "    - name: " + jsonString(measured.name()) +
                 "\n      value: " + formatNumber(measured.value) +
