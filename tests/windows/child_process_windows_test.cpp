@@ -10,6 +10,7 @@
 #include <fstream>
 #include <string>
 
+#include "build_paths.h"
 #include "fixtures/process/child_process.h"
 #include "fixtures/process/tcp_connector.h"
 #include "fixtures/process/waitable_handle-windows.h"
@@ -20,11 +21,11 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string program(const char* name) {
-    return fs::absolute(fs::path(RTF_WINDOWS_PLUGIN_DIR) / name).make_preferred().string();
+    return fs::absolute(fs::path(build_paths::windowsPluginDir()) / name).make_preferred().string();
 }
 
 fs::path scratch(const char* name) {
-    const fs::path folder = fs::path(RTF_UNIT_TEST_TMPDIR) / name;
+    const fs::path folder = fs::path(build_paths::unitTestTmpDir()) / name;
     fs::remove_all(folder);
     fs::create_directories(folder);
     return folder;
