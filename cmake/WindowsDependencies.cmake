@@ -4,6 +4,8 @@
 #   pugixml::pugixml   pugixml from Debian's source package, a static library
 #   rtf_lua            Lua 5.4 from Debian's source package, a static library (its C API)
 #   httplib::httplib   cpp-httplib's header-only httplib.h, from Debian's source package
+#   SQLite::SQLite3    SQLite, a static library from the amalgamation scripts/windows-deps.sh
+#                      generates from Debian's source package (so no DLL to ship)
 #   CLI11::CLI11, nlohmann_json::nlohmann_json   the copied headers
 #   GTest::gtest, GTest::gtest_main   GoogleTest built from /usr/src/googletest
 set(RTF_WINDOWS_DEPS_DIR ${PROJECT_BINARY_DIR}/deps CACHE PATH
@@ -34,6 +36,20 @@ add_library(rtf_lua STATIC ${lua_sources})
 target_include_directories(rtf_lua SYSTEM PUBLIC ${lua_dir}/src)
 # Third-party C code: built with its own warnings, not ours.
 target_compile_options(rtf_lua PRIVATE -w)
+
+set(sqlite_dir ${RTF_WINDOWS_DEPS_DIR}/sqlite3-amalgamation)
+if(NOT EXISTS ${sqlite_dir}/sqlite3.c OR NOT EXISTS ${sqlite_dir}/sqlite3.h)
+    message(FATAL_ERROR "${sqlite_dir} lacks sqlite3.c or sqlite3.h: run "
+                        "scripts/windows-deps.sh ${PROJECT_BINARY_DIR}")
+endif()
+add_library(rtf_sqlite3 STATIC ${sqlite_dir}/sqlite3.c)
+target_include_directories(rtf_sqlite3 SYSTEM PUBLIC ${sqlite_dir})
+# Thread-safe as Debian's libsqlite3 is, so the history behaves as on Linux; no run-time
+# extension loading (the runner loads none).
+target_compile_definitions(rtf_sqlite3 PRIVATE SQLITE_THREADSAFE=1 SQLITE_OMIT_LOAD_EXTENSION)
+# Third-party C code: built with its own warnings, not ours.
+target_compile_options(rtf_sqlite3 PRIVATE -w)
+add_library(SQLite::SQLite3 ALIAS rtf_sqlite3)
 
 set(header_dir ${RTF_WINDOWS_DEPS_DIR}/include)
 if(NOT EXISTS ${header_dir}/CLI/CLI.hpp OR NOT EXISTS ${header_dir}/nlohmann/json.hpp)

@@ -3,7 +3,8 @@
 # Idempotent and quick when everything is there: apt is only called for what is missing.
 #   scripts/install-deps.sh            the Linux build's packages
 #   scripts/install-deps.sh --windows  also the Windows job's tools (./run.sh windows):
-#                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`
+#                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`,
+#                                      tcl to generate SQLite's amalgamation
 set -euo pipefail
 
 packages=(
@@ -19,8 +20,9 @@ packages=(
     clang libclang-rt-14-dev
 )
 # Optional: the Windows job cross-builds with MinGW-w64 (the posix flavour: C++ threads), runs
-# under Wine and fetches pugixml's and Lua's sources with `apt-get source` (dpkg-source).
-windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev)
+# under Wine and fetches pugixml's, Lua's and SQLite's sources with `apt-get source`
+# (dpkg-source); SQLite's sqlite3.c is generated from its source tree with tclsh (tcl).
+windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev tcl)
 if [[ "${1:-}" == --windows ]]; then
     packages+=("${windows_packages[@]}")
 elif [[ $# -gt 0 ]]; then

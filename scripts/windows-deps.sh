@@ -1,14 +1,17 @@
 #!/usr/bin/env bash
 # windows-deps.sh BUILD_DIR: the third-party code the Windows build (cmake/mingw-w64.cmake)
 # compiles or includes, fetched into BUILD_DIR/deps/ and never into the repository:
-#   - pugixml, Lua 5.4 and cpp-httplib: Debian 12's source packages (`apt-get source`; Debian's
-#     installed httplib.h declares only, its code being in libcpp-httplib.so, while the source
-#     has the header-only httplib.h the Windows build compiles), through an apt
+#   - pugixml, Lua 5.4, cpp-httplib and SQLite: Debian 12's source packages (`apt-get source`;
+#     Debian's installed httplib.h declares only, its code being in libcpp-httplib.so, while the
+#     source has the header-only httplib.h the Windows build compiles), through an apt
 #     configuration of its own under BUILD_DIR/deps/apt/ (its sources.list with deb-src lines,
 #     its lists and caches): the machine's /etc/apt and /var/lib/apt are never written;
+#   - SQLite's amalgamation (sqlite3.c, sqlite3.h): Debian's source is SQLite's full tree, so it
+#     is generated from it with the native tools (./configure, make sqlite3.c: tclsh), in
+#     BUILD_DIR/deps/sqlite3-amalgamation/, which the Windows build cross-compiles;
 #   - CLI11 and nlohmann-json: the headers Debian installed, copied alone into
 #     BUILD_DIR/deps/include/, so the cross compiler never sees /usr/include (glibc's headers).
-# Quick when done: each part is fetched once.
+# Quick when done: each part is fetched (and SQLite's amalgamation generated) once.
 set -euo pipefail
 [[ $# -eq 1 ]] || {
     echo "usage: $0 BUILD_DIR" >&2
@@ -31,8 +34,9 @@ done
 rm -f "$deps/include/httplib.h"
 
 # Source packages: their name, and the folder `apt-get source` unpacks them to.
-packages=(pugixml lua5.4 cpp-httplib)
-folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h" "cpp-httplib-*/httplib.h")
+packages=(pugixml lua5.4 cpp-httplib sqlite3)
+folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h" "cpp-httplib-*/httplib.h"
+    "sqlite3-*/tool/mksqlite3c.tcl")
 missing=()
 for i in "${!packages[@]}"; do
     # shellcheck disable=SC2086 # the pattern is meant to expand
@@ -40,28 +44,50 @@ for i in "${!packages[@]}"; do
         missing+=("${packages[$i]}")
     fi
 done
-if ((${#missing[@]} == 0)); then
-    echo "windows-deps: pugixml, Lua 5.4, cpp-httplib and the header-only libraries are in $deps"
-    exit 0
-fi
-
-apt_dir=$deps/apt
-mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
-cat >"$apt_dir/sources.list" <<LIST
+if ((${#missing[@]} > 0)); then
+    apt_dir=$deps/apt
+    mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
+    cat >"$apt_dir/sources.list" <<LIST
 deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
 deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm-updates main
 LIST
-apt_options=(
-    -o "Dir::Etc::sourcelist=$apt_dir/sources.list"
-    -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
-    -o "Dir::State::Lists=$apt_dir/lists"
-    -o "Dir::Cache=$apt_dir/cache"
-    -o "Dir::Cache::archives=$apt_dir/cache/archives"
-    -o "Dir::Cache::pkgcache=$apt_dir/cache/pkgcache.bin"
-    -o "Dir::Cache::srcpkgcache=$apt_dir/cache/srcpkgcache.bin"
-    -o "Debug::NoLocking=1"
-    -o "APT::Sandbox::User=root"
-)
-echo "windows-deps: fetching the Debian sources of ${missing[*]} into $deps"
-apt-get "${apt_options[@]}" -q update
-(cd "$deps" && apt-get "${apt_options[@]}" -q source "${missing[@]}")
+    apt_options=(
+        -o "Dir::Etc::sourcelist=$apt_dir/sources.list"
+        -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
+        -o "Dir::State::Lists=$apt_dir/lists"
+        -o "Dir::Cache=$apt_dir/cache"
+        -o "Dir::Cache::archives=$apt_dir/cache/archives"
+        -o "Dir::Cache::pkgcache=$apt_dir/cache/pkgcache.bin"
+        -o "Dir::Cache::srcpkgcache=$apt_dir/cache/srcpkgcache.bin"
+        -o "Debug::NoLocking=1"
+        -o "APT::Sandbox::User=root"
+    )
+    echo "windows-deps: fetching the Debian sources of ${missing[*]} into $deps"
+    apt-get "${apt_options[@]}" -q update
+    (cd "$deps" && apt-get "${apt_options[@]}" -q source "${missing[@]}")
+fi
+
+# SQLite's amalgamation, generated once in a build folder of its own (the unpacked source stays
+# as Debian ships it). configure and make run natively: the result is portable C.
+amalgamation=$deps/sqlite3-amalgamation
+if [[ ! -e "$amalgamation/sqlite3.c" || ! -e "$amalgamation/sqlite3.h" ]]; then
+    if ! command -v tclsh >/dev/null; then
+        echo "windows-deps: tclsh is missing (scripts/install-deps.sh --windows installs tcl)" >&2
+        exit 1
+    fi
+    sqlite_source=$(compgen -G "$deps/sqlite3-*/tool/mksqlite3c.tcl" | head -n 1)
+    sqlite_source=${sqlite_source%/tool/mksqlite3c.tcl}
+    echo "windows-deps: generating SQLite's amalgamation from $sqlite_source"
+    rm -rf "$amalgamation.build"
+    mkdir -p "$amalgamation.build"
+    (cd "$amalgamation.build" && "$sqlite_source/configure" --disable-tcl >configure.log 2>&1 &&
+        make sqlite3.c >make.log 2>&1) || {
+        echo "windows-deps: generating sqlite3.c failed: see $amalgamation.build/*.log" >&2
+        exit 1
+    }
+    mkdir -p "$amalgamation"
+    cp "$amalgamation.build/sqlite3.c" "$amalgamation.build/sqlite3.h" "$amalgamation/"
+    rm -rf "$amalgamation.build"
+fi
+echo "windows-deps: pugixml, Lua 5.4, cpp-httplib, SQLite and the header-only libraries" \
+    "are in $deps"

@@ -288,6 +288,19 @@ def test_a_damaged_history_file_is_an_error_naming_it(tmp_path, content):
     assert r.returncode == 2 and "h.db" in r.stderr, r
 
 
+def test_a_file_another_run_is_still_making_is_appended_to(tmp_path):
+    """What a run meets when another one has just made the file: WAL set (so the file is no
+    longer empty) but no tables yet. Not "an empty file": the run makes them and appends."""
+    folder = make_suite(tmp_path / "suite")
+    with sqlite3.connect(folder / "h.db") as db:
+        assert db.execute("PRAGMA journal_mode=WAL").fetchone() == ("wal",)
+    assert (folder / "h.db").stat().st_size > 0
+    r = run_runner("--suite", "hist.xml", "--history", "h.db", "--no-output", cwd=folder)
+    assert r.returncode == 0, r
+    assert "history" not in r.stderr, r
+    assert history_rows(folder / "h.db", "hist/ok") == [("passed", 1)]
+
+
 def test_another_programs_database_is_refused(tmp_path):
     folder = make_suite(tmp_path / "suite")
     with sqlite3.connect(folder / "h.db") as db:

@@ -1,7 +1,6 @@
 #include "runner/cli/options.h"
 
 #include "reporters/reporter_registry.h"
-#include "runner/history/history_database.h"
 #include "runner/model/value_limits.h"
 #include "variables/variables.h"
 
@@ -487,11 +486,6 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         return usageError("--color " + colour + ": expected auto, always or never");
     }
     const bool historyCommand = historyImport || historyReportOption->count() > 0;
-    if (!options.history.empty() && !historyBuiltIn()) {
-        return usageError("--history " + options.history +
-                          ": the run history is not built into this runner (it needs SQLite, "
-                          "which this Windows build does not have)");
-    }
     if (historyCommand && options.history.empty()) {
         return usageError(std::string(historyImport ? "--history-import" : "--history-report") +
                           " needs --history FILE");

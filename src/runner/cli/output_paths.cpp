@@ -1,11 +1,10 @@
 #include "runner/cli/output_paths.h"
 
-#include <sys/stat.h>
-
 #include <filesystem>
 #include <map>
 #include <set>
 
+#include "platform/file_identity.h"
 #include "reporters/atomic_file.h"
 
 namespace robottestingframework {
@@ -13,16 +12,13 @@ namespace runner {
 
 namespace {
 
-// What identifies a file: its device and inode when it exists, else its absolute path with
-// the links of its folders resolved. `writtenThrough`: a FIFO or a device, which several
-// outputs may share (each written in turn).
+// What identifies a file: its identity (device and inode, or Windows' own) when it exists, else its
+// absolute path with the links of its folders resolved. `writtenThrough`: a FIFO or a device, which
+// several outputs may share (each written in turn).
 std::string identity(const std::string& path, bool* writtenThrough = nullptr) {
-    struct stat info {};
-    if (::stat(path.c_str(), &info) == 0) {
-        if (writtenThrough != nullptr) {
-            *writtenThrough = !S_ISREG(info.st_mode);
-        }
-        return std::to_string(info.st_dev) + ":" + std::to_string(info.st_ino);
+    std::string file = platform::fileIdentity(path, writtenThrough);
+    if (!file.empty()) {
+        return file;
     }
     std::error_code error;
     std::filesystem::path full =

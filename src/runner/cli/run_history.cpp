@@ -81,7 +81,7 @@ RunHistory::RunHistory(std::string path, HistoryRun run)
       strips_(std::make_shared<reporters::HistoryStrips>()) {
     struct stat status {};
     if (::stat(path_.c_str(), &status) == 0 && status.st_size > 0) {
-        HistoryDatabase check(path_, HistoryDatabase::Mode::Read);  // throws when not ours
+        HistoryDatabase check(path_, HistoryDatabase::Mode::Check);  // throws when not ours
     }
 }
 

@@ -61,7 +61,7 @@ std::int64_t pragmaNumber(sqlite3* db, const char* pragma, const std::string& fi
 
 HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(path) {
     const int flags =
-        mode == Mode::Read ? SQLITE_OPEN_READONLY : SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE;
+        mode == Mode::Append ? SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE : SQLITE_OPEN_READONLY;
     if (sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
         const std::string why = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
         sqlite3_close(db_);
@@ -87,11 +87,19 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
     std::int64_t tables = 0;
     std::int64_t version = 0;
     try {
+        // One read transaction, so the three come from one snapshot: another run may commit
+        // the schema meanwhile, and tables without the application_id would read as another
+        // program's database.
+        runSql(db_, "BEGIN", path_);
         application = pragmaNumber(db_, "application_id", path_);
         version = pragmaNumber(db_, "user_version", path_);
-        SqliteStatement count(db_, "SELECT count(*) FROM sqlite_master", path_);
-        tables = count.step() ? count.integer(0) : 0;
+        {
+            SqliteStatement count(db_, "SELECT count(*) FROM sqlite_master", path_);
+            tables = count.step() ? count.integer(0) : 0;
+        }
+        runSql(db_, "COMMIT", path_);
     } catch (const HistoryError&) {
+        sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
         // SQLite says "file is not a database": say what the user gave us instead.
         throw HistoryError("--history " + path_ +
                            ": not a history file (not an SQLite database, or a damaged one)");
@@ -108,10 +116,10 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
                            std::to_string(version) + "; this runner reads up to " +
                            std::to_string(schemaVersion) + ")");
     }
-    if (mode == Mode::Read) {
-        if (fresh) {
-            throw HistoryError("--history " + path_ + ": an empty file, no run recorded yet");
-        }
+    if (mode == Mode::Read && fresh) {
+        throw HistoryError("--history " + path_ + ": an empty file, no run recorded yet");
+    }
+    if (mode != Mode::Append) {
         return;
     }
     // WAL: readers never wait for the shard that writes. Changing the journal mode takes a
@@ -144,10 +152,6 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
             throw;
         }
     }
-}
-
-bool historyBuiltIn() {
-    return true;
 }
 
 }  // namespace runner

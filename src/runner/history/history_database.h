@@ -24,6 +24,9 @@ public:
     enum class Mode {
         Read,    // the file must exist; nothing is written
         Append,  // made when missing; a read-only file fails on the first write
+        // As Read, but a file without tables yet is accepted: another run may be making them
+        // (it has set WAL, so the file is no longer empty, and not yet written its schema).
+        Check,
     };
     // Throws HistoryError naming `path` when it cannot be opened, is not an SQLite database,
     // is another program's database or is of a newer schema.
@@ -51,9 +54,6 @@ private:
 // True when the file at `path` starts as an SQLite database does ("SQLite format 3"): how
 // --durations tells a history file from a report.
 bool looksLikeHistoryFile(const std::string& path);
-
-// False in a build without SQLite (Windows here, no_sqlite_history.cpp): --history is refused.
-bool historyBuiltIn();
 
 }  // namespace runner
 }  // namespace robottestingframework

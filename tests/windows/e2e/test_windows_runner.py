@@ -1,10 +1,13 @@
 """The Windows runner on a real suite, from the suite's folder with relative paths, in its own
 process (--isolation none): passing and failing plug-ins, a fixture, every report format read
-back on Linux; and what the Windows build does not have, said clearly."""
+back on Linux; the run history (SQLite); and what the Windows build does not have, said
+clearly."""
+import json
+import sqlite3
 import xml.etree.ElementTree as ET
 
-from conftest import (copy_plugins, run_runner, validate_ctrf, validate_junit, validate_tap,
-                      windows_path)
+from conftest import (copy_plugins, run_runner, start_runner, stop_runner, validate_ctrf,
+                      validate_junit, validate_tap, windows_path)
 
 SUITE = """<?xml version="1.0" encoding="UTF-8"?>
 <suite name="Windows suite">
@@ -106,10 +109,76 @@ def test_python_and_ruby_tests_say_they_are_not_built_for_windows(tmp_path):
         assert f"{language} tests are not built for Windows" in run.output, run
 
 
-def test_history_says_it_is_not_built_in(tmp_path):
-    copy_plugins(tmp_path, "passing_test.dll")
-    run = run_runner("-t", "passing_test.dll", "--isolation", "none", "--history", "h.db",
-                     cwd=tmp_path)
+def history_rows(path):
+    """(test, state) of every result in the history file, oldest run first: read on Linux with
+    Python's own SQLite, so the file the Windows runner wrote is an ordinary SQLite database."""
+    with sqlite3.connect(path) as db:
+        return db.execute(
+            "SELECT t.name, r.state FROM results r JOIN tests t ON t.id = r.test "
+            "JOIN runs u ON u.id = r.run ORDER BY u.started, u.id, t.name").fetchall()
+
+
+def report_data(html):
+    text = html.read_text()
+    return json.loads(text.split('id="report-data">', 1)[1].split("</script>", 1)[0])
+
+
+def test_history_is_appended_reported_and_shown_in_the_html_report(tmp_path):
+    """--history h.db on Windows: SQLite built from Debian's source package, statically."""
+    suites = write_project(tmp_path)
+    for _ in range(2):
+        run = run_runner("-s", "suite.xml", "--isolation", "none", "--history", "h.db",
+                         "-o", "html:r.html", cwd=suites)
+        assert run.returncode == 1, run  # a test failed, each time
+        assert "history" not in run.stderr, run
+
+    # Test ids as on Linux: the suite's name, then the test as the suite names it.
+    passing, failing = "Windows suite/../plugins/passing_test.dll", "Windows suite/failing_test"
+    assert history_rows(suites / "h.db") == [(passing, "passed"), (failing, "failed")] * 2
+
+    report = run_runner("--history", "h.db", "--history-report", cwd=suites)
+    assert report.returncode == 0, report
+    assert "2 tests in the last 2 runs" in report.stdout, report
+    # The same outcome both times: neither test is flaky.
+    flakiest = report.stdout.split("Flakiest tests", 1)[1].split("Most slowed", 1)[0]
+    assert "Windows suite/" not in flakiest, report
+
+    html = suites / "r.html"
+    assert "window.rtfTrends = " in html.read_text()  # trends.js, which draws the strips
+    tests = report_data(html)["suites"][0]["tests"]
+    strips = sorted((t["history"]["states"], t["history"]["flakyRate"]) for t in tests)
+    assert strips == [(["failed", "failed"], 0), (["passed", "passed"], 0)], tests
+
+
+def test_runs_at_the_same_time_append_to_one_history(tmp_path):
+    """Three runners writing h.db at once: WAL and the busy timeout over Wine's file locks and
+    shared memory, none of them failing with "database is locked"."""
+    suites = write_project(tmp_path)
+    runners = [start_runner("-s", "suite.xml", "--isolation", "none", "--history", "h.db",
+                            "--no-output", cwd=suites) for _ in range(3)]
+    try:
+        for runner in runners:
+            out, err = runner.communicate(timeout=120)
+            assert runner.returncode == 1, out + err  # the failing test, not the history
+            assert "history" not in err, err
+    finally:
+        for runner in runners:
+            stop_runner(runner)
+    with sqlite3.connect(suites / "h.db") as db:
+        assert db.execute("PRAGMA journal_mode").fetchone() == ("wal",)
+        assert db.execute("SELECT count(*) FROM runs").fetchone() == (3,)
+        assert db.execute("SELECT count(*) FROM results").fetchone() == (6,)
+
+
+def test_a_damaged_history_file_is_an_error_naming_it(tmp_path):
+    suites = write_project(tmp_path)
+    garbage = b"garbage, not a database" * 10
+    (suites / "h.db").write_bytes(garbage)
+    run = run_runner("-s", "suite.xml", "--isolation", "none", "--history", "h.db",
+                     "-o", "junit:r.xml", cwd=suites)
     assert run.returncode == 2, run
-    assert "--history h.db: the run history is not built into this runner" in run.stderr, run
-    assert not (tmp_path / "h.db").exists()
+    assert "--history h.db: not a history file" in run.stderr, run
+    assert not (suites / "r.xml").exists()  # nothing ran, as on Linux
+    assert (suites / "h.db").read_bytes() == garbage  # and the file is as it was
+    report = run_runner("--history", "h.db", "--history-report", cwd=suites)
+    assert report.returncode == 2 and "h.db" in report.stderr, report
