@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "platform/process.h"
+#include "platform/system_error.h"
 
 #ifndef RTF_LANGUAGE_RELATIVE_DIR
 #define RTF_LANGUAGE_RELATIVE_DIR "../lib/robottestingframework"
@@ -73,14 +74,7 @@ std::vector<std::string> moduleFolders() {
 // The system's words for the last error, as dlerror gives them on Linux.
 std::string lastError(const std::string& what) {
     const DWORD code = GetLastError();
-    char buffer[512] = {};
-    const DWORD length = FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-                                        nullptr, code, 0, buffer, sizeof(buffer), nullptr);
-    std::string text(buffer, length);
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) {
-        text.pop_back();
-    }
-    return what + ": " + (text.empty() ? "error" : text) + " (error " + std::to_string(code) + ")";
+    return what + ": " + platform::systemErrorText(code) + " (error " + std::to_string(code) + ")";
 }
 
 }  // namespace

@@ -14,26 +14,14 @@
 #include <map>
 #include <mutex>
 
+#include "platform/system_error.h"
+
 namespace robottestingframework {
 namespace platform {
 
 namespace {
 
 std::mutex startMutex;
-
-std::string systemError(DWORD code) {
-    char* text = nullptr;
-    const DWORD n = ::FormatMessageA(
-        FORMAT_MESSAGE_ALLOCATE_BUFFER | FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-        nullptr, code, 0, reinterpret_cast<LPSTR>(&text), 0, nullptr);
-    std::string message = n > 0 ? std::string(text, n) : "error " + std::to_string(code);
-    ::LocalFree(text);
-    while (!message.empty() && (message.back() == '\n' || message.back() == '\r' ||
-                                message.back() == '.' || message.back() == ' ')) {
-        message.pop_back();
-    }
-    return message;
-}
 
 // The inheritable duplicates made for one start, closed when it is over.
 class InheritedHandles {
@@ -155,7 +143,7 @@ bool JobProcess::start(const JobProcessOptions& options, std::string& error) {
     }
     job_ = ::CreateJobObjectA(nullptr, nullptr);
     if (job_ == nullptr) {
-        error = "cannot create a job object: " + systemError(::GetLastError());
+        error = "cannot create a job object: " + systemErrorText(::GetLastError());
         return false;
     }
     JOBOBJECT_EXTENDED_LIMIT_INFORMATION limits{};
@@ -220,11 +208,11 @@ bool JobProcess::start(const JobProcessOptions& options, std::string& error) {
                                0);
     }
     if (!started) {
-        error = "cannot run " + program + ": " + systemError(startError);
+        error = "cannot run " + program + ": " + systemErrorText(startError);
         return false;
     }
     if (!::AssignProcessToJobObject(job_, info.hProcess)) {
-        error = "cannot put " + program + " in a job object: " + systemError(::GetLastError());
+        error = "cannot put " + program + " in a job object: " + systemErrorText(::GetLastError());
         ::TerminateProcess(info.hProcess, 1);
         ::CloseHandle(info.hThread);
         ::CloseHandle(info.hProcess);
