@@ -9,6 +9,7 @@
 #include <io.h>
 #include <windows.h>
 
+#include <cctype>
 #include <cstdlib>
 #include <cstring>
 #include <map>
@@ -90,6 +91,49 @@ std::string environmentBlock(const std::vector<std::pair<std::string, std::strin
     return block;
 }
 
+std::string lowered(std::string text) {
+    for (char& c : text) {
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    return text;
+}
+
+// Whether `program` is cmd.exe (a path or a name, with or without .exe).
+bool isCmd(const std::string& program) {
+    const std::size_t slash = program.find_last_of("/\\");
+    const std::string name =
+        lowered(slash == std::string::npos ? program : program.substr(slash + 1));
+    return name == "cmd.exe" || name == "cmd";
+}
+
+bool sameSwitch(const std::string& argument, const char* name) {
+    return lowered(argument) == name;
+}
+
+// The command line of `argv`: each argument quoted for the C run-time, except what follows
+// cmd.exe's "/s /c": cmd runs the rest of its command line as it is, once it has removed one
+// pair of quotes around it, so quoting for the C run-time would reach the command as \".
+std::string commandLineOf(const std::vector<std::string>& argv) {
+    std::string line;
+    std::size_t i = 0;
+    for (; i < argv.size(); ++i) {
+        line += (line.empty() ? "" : " ") + quoteArgument(argv[i]);
+        if (i >= 2 && isCmd(argv[0]) && sameSwitch(argv[i - 1], "/s") &&
+            sameSwitch(argv[i], "/c")) {
+            ++i;
+            break;
+        }
+    }
+    if (i == argv.size()) {
+        return line;
+    }
+    std::string rest;
+    for (; i < argv.size(); ++i) {
+        rest += (rest.empty() ? "" : " ") + argv[i];
+    }
+    return line + " \"" + rest + "\"";
+}
+
 }  // namespace
 
 std::string quoteArgument(const std::string& argument) {
@@ -137,10 +181,7 @@ JobProcess::~JobProcess() {
 
 bool JobProcess::start(const JobProcessOptions& options, std::string& error) {
     const std::string program = options.argv.empty() ? std::string() : options.argv[0];
-    std::string commandLine;
-    for (const std::string& argument : options.argv) {
-        commandLine += (commandLine.empty() ? "" : " ") + quoteArgument(argument);
-    }
+    std::string commandLine = commandLineOf(options.argv);
     job_ = ::CreateJobObjectA(nullptr, nullptr);
     if (job_ == nullptr) {
         error = "cannot create a job object: " + systemErrorText(::GetLastError());

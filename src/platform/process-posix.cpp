@@ -323,5 +323,9 @@ std::string executablePath() {
     return n > 0 ? std::string(buffer, static_cast<std::size_t>(n)) : std::string();
 }
 
+std::vector<std::string> shellCommand(const std::string& text) {
+    return {"/bin/sh", "-c", text};
+}
+
 }  // namespace platform
 }  // namespace robottestingframework

@@ -51,5 +51,9 @@ std::string executablePath() {
     }
 }
 
+std::vector<std::string> shellCommand(const std::string& text) {
+    return {"cmd.exe", "/d", "/s", "/c", text};
+}
+
 }  // namespace platform
 }  // namespace robottestingframework

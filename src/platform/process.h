@@ -74,5 +74,10 @@ std::vector<int> openDescriptors();
 // The path of the running program (/proc/self/exe), empty when unknown.
 std::string executablePath();
 
+// The argv that runs `text` in the system's shell: {/bin/sh, -c, text} on POSIX,
+// {cmd.exe, /d, /s, /c, text} on Windows (JobProcess passes what follows "/s /c" as cmd reads
+// it: as it is, in one pair of quotes).
+std::vector<std::string> shellCommand(const std::string& text);
+
 }  // namespace platform
 }  // namespace robottestingframework

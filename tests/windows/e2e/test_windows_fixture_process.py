@@ -148,3 +148,40 @@ def test_a_program_that_does_not_exist_is_named(tmp_path):
     assert run.returncode == 1, run
     assert "process 'ghost' (line 1) could not be started" in run.output, run
     assert "no_such.exe' does not exist" in run.output, run
+
+
+SHELL_WORLD = """<?xml version="1.0" encoding="UTF-8"?>
+<world name="shelled" logdir="logs">
+  <process name="piped">
+    <command shell="true">echo "two words"&gt; said.txt &amp;&amp; ..\\programs\\world_actor.exe --pid-file piped.pid --print "shell up"</command>
+    <ready><output>^shell up$</output><probe shell="true">type said.txt | find "two words"</probe></ready>
+  </process>
+</world>
+"""
+
+SHELL_SUITE = """<?xml version="1.0" encoding="UTF-8"?>
+<suite name="Shelled">
+    <fixture type="process">world.xml</fixture>
+    <test name="after_ready" param="--expect-file said.txt">../programs/world_actor.exe</test>
+</suite>
+"""
+
+
+def test_a_shell_command_runs_in_cmd_as_written(tmp_path):
+    # shell="true" is cmd.exe /d /s /c on Windows (a redirection, &&, a pipe in a probe), and
+    # the command reaches cmd as written: its quotes are not escaped for the C run-time.
+    suites = folders(tmp_path)
+    (suites / "world.xml").write_text(SHELL_WORLD)
+    (suites / "suite.xml").write_text(SHELL_SUITE)
+    run = run_runner("-s", "suite.xml", "-o", "text:out/r.txt", cwd=suites, timeout=180)
+    assert run.returncode == 0, run
+    assert "1 passed, 0 failed" in run.stdout.splitlines()[-1], run
+    text = (suites / "out" / "r.txt").read_text()
+    assert re.search(r"starting 'piped': \S*cmd\.exe /d /s /c ", text), text
+    assert "'piped' is ready after" in text, text
+    assert (suites / "said.txt").read_text().strip() == '"two words"'
+    (suites / "gone.xml").write_text(
+        '<suite name="g"><test param="--pid-file piped.pid">../plugins/child_gone.dll</test>'
+        '</suite>\n')
+    gone = run_runner("-s", "gone.xml", cwd=suites)
+    assert gone.returncode == 0, gone
