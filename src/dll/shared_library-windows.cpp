@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dll/library_naming.h"
+#include "platform/system_error.h"
 
 namespace robottestingframework {
 namespace plugin {
@@ -16,14 +17,7 @@ namespace {
 // The system's words for the last error, and its code, as dlerror would give them on Linux.
 std::string lastError(const std::string& what) {
     const DWORD code = GetLastError();
-    char buffer[512] = {};
-    const DWORD length = FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-                                        nullptr, code, 0, buffer, sizeof(buffer), nullptr);
-    std::string text(buffer, length);
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) {
-        text.pop_back();
-    }
-    return what + ": " + (text.empty() ? "error" : text) + " (error " + std::to_string(code) + ")";
+    return what + ": " + platform::systemErrorText(code) + " (error " + std::to_string(code) + ")";
 }
 
 void splitInto(const std::string& text, char separator, std::vector<std::string>& out) {

@@ -9,22 +9,12 @@
 #include <cstdio>
 #include <cstring>
 
+#include "platform/system_error.h"
+
 namespace robottestingframework {
 namespace reporters {
 
 namespace {
-
-// The system's words for a Win32 error code.
-std::string systemMessage(DWORD code) {
-    char buffer[512] = {};
-    const DWORD length = FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS,
-                                        nullptr, code, 0, buffer, sizeof(buffer), nullptr);
-    std::string text(buffer, length);
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == '.')) {
-        text.pop_back();
-    }
-    return text.empty() ? "error " + std::to_string(code) : text;
-}
 
 // A device (NUL, CON, a named pipe) that is already there: written as it is, never replaced.
 bool isDevice(const std::string& filename) {
@@ -134,8 +124,8 @@ bool AtomicFile::commit(std::string& error) {
     if (!temporary_.empty() &&
         MoveFileExA(temporary_.c_str(), target_.c_str(),
                     MOVEFILE_REPLACE_EXISTING | MOVEFILE_WRITE_THROUGH) == 0) {
-        error =
-            "cannot rename a temporary file to " + filename_ + ": " + systemMessage(GetLastError());
+        error = "cannot rename a temporary file to " + filename_ + ": " +
+                platform::systemErrorText(GetLastError());
         discard();
         return false;
     }

@@ -4,6 +4,8 @@
 // After winsock2.h.
 #include <windows.h>
 
+#include "platform/system_error.h"
+
 namespace robottestingframework {
 namespace web {
 
@@ -22,16 +24,7 @@ std::string socketError(const std::string& fallback) {
     if (code == WSAEADDRINUSE) {
         return "the port is in use by another program " + number;
     }
-    char buffer[512] = {};
-    const DWORD length =
-        ::FormatMessageA(FORMAT_MESSAGE_FROM_SYSTEM | FORMAT_MESSAGE_IGNORE_INSERTS, nullptr,
-                         static_cast<DWORD>(code), 0, buffer, sizeof(buffer), nullptr);
-    std::string text(buffer, length);
-    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ' ||
-                             text.back() == '.')) {
-        text.pop_back();
-    }
-    return (text.empty() ? std::string("socket error") : text) + " " + number;
+    return platform::systemErrorText(static_cast<unsigned long>(code)) + " " + number;
 }
 
 }  // namespace web
