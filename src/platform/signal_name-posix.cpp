@@ -51,6 +51,10 @@ int signalNumber(const std::string& name) {
     return 0;
 }
 
+int stopSignalNumber(const std::string& name) {
+    return signalNumber(name);
+}
+
 std::string signalDescription(int signal) {
     const char* text = ::strsignal(signal);
     return text != nullptr ? text : signalName(signal);

@@ -57,6 +57,20 @@ int signalNumber(const std::string& name) {
     return 0;
 }
 
+int stopSignalNumber(const std::string& name) {
+    static const struct {
+        const char* name;
+        int number;
+    } kStopSignals[] = {{"SIGHUP", 1},   {"SIGINT", 2},   {"SIGQUIT", 3}, {"SIGKILL", 9},
+                        {"SIGUSR1", 10}, {"SIGUSR2", 12}, {"SIGTERM", 15}};
+    for (const auto& stop : kStopSignals) {
+        if (name == stop.name) {
+            return stop.number;
+        }
+    }
+    return 0;
+}
+
 std::string signalDescription(int signal) {
     for (const ExceptionName& exception : kExceptions) {
         if (exception.code == static_cast<unsigned long>(signal)) {

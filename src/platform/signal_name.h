@@ -10,6 +10,11 @@ namespace platform {
 std::string signalName(int signal);
 // The number of a signal named as signalName() names it ("SIGTERM"); 0 when none is.
 int signalNumber(const std::string& name);
+// The number of a signal that asks a process to stop, named as on POSIX ("SIGTERM", "SIGINT"):
+// signalNumber() there. Windows has no such signals (a process is stopped by ending its job):
+// there the POSIX numbers of SIGHUP, SIGINT, SIGQUIT, SIGKILL, SIGUSR1, SIGUSR2 and SIGTERM, so
+// that a file naming one reads the same on both. 0 when none is.
+int stopSignalNumber(const std::string& name);
 // The platform's description: "Segmentation fault".
 std::string signalDescription(int signal);
 // A crash as the reports name it after "crashed: ": "SIGSEGV (Segmentation fault)"; on Windows

@@ -185,3 +185,41 @@ def test_a_shell_command_runs_in_cmd_as_written(tmp_path):
         '</suite>\n')
     gone = run_runner("-s", "gone.xml", cwd=suites)
     assert gone.returncode == 0, gone
+
+
+SIGNAL_WORLD = """<?xml version="1.0" encoding="UTF-8"?>
+<world name="signals" logdir="logs">
+  <process name="interrupted" command="../programs/world_actor.exe --pid-file interrupted.pid --print up">
+    <ready><output>^up$</output></ready>
+    <stop signal="SIGINT" grace="2s"/>
+  </process>
+  <process name="hung up" command="../programs/world_actor.exe --pid-file hungup.pid --print up">
+    <ready><output>^up$</output></ready>
+    <stop signal="hup"/>
+  </process>
+</world>
+"""
+
+
+def test_stop_signals_named_as_on_linux_are_read_and_end_the_job(tmp_path):
+    # A world file written for Linux names its stop signals: Windows has none, so each stands
+    # for ending the process's job, and the report says so.
+    suites = folders(tmp_path)
+    (suites / "world.xml").write_text(SIGNAL_WORLD)
+    (suites / "suite.xml").write_text(
+        '<suite name="s"><fixture type="process">world.xml</fixture>'
+        '<test>../plugins/passing_test.dll</test></suite>\n')
+    run = run_runner("-s", "suite.xml", "-o", "text:out/r.txt", cwd=suites, timeout=180)
+    assert run.returncode == 0, run
+    assert "is not a signal" not in run.output, run
+    text = (suites / "out" / "r.txt").read_text()
+    for name in ("interrupted", "hung up"):
+        assert re.search(rf"stopping '{name}' \(pid \d+\) by ending its job object", text), text
+        assert f"'{name}' stopped after" in text, text
+    (suites / "gone.xml").write_text(
+        '<suite name="g">'
+        + "".join(f'<test param="--pid-file {pid}.pid">../plugins/child_gone.dll</test>'
+                  for pid in ("interrupted", "hungup"))
+        + '</suite>\n')
+    gone = run_runner("-s", "gone.xml", cwd=suites)
+    assert gone.returncode == 0, gone
