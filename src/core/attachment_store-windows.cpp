@@ -6,7 +6,8 @@
 #include <cerrno>
 #include <cstdlib>
 #include <filesystem>
-#include <system_error>
+
+#include "platform/system_error.h"
 
 // The Windows twin of attachment_store-posix.cpp: the same rules (limits, names, one writer at
 // a time through the folder's .lock), with Win32 handles and LockFileEx for open and flock.
@@ -33,10 +34,6 @@ private:
     HANDLE handle_;
 };
 
-std::string systemMessage(DWORD code) {
-    return std::system_category().message(static_cast<int>(code));
-}
-
 bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
     char buffer[64 * 1024];
     std::uint64_t left = size;
@@ -44,7 +41,7 @@ bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
         DWORD got = 0;
         const DWORD want = left < sizeof(buffer) ? static_cast<DWORD>(left) : sizeof(buffer);
         if (ReadFile(from, buffer, want, &got, nullptr) == 0) {
-            error = systemMessage(GetLastError());
+            error = platform::systemErrorText(GetLastError());
             return false;
         }
         if (got == 0) {
@@ -53,7 +50,7 @@ bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
         for (DWORD done = 0; done < got;) {
             DWORD put = 0;
             if (WriteFile(to, buffer + done, got - done, &put, nullptr) == 0) {
-                error = systemMessage(GetLastError());
+                error = platform::systemErrorText(GetLastError());
                 return false;
             }
             done += put;
@@ -84,7 +81,7 @@ bool storeAttachment(const std::string& source, const std::string& description,
                              nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr));
     LARGE_INTEGER fileSize{};
     if (!input.valid() || GetFileSizeEx(input.get(), &fileSize) == 0) {
-        error = what + systemMessage(GetLastError());
+        error = what + platform::systemErrorText(GetLastError());
         return false;
     }
     if (GetFileType(input.get()) != FILE_TYPE_DISK) {
@@ -106,7 +103,7 @@ bool storeAttachment(const std::string& source, const std::string& description,
     OVERLAPPED whole{};
     if (!lock.valid() ||
         LockFileEx(lock.get(), LOCKFILE_EXCLUSIVE_LOCK, 0, MAXDWORD, MAXDWORD, &whole) == 0) {
-        error = what + "cannot lock " + lockName + ": " + systemMessage(GetLastError());
+        error = what + "cannot lock " + lockName + ": " + platform::systemErrorText(GetLastError());
         return false;
     }
     std::uint64_t files = 0;
@@ -123,7 +120,7 @@ bool storeAttachment(const std::string& source, const std::string& description,
                              CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr);
         if (output == INVALID_HANDLE_VALUE && GetLastError() != ERROR_FILE_EXISTS) {
             error = what + "cannot write " + (folder / storedName).string() + ": " +
-                    systemMessage(GetLastError());
+                    platform::systemErrorText(GetLastError());
             return false;
         }
     }
