@@ -96,6 +96,7 @@ public:
     void begin(TestResult& target, Test& self, double timeout) {
         target_ = &target;
         self_ = &self;
+        shown_ = self.getName();
         status_ = TestStatus::Passed;
         timeout_ = timeout;
         timedOut_ = false;
@@ -130,9 +131,10 @@ private:
     const Test* sync(const Test* test) {
         if (test != nullptr && test != self_) {
             std::string name = test->getName();
-            if (!name.empty() && name != self_->getName()) {
+            if (!name.empty() && name != shown_) {
                 // The stand-in takes the name; the listeners hear of it as an event.
                 self_->setName(name);
+                shown_ = self_->getName();
                 target_->renameTest(self_, name);
             }
         }
@@ -146,6 +148,7 @@ private:
 
     TestResult* target_ = nullptr;
     Test* self_ = nullptr;
+    std::string shown_;  // self_->getName(), not copied again for each event
     std::mutex mutex_;
     TestStatus status_ = TestStatus::Passed;
     double timeout_ = 0;
