@@ -195,8 +195,11 @@ void ConsoleListener::endTest(const Test* test) {
     }
     text += ' ';
     reporters::appendShownAs(text, record.key, record.name);
-    text.append("  (").append(reporters::seconds(record.duration)).append(")");
-    line(text);
+    text.append("  (").append(reporters::seconds(record.duration)).append(")\n");
+    std::fwrite(text.data(), 1, text.size(), stream_);  // one write with its newline: line()
+    if (tty_) {
+        std::fflush(stream_);
+    }
     if (verbose_) {
         return;  // its messages were printed as they came
     }

@@ -173,14 +173,33 @@ TestStatus InProcessExecutor::notLoaded(const TestSpec& spec, Test& self, TestRe
     return TestStatus::Failed;
 }
 
+bool InProcessExecutor::locate(const TestSpec& spec, std::string& error) {
+    Located& last = located_;
+    if (last.valid && spec.plugin.sharesWith(last.plugin) && spec.path.sharesWith(last.path) &&
+        (spec.type.empty() ? last.type.empty() : spec.type.sharesWith(last.type)) &&
+        spec.where.file.sharesWith(last.file)) {
+        return true;
+    }
+    last.valid = false;
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, last.foundPath,
+                                 last.foundType, error)) {
+        return false;
+    }
+    last.plugin = spec.plugin;
+    last.path = spec.path;
+    last.type = spec.type;
+    last.file = spec.where.file;
+    last.valid = true;
+    return true;
+}
+
 TestStatus InProcessExecutor::run(const TestSpec& spec, Test& self, TestResult& result) {
-    std::string path;
-    std::string type;
     std::string error;
-    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, path, type,
-                                 error)) {
+    if (!locate(spec, error)) {
         return notLoaded(spec, self, result, error);
     }
+    const std::string& path = located_.foundPath;  // run() is not re-entered while it runs
+    const std::string& type = located_.foundType;
     std::unique_ptr<languages::LoadedTest> loaded;
     try {
         loaded = languages::loadTest(type, path, error);
