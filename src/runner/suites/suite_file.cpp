@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <sstream>
 #include <unordered_map>
 
@@ -620,21 +621,67 @@ private:
         return fixture;
     }
 
+    // The attributes of a <test> besides its type, each the first of its name.
+    struct TestAttributes {
+        pugi::xml_attribute param, environment, repetition, name, timeout, depends, tags;
+
+        // Finds them in one pass over `node`'s attributes (a suite of 10 000 tests looked each
+        // name up in each); false when it has one it does not know (a test file's `file`).
+        bool read(pugi::xml_node node) {
+            bool known = true;
+            for (pugi::xml_attribute attribute : node.attributes()) {
+                pugi::xml_attribute* slot = slotOf(attribute.name());
+                if (slot == nullptr) {
+                    known = known && std::strcmp(attribute.name(), "type") == 0;
+                } else if (!*slot) {
+                    *slot = attribute;
+                }
+            }
+            return known;
+        }
+        // Those of `over` where it has them.
+        void overlay(const TestAttributes& over) {
+            for (pugi::xml_attribute TestAttributes::*field : fields) {
+                if (over.*field) {
+                    this->*field = over.*field;
+                }
+            }
+        }
+
+    private:
+        static constexpr pugi::xml_attribute TestAttributes::*fields[] = {
+            &TestAttributes::param, &TestAttributes::environment, &TestAttributes::repetition,
+            &TestAttributes::name,  &TestAttributes::timeout,     &TestAttributes::depends,
+            &TestAttributes::tags};
+        pugi::xml_attribute* slotOf(const char* attribute) {
+            static constexpr const char* names[] = {"param",   "environment", "repetition", "name",
+                                                    "timeout", "depends",     "tags"};
+            for (std::size_t i = 0; i < std::size(names); ++i) {
+                if (std::strcmp(attribute, names[i]) == 0) {
+                    return &(this->*fields[i]);
+                }
+            }
+            return nullptr;
+        }
+    };
+
     TestSpec readTest(pugi::xml_node node, const std::string& plugin,
                       pugi::xml_node overrides = pugi::xml_node()) {
-        if (!overrides) {
+        TestAttributes given;
+        const bool known = given.read(node);
+        if (!overrides && !known) {
             checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
-                                   "depends", "tags"});
+                                   "depends", "tags"});  // says which, and what is expected
         }
-        auto attribute = [&](const char* name) {
-            pugi::xml_attribute given = overrides.attribute(name);
-            return given ? given : node.attribute(name);
-        };
+        if (overrides) {
+            TestAttributes over;
+            over.read(overrides);
+            given.overlay(over);
+        }
         // Most attributes are not given: nothing to expand (a suite of 10 000 tests read each
         // of them through the variable table).
-        auto value = [&](const char* name) {
-            pugi::xml_attribute given = attribute(name);
-            return given ? expand(node, given.value()) : std::string();
+        auto value = [&](pugi::xml_attribute attribute) {
+            return attribute ? expand(node, attribute.value()) : std::string();
         };
         TestSpec test;
         test.where = where(node);
@@ -643,19 +690,25 @@ private:
         test.path = named.second;
         pugi::xml_node typed = overrides.attribute("type") ? overrides : node;
         test.type = types_.intern(typeOf(typed, testTypes));
-        test.param = value("param");
-        test.environment = value("environment");
-        test.name = trim(value("name"));
-        if (attribute("repetition")) {
-            test.repetition = repetitionOf(node, value("repetition"));
+        test.param = value(given.param);
+        test.environment = value(given.environment);
+        if (given.name) {
+            test.name = trim(value(given.name));
+        }
+        if (given.repetition) {
+            test.repetition = repetitionOf(node, value(given.repetition));
         } else {
             test.repetition = 0;  // not given: the command line or the default decides
         }
-        if (attribute("timeout")) {
-            test.timeout = secondsOf(node, value("timeout"), "timeout");
+        if (given.timeout) {
+            test.timeout = secondsOf(node, value(given.timeout), "timeout");
         }
-        test.depends = splitList(value("depends"));
-        test.tags = splitList(value("tags"));
+        if (given.depends) {
+            test.depends = splitList(value(given.depends));
+        }
+        if (given.tags) {
+            test.tags = splitList(value(given.tags));
+        }
         return test;
     }
 
