@@ -2,6 +2,7 @@
 
 #include <cstdarg>
 #include <cstdio>
+#include <utility>
 #include <vector>
 
 #include <robottestingframework/Exception.h>
@@ -110,12 +111,14 @@ void Asserter::testCheck(bool condition, TestMessage msg, TestCase* testcase) {
         }
         return;
     }
-    result->addCheck(test, msg, condition);
-    if (!condition) {
-        result->addFailure(test, msg);
-        test->failureReported_ = true;
-        test->failed();
+    if (condition) {
+        result->addCheck(test, std::move(msg), true);  // most checks: the message is not copied
+        return;
     }
+    result->addCheck(test, msg, false);
+    result->addFailure(test, std::move(msg));
+    test->failureReported_ = true;
+    test->failed();
 }
 
 void Asserter::testFail(bool condition, TestMessage msg, TestCase* testcase) {

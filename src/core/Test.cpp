@@ -51,12 +51,14 @@ std::string bounded(std::string name) {
 
 void Test::setName(std::string name) {
     name = bounded(std::move(name));
-    if (renames_ == nullptr || name == name_) {
-        name_ = std::move(name);
-        return;
+    // Swapped, not assigned: a short name moved into a long one's string keeps the long one's
+    // memory (the runner's 10 000 stand-ins, named by their plug-in's path until the test case
+    // names itself, kept 48 bytes each). The old text goes with `name`.
+    const bool renamed = renames_ != nullptr && name != name_;
+    name_.swap(name);
+    if (renamed) {
+        renames_->renameTest(this, name_);
     }
-    name_ = std::move(name);
-    renames_->renameTest(this, name_);
 }
 
 }  // namespace robottestingframework

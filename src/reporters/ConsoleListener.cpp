@@ -183,10 +183,8 @@ void ConsoleListener::endTest(const Test* test) {
     if (word.size() < 11) {
         word.append(11 - word.size(), ' ');
     }
-    const std::string shown = reporters::shownAs(record.key, record.name);
-    const std::string took = reporters::seconds(record.duration);
     std::string text;
-    text.reserve(word.size() + shown.size() + took.size() + 32);
+    text.reserve(word.size() + record.key.size() + record.name.size() + 48);
     text += "  ";
     if (colors_) {
         text += retried ? yellow : colourOf(record.status);
@@ -195,8 +193,13 @@ void ConsoleListener::endTest(const Test* test) {
     } else {
         text += word;
     }
-    text.append(" ").append(shown).append("  (").append(took).append(")");
-    line(text);
+    text += ' ';
+    reporters::appendShownAs(text, record.key, record.name);
+    text.append("  (").append(reporters::seconds(record.duration)).append(")\n");
+    std::fwrite(text.data(), 1, text.size(), stream_);  // one write with its newline: line()
+    if (tty_) {
+        std::fflush(stream_);
+    }
     if (verbose_) {
         return;  // its messages were printed as they came
     }

@@ -60,12 +60,19 @@ std::vector<std::string> outputLines(const std::string& text) {
 }
 
 std::string shownAs(const std::string& key, const std::string& name) {
+    std::string text;
+    appendShownAs(text, key, name);
+    return text;
+}
+
+void appendShownAs(std::string& text, const std::string& key, const std::string& name) {
     // An absolute path is the name a loader gives a script it loaded (RTF 2.x), not one the test
     // chose: beside the id it would only show the workspace's path.
     if (key.empty() || name.empty() || key == name || name[0] == '/') {
-        return key.empty() ? name : key;
+        text += key.empty() ? name : key;
+        return;
     }
-    return key + " (" + name + ")";
+    text.append(key).append(" (").append(name).append(")");
 }
 
 std::string seconds(double value) {

@@ -38,6 +38,8 @@ std::vector<std::string> outputLines(const std::string& text);
 // itself in parentheses when that differs ("tests/arith.lua (ArmTest)"); either alone when the
 // other is empty, and the id alone when the name is an absolute path (a loader's default).
 std::string shownAs(const std::string& key, const std::string& name);
+// The same appended to `text`: the console's line of each test, with no string of its own.
+void appendShownAs(std::string& text, const std::string& key, const std::string& name);
 // "0.002 s".
 std::string seconds(double value);
 

@@ -139,30 +139,6 @@ TEST(SuiteEvents, ARunningTestWakesOnlyAtItsEnd) {
     EXPECT_EQ(wakes, 1);
 }
 
-TEST(SuiteEvents, PassedToAResultItKeepsNothingAndWakesNoOne) {
-    Named test("t");
-    int wakes = 0;
-    SuiteEvents queue([&wakes] { ++wakes; });
-    TestResult run;
-    Recorder recorder;
-    run.addListener(&recorder);
-    queue.passTo(&run);
-    TestResult result;
-    result.addListener(&queue);
-    result.addFailure(&test, TestMessage("at once"));
-    ASSERT_EQ(recorder.events.size(), 1u);
-    EXPECT_EQ(recorder.events[0].data.kind, Kind::Failure);
-    EXPECT_EQ(recorder.events[0].data.message.getMessage(), "at once");
-    EXPECT_EQ(recorder.events[0].test, &test);
-    EXPECT_TRUE(queue.take().empty());
-    EXPECT_EQ(wakes, 0);
-
-    queue.passTo(nullptr);  // kept again
-    result.addReport(&test, TestMessage("later"));
-    EXPECT_EQ(recorder.events.size(), 1u);
-    EXPECT_EQ(queue.take().size(), 1u);
-}
-
 TEST(SuiteEvents, RepetitionsTravelAsTheirOwnKindWithIndexAndCount) {
     Named test("t");
     SuiteEvents queue(nullptr);

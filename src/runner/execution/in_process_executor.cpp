@@ -96,6 +96,7 @@ public:
     void begin(TestResult& target, Test& self, double timeout) {
         target_ = &target;
         self_ = &self;
+        shown_ = self.getName();
         status_ = TestStatus::Passed;
         timeout_ = timeout;
         timedOut_ = false;
@@ -118,7 +119,10 @@ public:
             relayed.data.message = TestMessage("timed out after " + seconds(timeout_),
                                                event.data.message.getMessage());
         }
-        worsen(stateOf(relayed.data.kind));
+        const TestStatus state = stateOf(relayed.data.kind);
+        if (state != TestStatus::Passed) {  // the lowest: most events leave the state as it is
+            worsen(state);
+        }
         target_->publish(relayed);
     }
 
@@ -130,9 +134,10 @@ private:
     const Test* sync(const Test* test) {
         if (test != nullptr && test != self_) {
             std::string name = test->getName();
-            if (!name.empty() && name != self_->getName()) {
+            if (!name.empty() && name != shown_) {
                 // The stand-in takes the name; the listeners hear of it as an event.
                 self_->setName(name);
+                shown_ = self_->getName();
                 target_->renameTest(self_, name);
             }
         }
@@ -146,6 +151,7 @@ private:
 
     TestResult* target_ = nullptr;
     Test* self_ = nullptr;
+    std::string shown_;  // self_->getName(), not copied again for each event
     std::mutex mutex_;
     TestStatus status_ = TestStatus::Passed;
     double timeout_ = 0;
@@ -167,14 +173,33 @@ TestStatus InProcessExecutor::notLoaded(const TestSpec& spec, Test& self, TestRe
     return TestStatus::Failed;
 }
 
+bool InProcessExecutor::locate(const TestSpec& spec, std::string& error) {
+    Located& last = located_;
+    if (last.valid && spec.plugin.sharesWith(last.plugin) && spec.path.sharesWith(last.path) &&
+        (spec.type.empty() ? last.type.empty() : spec.type.sharesWith(last.type)) &&
+        spec.where.file.sharesWith(last.file)) {
+        return true;
+    }
+    last.valid = false;
+    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, last.foundPath,
+                                 last.foundType, error)) {
+        return false;
+    }
+    last.plugin = spec.plugin;
+    last.path = spec.path;
+    last.type = spec.type;
+    last.file = spec.where.file;
+    last.valid = true;
+    return true;
+}
+
 TestStatus InProcessExecutor::run(const TestSpec& spec, Test& self, TestResult& result) {
-    std::string path;
-    std::string type;
     std::string error;
-    if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, path, type,
-                                 error)) {
+    if (!locate(spec, error)) {
         return notLoaded(spec, self, result, error);
     }
+    const std::string& path = located_.foundPath;  // run() is not re-entered while it runs
+    const std::string& type = located_.foundType;
     std::unique_ptr<languages::LoadedTest> loaded;
     try {
         loaded = languages::loadTest(type, path, error);

@@ -33,6 +33,16 @@ private:
     TestStatus notLoaded(const TestSpec& spec, Test& self, TestResult& result,
                          const std::string& reason);
 
+    // The file and type of the plug-in `spec` names (languages::locatePlugin), found once for
+    // the tests that name it through the same strings, as a suite's tests of one plug-in do.
+    bool locate(const TestSpec& spec, std::string& error);
+    struct Located {
+        SharedString plugin, path, type, file;  // what the last spec named
+        std::string foundPath, foundType;       // what it was found to be
+        bool valid = false;
+    };
+    Located located_;
+
     std::unique_ptr<Relay> relay_;
     TestResult relayed_;  // what the test case reports to: only the relay listens
     // The last test case made from each file. Each test gets a fresh object, but keeping the

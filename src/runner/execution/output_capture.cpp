@@ -129,6 +129,12 @@ void OutputCaptureListener::flushTo(const Test* owner) {
     }
 }
 
+void OutputCaptureListener::onEvent(const RunEvent& event) {
+    if (isFrame(event.data.kind)) {
+        TestListener::onEvent(event);
+    }
+}
+
 void OutputCaptureListener::startTestSuite(const TestSuite* suite) {
     flushTo(nullptr);
     suite_ = suite;

@@ -52,6 +52,8 @@ public:
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
     void endTestRunner() override;
+    // The frames above only: a test's checks and reports pass by without their message copied.
+    void onEvent(const RunEvent& event) override;
 
 private:
     void flushTo(const Test* owner);

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <string_view>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 namespace robottestingframework {
 namespace runner {
@@ -71,55 +73,76 @@ std::string pluginIdPart(const std::string& plugin, const std::string& suiteFold
 }
 
 void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
-    // Hashed, not ordered: ids of one plug-in share a long prefix, which ordered sets compare
-    // over and over (a suite of 10 000 runs of one plug-in spent a tenth of its run here).
-    // The params each unnamed plug-in is given in this suite: more than one, and each says its own.
-    std::unordered_map<std::string, std::unordered_set<std::string>> params;
-    // Each plug-in path's part once: a suite often names one plug-in many times.
+    std::vector<TestSpec>& tests = suite.tests;
+    // Each test's id before the params and numbers: its name, or its plug-in's part of the path
+    // (held by `partOf`, or by the test's name).
+    std::vector<const std::string*> bases(tests.size());
+    // Each plug-in path's part once: a suite often names one plug-in many times. Hashed, not
+    // ordered: ids of one plug-in share a long prefix, which ordered sets compare over and over.
     std::unordered_map<std::string, std::string> partOf;
-    for (auto& test : suite.tests) {
-        if (test.name.empty()) {
-            auto part = partOf.find(test.plugin);
-            if (part == partOf.end()) {
-                part = partOf.emplace(test.plugin, pluginIdPart(test.plugin, suiteFolder)).first;
+    // The params each unnamed plug-in is given in this suite: more than one, and each says its own.
+    std::unordered_map<std::string_view, std::unordered_set<std::string>> params;
+    // The tests of a suite mostly name the plug-in and give the param of the test before them:
+    // neither is looked up again (10 000 tests of one plug-in hashed its path 10 000 times).
+    const std::string* plugin = nullptr;
+    const std::string* part = nullptr;
+    std::unordered_set<std::string>* given = nullptr;
+    const std::string* param = nullptr;
+    for (std::size_t i = 0; i < tests.size(); ++i) {
+        TestSpec& test = tests[i];
+        if (!test.name.empty()) {
+            bases[i] = &test.name.str();
+            continue;
+        }
+        if (plugin == nullptr || *plugin != test.plugin.str()) {
+            auto known = partOf.find(test.plugin);
+            if (known == partOf.end()) {
+                known = partOf.emplace(test.plugin, pluginIdPart(test.plugin, suiteFolder)).first;
             }
-            test.id = part->second;
-            auto& given = params[test.id];
-            if (given.size() < 2) {  // two tell that the params say which is which
-                given.insert(oneLine(test.param));
-            }
-        } else {
-            test.id = test.name;
+            plugin = &known->first;
+            part = &known->second;
+            given = &params[*part];
+            param = nullptr;
+        }
+        bases[i] = part;
+        // Two tell that the params say which is which; the same param again adds nothing.
+        if (given->size() < 2 && (param == nullptr || *param != test.param.str())) {
+            given->insert(oneLine(test.param));
+            param = &test.param.str();
         }
     }
-    std::unordered_set<std::string> taken;
-    taken.reserve(suite.tests.size());
+    // The ids given so far: each a view of an earlier test's final id, which no longer changes
+    // (`tests` is not resized here).
+    std::unordered_set<std::string_view> taken;
+    taken.reserve(tests.size());
     // The next number to try for each id given twice: a suite of 10 000 runs of one plug-in
     // must not try 2, 3, ... again for each (that was quadratic in the suite's size).
-    std::unordered_map<std::string, unsigned int> nextNumber;
-    for (auto& test : suite.tests) {
+    std::unordered_map<std::string_view, unsigned int> nextNumber;
+    std::string id;
+    for (std::size_t i = 0; i < tests.size(); ++i) {
+        TestSpec& test = tests[i];
+        id = *bases[i];
         if (test.name.empty() && !test.param.empty()) {
-            auto given = params.find(test.id);
-            if (given != params.end() && given->second.size() > 1) {
-                const std::string param = oneLine(test.param);
-                if (!param.empty()) {
-                    test.id += "[" + param + "]";
+            auto said = params.find(id);
+            if (said != params.end() && said->second.size() > 1) {
+                const std::string text = oneLine(test.param);
+                if (!text.empty()) {
+                    id.append("[").append(text).append("]");
                 }
             }
         }
         // A second test of the same id: "[2]", the next free number, in document order.
-        if (!taken.insert(test.id).second) {
-            // Looked up before it is added: emplace would build (and drop) a node each time.
-            auto next = nextNumber.find(test.id);
-            if (next == nextNumber.end()) {
-                next = nextNumber.emplace(test.id, 2).first;
-            }
-            const std::string& base = next->first;
+        auto earlier = taken.find(id);
+        if (earlier != taken.end()) {
+            auto next = nextNumber.try_emplace(*earlier, 2).first;
+            const std::string_view base = next->first;
             unsigned int& k = next->second;
             do {
-                test.id.assign(base).append("[").append(std::to_string(k++)).append("]");
-            } while (!taken.insert(test.id).second);
+                id.assign(base).append("[").append(std::to_string(k++)).append("]");
+            } while (taken.count(id) > 0);
         }
+        test.id = id;
+        taken.insert(test.id);
     }
 }
 

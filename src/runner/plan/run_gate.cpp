@@ -158,6 +158,21 @@ void RunGate::tripped(const Test* test) {
     }
 }
 
+void RunGate::onEvent(const RunEvent& event) {
+    using Kind = ResultEvent::Kind;
+    switch (event.data.kind) {
+        case Kind::Failure:
+        case Kind::Error:
+        case Kind::Crash:
+        case Kind::Timeout:
+        case Kind::Retry:
+            TestListener::onEvent(event);
+            break;
+        default:
+            break;
+    }
+}
+
 void RunGate::retryTest(const Test* test, TestMessage) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (test != nullptr && firstFailing_ == test) {

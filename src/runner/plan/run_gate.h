@@ -48,6 +48,9 @@ public:
     void addTimeout(const Test* test, TestMessage) override { tripped(test); }
     // A test run again (--retries) has not failed yet: only its last attempt counts.
     void retryTest(const Test* test, TestMessage) override;
+    // The kinds above only: the others, most of a run's events (starts, ends, checks), pass
+    // by without their message copied for a handler that would ignore it.
+    void onEvent(const RunEvent& event) override;
 
 private:
     void tripped(const Test* test);

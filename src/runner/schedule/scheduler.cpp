@@ -204,9 +204,16 @@ void Scheduler::start(Job& job) {
             const std::size_t equals = variable.find('=');
             platform::setEnvironment(variable.substr(0, equals), variable.substr(equals + 1));
         }
-        job.events.passTo(result_);
-        suite.run(job.result);
-        job.events.passTo(nullptr);
+        // Its events go straight to the run's listeners, the gate after them as on the suite's
+        // own result: one fan-out and one lock less for each event.
+        result_->addListener(&plan_.gate());
+        try {
+            suite.run(*result_);
+        } catch (...) {
+            result_->removeListener(&plan_.gate());
+            throw;
+        }
+        result_->removeListener(&plan_.gate());
         for (const auto& variable : environment) {
             platform::unsetEnvironment(variable.substr(0, variable.find('=')));
         }

@@ -24,10 +24,6 @@ std::vector<SuiteEvents::Event> SuiteEvents::take() {
 }
 
 void SuiteEvents::onEvent(const RunEvent& event) {
-    if (direct_ != nullptr) {
-        direct_->publish(event);
-        return;
-    }
     bool wake = false;
     {
         std::lock_guard<std::mutex> lock(mutex_);

@@ -30,15 +30,11 @@ public:
 
     // The events since the last call, oldest first.
     std::vector<Event> take();
-    // From now on each event goes straight to `result` as it comes (nullptr: kept again), for
-    // a suite run on the scheduler's own thread.
-    void passTo(TestResult* result) { direct_ = result; }
 
     void onEvent(const RunEvent& event) override;
 
 private:
     std::function<void()> wake_;
-    TestResult* direct_ = nullptr;
     std::mutex mutex_;
     std::vector<Event> events_;
     bool woken_ = false;   // the scheduler was woken for what events_ holds

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <initializer_list>
+#include <iterator>
 #include <sstream>
 #include <unordered_map>
 
@@ -152,10 +153,12 @@ public:
     SuiteReader(const std::string& text, const std::string& path,
                 std::vector<std::string>& warnings, variables::VariableTable& table)
         : text_(text), path_(path), folder_(folderOf(path)), warnings_(warnings), table_(table) {
-        for (std::size_t i = 0; i < text_.size(); ++i) {
-            if (text_[i] == '\n') {
-                newlines_.push_back(i);
-            }
+        // memchr, not a loop over each byte: a suite of 10 000 tests is 750 kB of text.
+        const char* begin = text_.data();
+        const char* end = begin + text_.size();
+        for (const char* at = begin;
+             (at = static_cast<const char*>(std::memchr(at, '\n', end - at))) != nullptr; ++at) {
+            newlines_.push_back(static_cast<std::size_t>(at - begin));
         }
     }
 
@@ -223,6 +226,23 @@ private:
         return plugin;
     }
 
+    // pluginOf for the <test> elements of a suite, which mostly name the plug-in of the test
+    // before them: the same text is not gathered and trimmed again.
+    const std::string& testPluginOf(pugi::xml_node node) {
+        pugi::xml_node only = node.first_child();
+        const bool plain = only && only.type() == pugi::node_pcdata && !only.next_sibling();
+        if (plain && haveLastPlugin_ && lastPluginText_ == only.value()) {
+            return lastPlugin_;
+        }
+        haveLastPlugin_ = false;
+        lastPlugin_ = pluginOf(node);
+        if (plain) {
+            lastPluginText_ = only.value();
+            haveLastPlugin_ = true;
+        }
+        return lastPlugin_;
+    }
+
     unsigned int repetitionOf(pugi::xml_node node, const std::string& text) const {
         unsigned int runs = 0;
         const std::string problem = checkRepetition(text, runs);
@@ -258,6 +278,9 @@ private:
     // Suites often list one plug-in many times: look each name up once, and give every test
     // naming it the same two strings.
     const std::pair<SharedString, SharedString>& pluginAndPath(const std::string& plugin) const {
+        if (lastResolved_ != nullptr && lastResolved_->first == plugin) {
+            return lastResolved_->second;
+        }
         auto known = resolved_.find(plugin);
         if (known == resolved_.end()) {
             known = resolved_
@@ -266,6 +289,7 @@ private:
                                                 SharedString(plugin::findPlugin(plugin, folder_))))
                         .first;
         }
+        lastResolved_ = &*known;
         return known->second;
     }
 
@@ -350,7 +374,7 @@ public:
             } else if (name == "test") {
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
-                                          : readTest(node, expand(node, pluginOf(node))));
+                                          : readTest(node, expand(node, testPluginOf(node))));
                 TestSpec& added = suite.tests.back();
                 for (const auto& tag : suite.tags) {
                     if (std::find(added.tags.begin(), added.tags.end(), tag) == added.tags.end()) {
@@ -597,21 +621,67 @@ private:
         return fixture;
     }
 
+    // The attributes of a <test> besides its type, each the first of its name.
+    struct TestAttributes {
+        pugi::xml_attribute param, environment, repetition, name, timeout, depends, tags;
+
+        // Finds them in one pass over `node`'s attributes (a suite of 10 000 tests looked each
+        // name up in each); false when it has one it does not know (a test file's `file`).
+        bool read(pugi::xml_node node) {
+            bool known = true;
+            for (pugi::xml_attribute attribute : node.attributes()) {
+                pugi::xml_attribute* slot = slotOf(attribute.name());
+                if (slot == nullptr) {
+                    known = known && std::strcmp(attribute.name(), "type") == 0;
+                } else if (!*slot) {
+                    *slot = attribute;
+                }
+            }
+            return known;
+        }
+        // Those of `over` where it has them.
+        void overlay(const TestAttributes& over) {
+            for (pugi::xml_attribute TestAttributes::*field : fields) {
+                if (over.*field) {
+                    this->*field = over.*field;
+                }
+            }
+        }
+
+    private:
+        static constexpr pugi::xml_attribute TestAttributes::*fields[] = {
+            &TestAttributes::param, &TestAttributes::environment, &TestAttributes::repetition,
+            &TestAttributes::name,  &TestAttributes::timeout,     &TestAttributes::depends,
+            &TestAttributes::tags};
+        pugi::xml_attribute* slotOf(const char* attribute) {
+            static constexpr const char* names[] = {"param",   "environment", "repetition", "name",
+                                                    "timeout", "depends",     "tags"};
+            for (std::size_t i = 0; i < std::size(names); ++i) {
+                if (std::strcmp(attribute, names[i]) == 0) {
+                    return &(this->*fields[i]);
+                }
+            }
+            return nullptr;
+        }
+    };
+
     TestSpec readTest(pugi::xml_node node, const std::string& plugin,
                       pugi::xml_node overrides = pugi::xml_node()) {
-        if (!overrides) {
+        TestAttributes given;
+        const bool known = given.read(node);
+        if (!overrides && !known) {
             checkAttributes(node, {"type", "param", "environment", "repetition", "name", "timeout",
-                                   "depends", "tags"});
+                                   "depends", "tags"});  // says which, and what is expected
         }
-        auto attribute = [&](const char* name) {
-            pugi::xml_attribute given = overrides.attribute(name);
-            return given ? given : node.attribute(name);
-        };
+        if (overrides) {
+            TestAttributes over;
+            over.read(overrides);
+            given.overlay(over);
+        }
         // Most attributes are not given: nothing to expand (a suite of 10 000 tests read each
         // of them through the variable table).
-        auto value = [&](const char* name) {
-            pugi::xml_attribute given = attribute(name);
-            return given ? expand(node, given.value()) : std::string();
+        auto value = [&](pugi::xml_attribute attribute) {
+            return attribute ? expand(node, attribute.value()) : std::string();
         };
         TestSpec test;
         test.where = where(node);
@@ -620,19 +690,25 @@ private:
         test.path = named.second;
         pugi::xml_node typed = overrides.attribute("type") ? overrides : node;
         test.type = types_.intern(typeOf(typed, testTypes));
-        test.param = value("param");
-        test.environment = value("environment");
-        test.name = trim(value("name"));
-        if (attribute("repetition")) {
-            test.repetition = repetitionOf(node, value("repetition"));
+        test.param = value(given.param);
+        test.environment = value(given.environment);
+        if (given.name) {
+            test.name = trim(value(given.name));
+        }
+        if (given.repetition) {
+            test.repetition = repetitionOf(node, value(given.repetition));
         } else {
             test.repetition = 0;  // not given: the command line or the default decides
         }
-        if (attribute("timeout")) {
-            test.timeout = secondsOf(node, value("timeout"), "timeout");
+        if (given.timeout) {
+            test.timeout = secondsOf(node, value(given.timeout), "timeout");
         }
-        test.depends = splitList(value("depends"));
-        test.tags = splitList(value("tags"));
+        if (given.depends) {
+            test.depends = splitList(value(given.depends));
+        }
+        if (given.tags) {
+            test.tags = splitList(value(given.tags));
+        }
         return test;
     }
 
@@ -707,6 +783,12 @@ private:
     std::vector<std::size_t> newlines_;
     std::vector<std::string> usedInTestFiles_;
     mutable std::unordered_map<std::string, std::pair<SharedString, SharedString>> resolved_;
+    // The entry found last: the tests of a suite mostly name the plug-in of the one before.
+    mutable const std::pair<const std::string, std::pair<SharedString, SharedString>>*
+        lastResolved_ = nullptr;
+    std::string lastPluginText_;  // the text of the last <test> testPluginOf read
+    std::string lastPlugin_;      // its plug-in
+    bool haveLastPlugin_ = false;
     StringPool types_;  // "dll", "python", ...: one string each for all the tests
 };
 
