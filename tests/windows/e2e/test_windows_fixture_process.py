@@ -38,12 +38,6 @@ SUITE = """<?xml version="1.0" encoding="UTF-8"?>
 </suite>
 """
 
-# The world's processes and the child one of them started: each must be gone after the run.
-GONE = """<?xml version="1.0" encoding="UTF-8"?>
-<suite name="Gone">
-""" + "".join(f'    <test name="{name}" param="--pid-file {name}.pid">../plugins/child_gone.dll</test>\n'
-              for name in ("server", "child", "writer", "prober")) + "</suite>\n"
-
 DYING_WORLD = """<?xml version="1.0" encoding="UTF-8"?>
 <world name="fragile" logdir="logs">
   <process name="motor driver" command="../programs/world_actor.exe --pid-file driver.pid --print ready --exit-after 1 --exit-code 5">
@@ -75,10 +69,15 @@ def folders(tmp_path):
     return suites
 
 
-def assert_all_gone(suites):
-    (suites / "gone.xml").write_text(GONE)
+def assert_all_gone(suites, *names):
+    """Each process named (by its NAME.pid file) is gone after the run."""
+    (suites / "gone.xml").write_text(
+        '<suite name="Gone">\n'
+        + "".join(f'    <test name="{name}" param="--pid-file {name}.pid">'
+                  '../plugins/child_gone.dll</test>\n' for name in names)
+        + "</suite>\n")
     gone = run_runner("-s", "gone.xml", cwd=suites, timeout=120)
-    assert gone.returncode == 0 and "4 passed, 0 failed" in gone.stdout, gone
+    assert gone.returncode == 0 and f"{len(names)} passed, 0 failed" in gone.stdout, gone
 
 
 def test_a_world_ready_by_output_port_file_and_probe_runs_the_suite_and_ends(tmp_path):
@@ -110,7 +109,8 @@ def test_a_world_ready_by_output_port_file_and_probe_runs_the_suite_and_ends(tmp
     # Stopped at teardown by ending their jobs, last started first.
     assert "'server' stopped after" in text and "by ending its job object" in text, text
     assert text.index("stopping 'writer'") < text.index("stopping 'server'"), text
-    assert_all_gone(suites)
+    # The world's processes and the child one of them started.
+    assert_all_gone(suites, "server", "child", "writer", "prober")
 
 
 def test_a_process_that_dies_mid_suite_is_reported_and_the_rest_skipped(tmp_path):
@@ -129,11 +129,7 @@ def test_a_process_that_dies_mid_suite_is_reported_and_the_rest_skipped(tmp_path
     assert cases["long"].find("error").get("type") == "interrupted", ET.tostring(cases["long"])
     skipped = cases["skipped"].find("skipped")
     assert skipped is not None and reason in skipped.get("message"), ET.tostring(cases["skipped"])
-    (suites / "driver_gone.xml").write_text(
-        '<suite name="g"><test param="--pid-file driver.pid">../plugins/child_gone.dll</test>'
-        '</suite>\n')
-    gone = run_runner("-s", "driver_gone.xml", cwd=suites)
-    assert gone.returncode == 0, gone
+    assert_all_gone(suites, "driver")
 
 
 def test_a_program_that_does_not_exist_is_named(tmp_path):
@@ -180,11 +176,7 @@ def test_a_shell_command_runs_in_cmd_as_written(tmp_path):
     assert re.search(r"starting 'piped': \S*cmd\.exe /d /s /c ", text), text
     assert "'piped' is ready after" in text, text
     assert (suites / "said.txt").read_text().strip() == '"two words"'
-    (suites / "gone.xml").write_text(
-        '<suite name="g"><test param="--pid-file piped.pid">../plugins/child_gone.dll</test>'
-        '</suite>\n')
-    gone = run_runner("-s", "gone.xml", cwd=suites)
-    assert gone.returncode == 0, gone
+    assert_all_gone(suites, "piped")
 
 
 SIGNAL_WORLD = """<?xml version="1.0" encoding="UTF-8"?>
@@ -216,10 +208,4 @@ def test_stop_signals_named_as_on_linux_are_read_and_end_the_job(tmp_path):
     for name in ("interrupted", "hung up"):
         assert re.search(rf"stopping '{name}' \(pid \d+\) by ending its job object", text), text
         assert f"'{name}' stopped after" in text, text
-    (suites / "gone.xml").write_text(
-        '<suite name="g">'
-        + "".join(f'<test param="--pid-file {pid}.pid">../plugins/child_gone.dll</test>'
-                  for pid in ("interrupted", "hungup"))
-        + '</suite>\n')
-    gone = run_runner("-s", "gone.xml", cwd=suites)
-    assert gone.returncode == 0, gone
+    assert_all_gone(suites, "interrupted", "hungup")
