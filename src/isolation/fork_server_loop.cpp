@@ -22,6 +22,7 @@
 #include "platform/coverage.h"
 #include "platform/fd_passing.h"
 #include "platform/file_descriptor.h"
+#include "platform/fork_template.h"
 #include "platform/process.h"
 #include "platform/process_tree.h"
 #include "platform/signal_pipe.h"
@@ -467,6 +468,8 @@ int serveForkRequests(int control, bool verbose) {
         ::dup2(null, 0);
         ::close(null);
     }
+    // Before the first fork: every worker then starts with the page tables of the code.
+    platform::shareCodePagesWithForks();
     return serve(control, {}, verbose);
 }
 
