@@ -22,6 +22,7 @@
 #include "platform/coverage.h"
 #include "platform/fd_passing.h"
 #include "platform/file_descriptor.h"
+#include "platform/fork_template.h"
 #include "platform/process.h"
 #include "platform/process_tree.h"
 #include "platform/signal_pipe.h"
@@ -69,15 +70,18 @@ void prepareChild(pid_t server) {
 
 // Become the worker of `request`. Never returns.
 [[noreturn]] void becomeWorker(const WorkRequest& request, int channel, int output) {
-    // 0: /dev/null, 1 and 2: the output pipe, 3: the channel; nothing else is inherited.
-    int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
-    int high = ::fcntl(channel, F_DUPFD_CLOEXEC, 10);
-    int out = ::fcntl(output, F_DUPFD_CLOEXEC, 10);
-    ::dup2(null, 0);
-    ::dup2(out, 1);
-    ::dup2(out, 2);
-    ::dup2(high, 3);
-    platform::setCloseOnExec(3);  // a program the test runs must not write on our channel
+    // 0: /dev/null (the server's since it started), 1 and 2: the output pipe, 3: the channel,
+    // close-on-exec (a program the test runs must not write on our channel); nothing else is
+    // inherited. The spare received both descriptors close-on-exec on the lowest free numbers:
+    // the channel on 3 (closed for it), the output above; then only the output moves.
+    if (channel != 3 || output <= 3) {
+        int high = ::fcntl(channel, F_DUPFD_CLOEXEC, 10);
+        output = ::fcntl(output, F_DUPFD_CLOEXEC, 10);
+        ::dup2(high, 3);
+        platform::setCloseOnExec(3);
+    }
+    ::dup2(output, 1);
+    ::dup2(output, 2);
     if (g_runtimeDescriptors.empty()) {
         platform::closeDescriptorsFrom(4);
     } else {
@@ -457,6 +461,15 @@ int serve(int control, const std::string& language, bool verbose) {
 }  // namespace
 
 int serveForkRequests(int control, bool verbose) {
+    // Every worker's stdin: /dev/null, opened once here rather than in each worker. Inherited
+    // by the programs the tests run: not close-on-exec.
+    int null = ::open("/dev/null", O_RDONLY);
+    if (null > 0) {
+        ::dup2(null, 0);
+        ::close(null);
+    }
+    // Before the first fork: every worker then starts with the page tables of the code.
+    platform::shareCodePagesWithForks();
     return serve(control, {}, verbose);
 }
 

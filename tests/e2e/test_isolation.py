@@ -121,6 +121,16 @@ def test_a_test_that_leaves_a_child_behind_leaves_nothing(tmp_path, marker):
     assert leftover_processes(marker) == []
 
 
+def test_a_worker_gets_dev_null_its_output_pipe_and_its_channel_only(tmp_path, marker):
+    # The runner's stdin is a pipe with bytes in it: no test reads them. Three tests, so that
+    # workers forked ahead of time (spares) are checked too.
+    r = run_runner(*(["--test", plugin("worker_descriptors")] * 3), "--verbose",
+                   timeout=30, env=marked(marker), cwd=tmp_path, input="not for the tests\n")
+    assert r.returncode == 0, r
+    assert "3 passed, 0 failed" in r.stdout.splitlines()[-1], r
+    assert leftover_processes(marker) == []
+
+
 @pytest.mark.parametrize("isolation", ["process", "none"])
 def test_critical_error_skips_the_rest_of_the_suite(tmp_path, isolation, suite_file):
     suite = suite_file(f'''<suite name="crit">
