@@ -440,3 +440,44 @@ def test_live_status_line_only_on_a_terminal(tmp_path):
     assert re.search(r"\[\d/4\]", text), text
     assert "\r\x1b[K" in text, text
     assert "4 passed, 0 failed" in text, text
+
+
+SERVER_OF_WORKER = """#!/bin/sh
+# Appends "SUITE SERVER": the worker that runs this test is our parent, the fork server its.
+read -r _ _ _ server _ < /proc/$PPID/stat
+echo "$1 $server" >> "$2"
+"""
+
+
+def test_each_suite_running_at_once_forks_its_workers_from_a_fork_server_of_its_own(
+        tmp_path, marker):
+    # With -j 2, two suites at once do not queue for one fork server's forks: each lane has
+    # its own (started with the run, ended with it); with -j 1 one server forks every worker.
+    script = tmp_path / "server_of_worker.sh"
+    script.write_text(SERVER_OF_WORKER)
+    script.chmod(0o755)
+    servers = tmp_path / "servers.txt"
+    args = []
+    for name in ("s1", "s2", "s3", "s4"):
+        (tmp_path / f"{name}.xml").write_text(
+            f'<suite name="{name}">\n' + "".join(
+                f'  <test type="exec" name="{name}-t{i}" param="{name} servers.txt">'
+                f'server_of_worker.sh</test>\n' for i in range(3)) + "</suite>\n")
+        args += ["--suite", f"{name}.xml"]
+    by_jobs = {}
+    for jobs in ("1", "2"):
+        servers.unlink(missing_ok=True)
+        r = run_runner(*args, "-j", jobs, "--no-output", cwd=tmp_path, env=marked(marker))
+        assert r.returncode == 0 and "12 passed, 0 failed" in r.stdout, r
+        lines = [line.split() for line in servers.read_text().splitlines()]
+        assert len(lines) == 12, lines
+        by_suite = {}
+        for suite, server in lines:
+            by_suite.setdefault(suite, set()).add(int(server))
+        assert all(len(pids) == 1 for pids in by_suite.values()), by_suite  # one per suite
+        by_jobs[jobs] = set().union(*by_suite.values())
+        assert leftover_processes(marker) == []
+        for pid in by_jobs[jobs]:
+            assert not os.path.exists(f"/proc/{pid}"), f"fork server {pid} outlived the run"
+    assert len(by_jobs["1"]) == 1, by_jobs
+    assert len(by_jobs["2"]) == 2, by_jobs

@@ -1,5 +1,6 @@
 #include "runner/cli/executor_choice.h"
 
+#include <algorithm>
 #include <cstdio>
 
 #include "platform/process.h"
@@ -30,12 +31,15 @@ std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
 
 // The same on every platform: the isolated executor hides how workers start (a fork server on
 // POSIX, a job object per worker on Windows).
-std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error) {
+std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::size_t suites,
+                                             std::string& error) {
     if (options.isolation == Isolation::None) {
         return inProcessExecutor(options);
     }
     isolation::IsolationOptions isolationOptions;
     isolationOptions.verbose = options.verbose;
+    isolationOptions.servers =
+        std::max<std::size_t>(1, std::min<std::size_t>(options.jobs, suites));
     auto isolated = std::make_unique<isolation::IsolatedExecutor>(isolationOptions);
     if (!isolated->start(error)) {
         return nullptr;

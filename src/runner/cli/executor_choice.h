@@ -14,8 +14,10 @@ namespace runner {
 // Starts the executor `options.isolation` asks for. Call it on the main thread, which lives for
 // the whole run: the fork server's parent-death signal is tied to the thread that started it.
 // --isolation none warns of what it cannot do, and runs one suite at a time (`options.jobs`
-// becomes 1). Nullptr with `error` when process isolation cannot start.
-std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::string& error);
+// becomes 1). `suites`: how many the run has; with --jobs, as many fork servers start as suites
+// may run at once. Nullptr with `error` when process isolation cannot start.
+std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::size_t suites,
+                                             std::string& error);
 
 // --isolation none: the warnings, and one suite at a time. chooseExecutor calls it.
 std::unique_ptr<TestExecutor> inProcessExecutor(Options& options);

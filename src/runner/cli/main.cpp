@@ -106,7 +106,8 @@ int main(int argc, char** argv) {
         return configurationError;
     }
     // On the main thread, which lives for the whole run (executor_choice.h).
-    const std::unique_ptr<TestExecutor> executor = chooseExecutor(options, error);
+    const std::unique_ptr<TestExecutor> executor =
+        chooseExecutor(options, planned.suites.size(), error);
     if (!executor) {
         std::fprintf(stderr, "%s: cannot start process isolation: %s\n", programName,
                      error.c_str());

@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "isolation/event_relay.h"
@@ -41,8 +42,11 @@ void drain(int fd) {
 
 }  // namespace
 
-IsolatedExecutor::IsolatedExecutor(IsolationOptions options)
-    : options_(std::move(options)), server_(std::make_shared<ForkServer>()) {
+IsolatedExecutor::IsolatedExecutor(IsolationOptions options) : options_(std::move(options)) {
+    for (std::size_t i = 0; i < std::max<std::size_t>(options_.servers, 1); ++i) {
+        servers_.push_back(std::make_shared<ForkServer>());
+    }
+    server_ = servers_.front();
     platform::makePipe(wakeRead_, wakeWrite_);
     platform::setNonBlocking(wakeRead_.get());
     platform::setNonBlocking(wakeWrite_.get());
@@ -53,7 +57,8 @@ IsolatedExecutor::~IsolatedExecutor() {
 }
 
 bool IsolatedExecutor::start(std::string& error) {
-    if (server_->running()) {
+    if (std::all_of(servers_.begin(), servers_.end(),
+                    [](const std::shared_ptr<ForkServer>& server) { return server->running(); })) {
         return true;
     }
     std::string worker = options_.workerPath.empty() ? findWorker() : options_.workerPath;
@@ -61,18 +66,37 @@ bool IsolatedExecutor::start(std::string& error) {
         error = "cannot find robottestingframework-worker (next to the runner, or set RTF_WORKER)";
         return false;
     }
-    return server_->start(worker, error, options_.verbose);
+    for (const auto& server : servers_) {
+        if (!server->running() && !server->start(worker, error, options_.verbose)) {
+            return false;
+        }
+    }
+    return true;
 }
 
 void IsolatedExecutor::shutdown() {
     if (ownsServer_) {
-        server_->stop();
+        for (const auto& server : servers_) {
+            server->stop();
+        }
     }
 }
 
 std::unique_ptr<runner::TestExecutor> IsolatedExecutor::makeLane() {
-    auto lane = std::make_unique<IsolatedExecutor>(options_);
-    lane->server_ = server_;
+    IsolationOptions laneOptions = options_;
+    laneOptions.servers = 1;
+    auto lane = std::make_unique<IsolatedExecutor>(laneOptions);
+    // The server the fewest open lanes hold (each holds two references; this executor holds
+    // one of each server, and a second of its own server_).
+    auto lanesOn = [this](const std::shared_ptr<ForkServer>& server) {
+        return server.use_count() - (server == server_ ? 2 : 1);
+    };
+    lane->server_ = *std::min_element(
+        servers_.begin(), servers_.end(),
+        [&](const std::shared_ptr<ForkServer>& a, const std::shared_ptr<ForkServer>& b) {
+            return lanesOn(a) < lanesOn(b);
+        });
+    lane->servers_ = {lane->server_};
     lane->ownsServer_ = false;
     return lane;
 }

@@ -26,6 +26,9 @@ struct IsolationOptions {
     double fixtureTimeout = 120.0;       // bound on each fixture setup/check/tearDown; 0: none
     std::size_t outputTail = 64 * 1024;  // bytes of a test's output kept for the report
     bool verbose = false;                // the fork server says which interpreters it pre-started
+    // Fork servers started with the executor: one for each lane that may run at once (--jobs),
+    // so that parallel suites do not queue for one another's forks.
+    std::size_t servers = 1;
 };
 
 class IsolatedExecutor : public runner::TestExecutor, public runner::WorkerEnvironment {
@@ -33,7 +36,7 @@ public:
     explicit IsolatedExecutor(IsolationOptions options = IsolationOptions());
     ~IsolatedExecutor() override;
 
-    // Starts the fork server (run() does it on first use). False with `error` when the worker
+    // Starts the fork servers (run() does it on first use). False with `error` when the worker
     // program cannot be found or started.
     bool start(std::string& error);
 
@@ -43,7 +46,8 @@ public:
     void interrupt() override;
     std::unique_ptr<FixtureManager> makeFixture(const runner::FixtureSpec& spec,
                                                 std::string& error) override;
-    // Shares the fork server; ending the lane ends only what it runs.
+    // Shares a fork server (the one the fewest open lanes use); ending the lane ends only what
+    // it runs.
     std::unique_ptr<runner::TestExecutor> makeLane() override;
     // Given to every test this executor runs from now on.
     void setWorkerEnvironment(std::vector<std::string> variables) override {
@@ -55,8 +59,9 @@ public:
 
 private:
     IsolationOptions options_;
-    std::shared_ptr<ForkServer> server_;
-    platform::FileDescriptor wakeRead_, wakeWrite_;  // interrupt() -> run()
+    std::shared_ptr<ForkServer> server_;                // where this executor's workers fork
+    std::vector<std::shared_ptr<ForkServer>> servers_;  // all it starts; server_ is the first
+    platform::FileDescriptor wakeRead_, wakeWrite_;     // interrupt() -> run()
     std::atomic<bool> interrupted_{false};
     bool ownsServer_ = true;
     std::vector<std::string> environment_;
