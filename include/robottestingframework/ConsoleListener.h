@@ -59,7 +59,8 @@ private:
     // Prints `msg` now when it belongs to no open test or verbose is on; otherwise it is
     // printed under the test's line at endTest.
     bool printNow(const Test* test) const;
-    void line(const std::string& text);
+    // Writes `text` and its newline in one call (flushed on a terminal).
+    void line(std::string text);
 
     std::FILE* stream_;
     bool tty_ = false;

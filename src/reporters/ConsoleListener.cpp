@@ -45,9 +45,9 @@ void ConsoleListener::setStream(std::FILE* stream) {
     tty_ = ::isatty(::fileno(stream_)) == 1;
 }
 
-void ConsoleListener::line(const std::string& text) {
+void ConsoleListener::line(std::string text) {
+    text += '\n';
     std::fwrite(text.data(), 1, text.size(), stream_);
-    std::fputc('\n', stream_);
     // A terminal shows progress as it happens; a file or a pipe gets buffered writes.
     if (tty_) {
         std::fflush(stream_);
@@ -64,7 +64,7 @@ void ConsoleListener::message(const char* label, const char* colour, const TestM
         text += label;
     }
     text += ": " + reporters::messageText(msg);
-    line(text);
+    line(std::move(text));
 }
 
 bool ConsoleListener::printNow(const Test* test) const {
@@ -195,11 +195,8 @@ void ConsoleListener::endTest(const Test* test) {
     }
     text += ' ';
     reporters::appendShownAs(text, record.key, record.name);
-    text.append("  (").append(reporters::seconds(record.duration)).append(")\n");
-    std::fwrite(text.data(), 1, text.size(), stream_);  // one write with its newline: line()
-    if (tty_) {
-        std::fflush(stream_);
-    }
+    text.append("  (").append(reporters::seconds(record.duration)).append(")");
+    line(std::move(text));
     if (verbose_) {
         return;  // its messages were printed as they came
     }
@@ -224,7 +221,7 @@ void ConsoleListener::startTestSuite(const TestSuite* suite) {
     text += "suite " + suite->getName();
     text += colors_ ? plain : "";
     text += "  (" + std::to_string(count) + (count == 1 ? " test)" : " tests)");
-    line(text);
+    line(std::move(text));
     if (verbose_ && !suite->getDescription().empty()) {
         line("  " + suite->getDescription());
     }
@@ -246,7 +243,7 @@ void ConsoleListener::endTestSuite(const TestSuite* suite) {
     text += ok ? "passed" : "FAILED";
     text += colors_ ? plain : "";
     text += "  " + record.name + "  (" + reporters::seconds(record.duration) + ")";
-    line(text);
+    line(std::move(text));
 }
 
 void ConsoleListener::startTestRunner() {
