@@ -44,9 +44,17 @@ void drain(int fd) {
 
 IsolatedExecutor::IsolatedExecutor(IsolationOptions options) : options_(std::move(options)) {
     for (std::size_t i = 0; i < std::max<std::size_t>(options_.servers, 1); ++i) {
-        servers_.push_back(std::make_shared<ForkServer>());
+        slots_.push_back(std::make_shared<ServerSlot>());
     }
-    server_ = servers_.front();
+    server_ = slots_.front()->server;
+    platform::makePipe(wakeRead_, wakeWrite_);
+    platform::setNonBlocking(wakeRead_.get());
+    platform::setNonBlocking(wakeWrite_.get());
+}
+
+IsolatedExecutor::IsolatedExecutor(IsolationOptions options, std::shared_ptr<ServerSlot> slot)
+    : options_(std::move(options)), server_(slot->server), laneSlot_(std::move(slot)) {
+    ++laneSlot_->lanes;
     platform::makePipe(wakeRead_, wakeWrite_);
     platform::setNonBlocking(wakeRead_.get());
     platform::setNonBlocking(wakeWrite_.get());
@@ -54,11 +62,13 @@ IsolatedExecutor::IsolatedExecutor(IsolationOptions options) : options_(std::mov
 
 IsolatedExecutor::~IsolatedExecutor() {
     shutdown();
+    if (laneSlot_) {
+        --laneSlot_->lanes;
+    }
 }
 
 bool IsolatedExecutor::start(std::string& error) {
-    if (std::all_of(servers_.begin(), servers_.end(),
-                    [](const std::shared_ptr<ForkServer>& server) { return server->running(); })) {
+    if (server_->running()) {
         return true;
     }
     std::string worker = options_.workerPath.empty() ? findWorker() : options_.workerPath;
@@ -66,8 +76,12 @@ bool IsolatedExecutor::start(std::string& error) {
         error = "cannot find robottestingframework-worker (next to the runner, or set RTF_WORKER)";
         return false;
     }
-    for (const auto& server : servers_) {
-        if (!server->running() && !server->start(worker, error, options_.verbose)) {
+    // A lane whose server is not running starts it (an executor starts all of its own).
+    if (slots_.empty()) {
+        return server_->start(worker, error, options_.verbose);
+    }
+    for (const auto& slot : slots_) {
+        if (!slot->server->running() && !slot->server->start(worker, error, options_.verbose)) {
             return false;
         }
     }
@@ -75,30 +89,22 @@ bool IsolatedExecutor::start(std::string& error) {
 }
 
 void IsolatedExecutor::shutdown() {
-    if (ownsServer_) {
-        for (const auto& server : servers_) {
-            server->stop();
-        }
+    for (const auto& slot : slots_) {
+        slot->server->stop();
     }
 }
 
 std::unique_ptr<runner::TestExecutor> IsolatedExecutor::makeLane() {
     IsolationOptions laneOptions = options_;
     laneOptions.servers = 1;
-    auto lane = std::make_unique<IsolatedExecutor>(laneOptions);
-    // The server the fewest open lanes hold (each holds two references; this executor holds
-    // one of each server, and a second of its own server_).
-    auto lanesOn = [this](const std::shared_ptr<ForkServer>& server) {
-        return server.use_count() - (server == server_ ? 2 : 1);
-    };
-    lane->server_ = *std::min_element(
-        servers_.begin(), servers_.end(),
-        [&](const std::shared_ptr<ForkServer>& a, const std::shared_ptr<ForkServer>& b) {
-            return lanesOn(a) < lanesOn(b);
-        });
-    lane->servers_ = {lane->server_};
-    lane->ownsServer_ = false;
-    return lane;
+    if (slots_.empty()) {  // a lane's lane: the same server
+        return std::unique_ptr<runner::TestExecutor>(new IsolatedExecutor(laneOptions, laneSlot_));
+    }
+    const auto& slot =
+        *std::min_element(slots_.begin(), slots_.end(),
+                          [](const std::shared_ptr<ServerSlot>& a,
+                             const std::shared_ptr<ServerSlot>& b) { return a->lanes < b->lanes; });
+    return std::unique_ptr<runner::TestExecutor>(new IsolatedExecutor(laneOptions, slot));
 }
 
 void IsolatedExecutor::interrupt() {

@@ -58,12 +58,21 @@ public:
     void shutdown();
 
 private:
+    // A fork server and how many open lanes fork from it (makeLane picks the least used).
+    struct ServerSlot {
+        std::shared_ptr<ForkServer> server = std::make_shared<ForkServer>();
+        std::atomic<std::size_t> lanes{0};
+    };
+
+    // A lane: forks from `slot`'s server, which it counts in while it is open.
+    IsolatedExecutor(IsolationOptions options, std::shared_ptr<ServerSlot> slot);
+
     IsolationOptions options_;
-    std::shared_ptr<ForkServer> server_;                // where this executor's workers fork
-    std::vector<std::shared_ptr<ForkServer>> servers_;  // all it starts; server_ is the first
-    platform::FileDescriptor wakeRead_, wakeWrite_;     // interrupt() -> run()
+    std::shared_ptr<ForkServer> server_;              // where this executor's workers fork
+    std::vector<std::shared_ptr<ServerSlot>> slots_;  // the servers it started (none: a lane)
+    std::shared_ptr<ServerSlot> laneSlot_;            // a lane's server, counted in
+    platform::FileDescriptor wakeRead_, wakeWrite_;   // interrupt() -> run()
     std::atomic<bool> interrupted_{false};
-    bool ownsServer_ = true;
     std::vector<std::string> environment_;
 };
 
