@@ -194,8 +194,18 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
             }
         }
     }
-    if (searched != nullptr) {
-        *searched = !other.empty() ? other : "not found as " + list(names) + " in " + list(folders);
+    if (searched != nullptr && !other.empty()) {
+        *searched = other;
+    } else if (searched != nullptr) {
+        // The folder beside which it was looked for, absolute: given relative, it may read ".".
+        if (!besideDir.empty()) {
+            std::filesystem::path full(absolute(besideDir));
+            if (full.has_relative_path() && !full.has_filename()) {
+                full = full.parent_path();  // "/x/." is "/x/"
+            }
+            folders.front() = full.string();
+        }
+        *searched = "not found as " + list(names) + " in " + list(folders);
     }
     return {};
 }

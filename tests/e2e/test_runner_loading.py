@@ -16,8 +16,10 @@ def test_missing_plugin_is_a_failed_test_with_the_places_searched(tmp_path, suit
     assert re.search(r"^\s*FAILED\s+no_such_motor_test\b", run.stdout, re.M), run
     assert "cannot load no_such_motor_test" in run.stdout, run
     assert "libno_such_motor_test.so" in run.stdout, run   # the spellings tried
-    # The suite's folder was searched: ".", the run's folder, where the suite was named from.
-    assert re.search(r" in \.(, |$)", run.stdout, re.M), run
+    # The suite's folder was searched, and is said as a path, not as "." (the suite was named
+    # from its own folder).
+    assert f" in {tmp_path.resolve()}, " in run.stdout, run
+    assert not re.search(r" in \.(, |$)", run.stdout, re.M), run
     assert "1 passed, 1 failed" in run.stdout, run
 
 

@@ -68,8 +68,17 @@ TEST_F(FindPlugin, NotFoundSaysWhereItLooked) {
     std::string searched;
     EXPECT_EQ(findPlugin("nothing_here", dir_.string(), &searched), "");
     EXPECT_NE(searched.find("libnothing_here.so"), std::string::npos) << searched;
-    EXPECT_NE(searched.find(dir_.string()), std::string::npos) << searched;
+    EXPECT_NE(searched.find(" in " + dir_.string() + ", "), std::string::npos) << searched;
     EXPECT_NE(searched.find("/usr/lib"), std::string::npos) << searched;
+
+    // Beside a folder given relative, the folder is said as it is, not as ".".
+    const auto here = std::filesystem::current_path();
+    std::filesystem::current_path(dir_);
+    EXPECT_EQ(findPlugin("nothing_here", ".", &searched), "");
+    std::filesystem::current_path(here);
+    EXPECT_NE(searched.find(" in " + std::filesystem::canonical(dir_).string() + ", "),
+              std::string::npos)
+        << searched;
 
     EXPECT_EQ(findPlugin("sub/missing.so", dir_.string(), &searched), "");
     EXPECT_NE(searched.find("sub/missing.so"), std::string::npos) << searched;
