@@ -2,6 +2,7 @@
 
 #include <errno.h>
 #include <fcntl.h>
+#include <sched.h>
 #include <signal.h>
 #include <stdio.h>
 #include <sys/wait.h>
@@ -99,6 +100,11 @@ void prepareChild(pid_t server) {
 
     int code = request.role == WorkRequest::Role::Fixture ? runFixtureWorker(request, 3)
                                                           : runTestWorker(request, 3);
+    // Finished is sent: the runner goes on with the next test without waiting for this process
+    // to end. Woken by Finished, its thread is often queued behind this process on this CPU;
+    // it goes first, and ending this process (unmapping it) waits. On 2 cores, about 10 % off
+    // the time of 1 000 trivial isolated tests.
+    ::sched_yield();
     ::fflush(stdout);
     ::fflush(stderr);
     platform::flushCoverage();
