@@ -365,8 +365,10 @@ int serve(int control, const std::string& language, bool verbose) {
     };
 
     while (running) {
-        // The next worker is forked while the runner is busy with the current one.
+        // The next worker is forked while the runner is busy with the current one. The spare
+        // just handed a request, often woken on this CPU, goes first: the fork can wait.
         if (spare.pid < 0) {
+            ::sched_yield();
             makeSpare(spare, self, language);
         }
         std::vector<int> watched{control, signals.fd()};

@@ -139,6 +139,31 @@ TEST(SuiteEvents, ARunningTestWakesOnlyAtItsEnd) {
     EXPECT_EQ(wakes, 1);
 }
 
+// Tests that end in quick succession wake the scheduler once per SuiteEvents::kLookMs: the
+// ends in between wait for its next look. What happens outside a test wakes it at once.
+TEST(SuiteEvents, TestsEndingSoonAfterAWakeUpWaitForTheNextLook) {
+    Named test("t");
+    int wakes = 0;
+    SuiteEvents queue([&wakes] { ++wakes; });
+    TestResult result;
+    result.addListener(&queue);
+    result.startTest(&test);
+    result.endTest(&test);
+    EXPECT_EQ(wakes, 1);
+    EXPECT_EQ(queue.take().size(), 2u);
+    result.startTest(&test);
+    result.endTest(&test);
+    EXPECT_EQ(wakes, 1);  // taken at the next look
+    EXPECT_EQ(queue.take().size(), 2u);
+    result.addReport(nullptr, TestMessage("the suite's"));
+    EXPECT_EQ(wakes, 2);
+    EXPECT_EQ(queue.take().size(), 1u);
+    std::this_thread::sleep_for(std::chrono::milliseconds(SuiteEvents::kLookMs + 20));
+    result.startTest(&test);
+    result.endTest(&test);
+    EXPECT_EQ(wakes, 3);
+}
+
 TEST(SuiteEvents, RepetitionsTravelAsTheirOwnKindWithIndexAndCount) {
     Named test("t");
     SuiteEvents queue(nullptr);

@@ -30,17 +30,23 @@ void SuiteEvents::onEvent(const RunEvent& event) {
         events_.push_back(event);
         // A kept event carries when it happened: the collector times it so when it is published
         // later, and the reports' start times, durations and timeline lanes are the suite's own.
-        events_.back().happened = steadySeconds();
+        const double now = steadySeconds();
+        events_.back().happened = now;
         const ResultEvent::Kind kind = event.data.kind;
+        const bool testEnded = kind == ResultEvent::Kind::EndTest;
         if (kind == ResultEvent::Kind::StartTest) {
             inTest_ = true;
-        } else if (kind == ResultEvent::Kind::EndTest) {
+        } else if (testEnded) {
             inTest_ = false;
         }
         // One wake-up per batch: the scheduler takes them all at once. A running test's
-        // events wait for its end, or for the scheduler's next look (kLookMs).
-        wake = !woken_ && !inTest_;
+        // events wait for its end, or for the scheduler's next look (kLookMs); so does the end
+        // of a test that came soon after the last wake-up.
+        wake = !woken_ && !inTest_ && (!testEnded || now - lastWake_ >= kLookMs / 1000.0);
         woken_ = woken_ || wake;
+        if (wake) {
+            lastWake_ = now;
+        }
     }
     if (wake && wake_) {
         wake_();

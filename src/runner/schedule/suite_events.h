@@ -19,13 +19,16 @@ class SuiteEvents : public TestListener {
 public:
     using Event = RunEvent;
 
-    // `wake`: called (on the reporting thread) to wake the scheduler: once per batch of events,
-    // and, while a test runs, not before it ends (see kLookMs).
+    // `wake`: called (on the reporting thread) to wake the scheduler: once per batch of events;
+    // while a test runs, not before it ends; for a test's end, not again within kLookMs of the
+    // last wake-up (see kLookMs).
     explicit SuiteEvents(std::function<void()> wake) : wake_(std::move(wake)) {}
 
-    // How long the scheduler may leave events of a running test kept (its start, its checks):
-    // it looks this often while suites run. Waking it for each one cost two thread switches
-    // and five system calls a test, for a line no one can read at a thousand tests a second.
+    // How long the scheduler may leave events kept: those of a running test (its start, its
+    // checks), and the end of a test that came within kLookMs of the last wake-up. It looks
+    // this often while suites run. Waking it for each one cost two thread switches and five
+    // system calls a test, for a line no one can read at a thousand tests a second. Any
+    // other event outside a test (a suite's end, its fixture's) wakes it at once.
     static constexpr int kLookMs = 100;
 
     // The events since the last call, oldest first.
@@ -39,6 +42,7 @@ private:
     std::vector<Event> events_;
     bool woken_ = false;   // the scheduler was woken for what events_ holds
     bool inTest_ = false;  // between a StartTest and its EndTest
+    double lastWake_ = 0;  // steady seconds of the last wake-up
 };
 
 }  // namespace runner
