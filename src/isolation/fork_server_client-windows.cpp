@@ -40,7 +40,7 @@ bool ForkServer::start(const std::string& workerPath, std::string& error, bool /
     return true;
 }
 
-bool ForkServer::spawn(const WorkRequest&, int, int, int, std::string& error) {
+bool ForkServer::spawn(const WorkRequest&, int, int, int, std::string& error, pid_t*) {
     error = "no fork server on Windows: WorkerProcess starts the worker";
     return false;
 }

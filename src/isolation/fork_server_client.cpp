@@ -7,6 +7,7 @@
 
 #include <cstdlib>
 
+#include "languages/script_module_loading.h"
 #include "platform/fd_passing.h"
 #include "platform/process.h"
 #include "platform/process_tree.h"
@@ -21,6 +22,10 @@ namespace isolation {
 namespace {
 
 const char* const kWorkerName = "robottestingframework-worker";
+
+// How long spawn() waits for the server to hand over a spare before it asks the server itself:
+// a fork takes a fraction of a millisecond; this is for a machine that is swapping.
+constexpr int kSpareWaitMs = 10000;
 
 bool isExecutable(const std::string& path) {
     return !path.empty() && ::access(path.c_str(), X_OK) == 0;
@@ -64,14 +69,50 @@ bool ForkServer::start(const std::string& workerPath, std::string& error, bool v
     return true;
 }
 
+bool ForkServer::takeSpare(Spare& spare) {
+    if (spares_.empty()) {
+        std::vector<bool> ready;
+        std::string note;
+        std::vector<platform::FileDescriptor> fds;
+        SpareNote kind;
+        std::int64_t pid;
+        if (!platform::waitReadable({control_.get()}, kSpareWaitMs, ready) ||
+            !platform::receiveWithFds(control_.get(), note, fds) || fds.size() != 1 ||
+            !decodeSpareNote(note, kind, pid) || kind != SpareNote::Announced) {
+            return false;
+        }
+        spares_.push_back(Spare{static_cast<pid_t>(pid), std::move(fds[0])});
+    }
+    spare = std::move(spares_.front());
+    spares_.erase(spares_.begin());
+    return true;
+}
+
 bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int status,
-                       std::string& error) {
+                       std::string& error, pid_t* pid) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ <= 0) {
         error = "the fork server is not running";
         return false;
     }
-    if (!platform::sendWithFds(control_.get(), encodeRequest(request), {channel, output, status})) {
+    const std::string packet = encodeRequest(request);
+    Spare spare;
+    while (!languages::isScriptLanguage(request.type) && takeSpare(spare)) {
+        if (!platform::sendWithFds(spare.link.get(), packet, {channel, output})) {
+            continue;  // it died waiting: the server reaps it and hands over another
+        }
+        if (!platform::sendWithFds(control_.get(), encodeSpareNote(SpareNote::Claimed, spare.pid),
+                                   {status})) {
+            error = std::string("cannot reach the fork server: ") + ::strerror(errno);
+            return false;
+        }
+        if (pid != nullptr) {
+            *pid = spare.pid;
+        }
+        return true;
+    }
+    // A script, or no spare came: the server starts the worker.
+    if (!platform::sendWithFds(control_.get(), packet, {channel, output, status})) {
         error = std::string("cannot reach the fork server: ") + ::strerror(errno);
         return false;
     }
@@ -83,6 +124,7 @@ void ForkServer::stop() {
     if (pid_ <= 0) {
         return;
     }
+    spares_.clear();
     control_.reset();  // end of file: the server kills everything and exits
     int status;
     if (!platform::waitChild(pid_, 5.0, status)) {

@@ -7,6 +7,7 @@
 
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include "isolation/wire_format.h"
 #include "platform/file_descriptor.h"
@@ -30,8 +31,11 @@ public:
 
     // Asks for a worker running `request`. `channel` becomes its fd 3 (events out, calls in),
     // `output` its stdout and stderr; Started and Exited records are written to `status`.
-    // Thread-safe.
-    bool spawn(const WorkRequest& request, int channel, int output, int status, std::string& error);
+    // A test or fixture that is not a script goes straight to a spare the server handed over
+    // (fork_server_loop.h); its pid is then known at once, set in `pid` when given. Scripts
+    // go through the server, which hands them to its pre-started interpreter. Thread-safe.
+    bool spawn(const WorkRequest& request, int channel, int output, int status, std::string& error,
+               pid_t* pid = nullptr);
 
     // Ends the server and, through it, every worker and their descendants. Waits (bounded).
     void stop();
@@ -41,10 +45,19 @@ public:
     const std::string& workerPath() const { return workerPath_; }
 
 private:
+    struct Spare {
+        pid_t pid = -1;
+        platform::FileDescriptor link;  // the spare reads its request from the other end
+    };
+    // The next spare the server handed over, waiting (bounded) for its note if none is here
+    // yet. False when none comes (the server is gone, or cannot fork).
+    bool takeSpare(Spare& spare);
+
     platform::FileDescriptor control_;
     std::string workerPath_;
     pid_t pid_ = -1;
     std::mutex mutex_;
+    std::vector<Spare> spares_;  // handed over, not used yet (oldest first)
 };
 
 // Set beside LD_BIND_NOW when the runner set it for the server (not the user): the server

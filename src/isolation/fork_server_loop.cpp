@@ -14,6 +14,7 @@
 #include <cstring>
 #include <deque>
 #include <map>
+#include <set>
 #include <thread>
 
 #include "isolation/wire_format.h"
@@ -136,6 +137,10 @@ void prepareChild(pid_t server) {
     }
     becomeWorker(request, fds[0].get(), fds[1].get());
 }
+
+// Spares the fork server keeps handed to the runner: one for the test it is about to ask for,
+// one more for when that test ends before the next fork does.
+constexpr std::size_t kAnnouncedSpares = 2;
 
 struct Spare {
     pid_t pid = -1;
@@ -328,6 +333,12 @@ int serve(int control, const std::string& language, bool verbose) {
     Spare spare;
     std::map<std::string, LanguageServer> languageServers;
     bool prestart = language.empty() && prestartWanted();
+    // The fork server (not a language server) hands spares to the runner ahead of time: a test's
+    // request goes from the runner straight to one, so a fork in progress here never holds it
+    // up. The runner then claims the spare it used, with the status pipe (SpareNote).
+    const bool announce = language.empty();
+    std::set<pid_t> announced;            // handed to the runner, not claimed yet
+    std::map<pid_t, int> endedUnclaimed;  // how such a one ended (its claim may come after)
 
     // Hands a request to the spare (forking one now if there is none); tells the runner.
     auto handToSpare = [&](const std::string& request, std::vector<FileDescriptor>& passed) {
@@ -367,7 +378,21 @@ int serve(int control, const std::string& language, bool verbose) {
     while (running) {
         // The next worker is forked while the runner is busy with the current one. The spare
         // just handed a request, often woken on this CPU, goes first: the fork can wait.
-        if (spare.pid < 0) {
+        while (announce && running && announced.size() < kAnnouncedSpares) {
+            ::sched_yield();
+            Spare next;
+            if (!makeSpare(next, self, language)) {
+                break;  // tried again on the next event; a request meanwhile comes here
+            }
+            if (!platform::sendWithFds(control, encodeSpareNote(SpareNote::Announced, next.pid),
+                                       {next.link.get()})) {
+                ::kill(next.pid, SIGKILL);  // the runner is gone; reaped below
+                break;
+            }
+            endedUnclaimed.erase(next.pid);  // an earlier process's, with the same pid
+            announced.insert(next.pid);
+        }
+        if (!announce && spare.pid < 0) {
             ::sched_yield();
             makeSpare(spare, self, language);
         }
@@ -411,6 +436,11 @@ int serve(int control, const std::string& language, bool verbose) {
                     platform::signalProcessGroup(pid, SIGKILL);
                     sendStatus(it->second.get(), WireKind::Exited, status);
                     statusOf.erase(it);
+                } else if (announced.erase(pid) > 0) {
+                    // A worker that ended before its claim came (or a spare that died): said
+                    // when it is claimed. A new spare replaces it.
+                    platform::signalProcessGroup(pid, SIGKILL);
+                    endedUnclaimed[pid] = status;
                 }
                 if (pid == spare.pid) {
                     spare.pid = -1;  // the spare died waiting (killed from outside)
@@ -430,6 +460,23 @@ int serve(int control, const std::string& language, bool verbose) {
                     continue;
                 }
                 break;  // the runner is gone
+            }
+            SpareNote note;
+            std::int64_t claimed;
+            if (announce && fds.size() == 1 && decodeSpareNote(packet, note, claimed) &&
+                note == SpareNote::Claimed) {
+                const auto pid = static_cast<pid_t>(claimed);
+                announced.erase(pid);
+                sendStatus(fds[0].get(), WireKind::Started, pid);
+                auto ended = endedUnclaimed.find(pid);
+                if (ended != endedUnclaimed.end()) {
+                    sendStatus(fds[0].get(), WireKind::Exited, ended->second);
+                    endedUnclaimed.erase(ended);
+                } else {
+                    statusOf[pid] = std::move(fds[0]);
+                }
+                fds.clear();
+                continue;
             }
             if (!language.empty()) {
                 // Taken (see LanguageServer::pending): said before the worker can run, so a

@@ -1,7 +1,16 @@
-// The fork server's side: a process that has loaded no user code, started once per run. For
-// each request from the runner it forks a worker for one test or fixture; it tells the runner
-// the worker's pid and, later, how it ended. When the runner goes (even killed with SIGKILL),
-// it freezes and kills every process the run started, then exits.
+// The fork server's side: a process that has loaded no user code, started once per run. It
+// forks the workers of the run's tests and fixtures, each one ahead of time (a spare, waiting
+// for its request); it tells the runner each worker's pid and, later, how it ended. When the
+// runner goes (even killed with SIGKILL), it freezes and kills every process the run started,
+// then exits.
+//
+// It keeps two spares handed to the runner: for each it sends the runner a note
+// (SpareNote::Announced, wire_format.h) with the spare's end of a socket pair. The runner sends
+// a test's request straight to one of them, so that a fork in progress here never holds a test
+// up, then claims it (SpareNote::Claimed) with the status pipe, on which the server writes
+// Started and, once the worker ended, Exited (at the claim, if it ended before). A request sent
+// to the server itself (script tests, below, or when no spare came) is handed to a spare
+// forked then.
 #pragma once
 
 namespace robottestingframework {

@@ -328,5 +328,23 @@ bool decodeRequest(const std::string& data, WorkRequest& request) {
     return true;
 }
 
+std::string encodeSpareNote(SpareNote note, std::int64_t pid) {
+    std::string out(1, static_cast<char>(note));
+    putI64(out, pid);
+    return out;
+}
+
+bool decodeSpareNote(const std::string& data, SpareNote& note, std::int64_t& pid) {
+    Reader in(data.data(), data.size());
+    std::uint8_t kind;
+    if (!in.u8(kind) || !in.i64(pid) || !in.done() ||
+        (kind != static_cast<std::uint8_t>(SpareNote::Announced) &&
+         kind != static_cast<std::uint8_t>(SpareNote::Claimed))) {
+        return false;
+    }
+    note = static_cast<SpareNote>(kind);
+    return true;
+}
+
 }  // namespace isolation
 }  // namespace robottestingframework

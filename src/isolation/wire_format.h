@@ -101,5 +101,13 @@ std::string encodeRequest(const WorkRequest& request);
 // False when `data` is not exactly one well-formed request.
 bool decodeRequest(const std::string& data, WorkRequest& request);
 
+// The fork server's spares handed to the runner (fork_server_loop.h): the server announces
+// one (its pid; the spare's end of the link goes with the packet), the runner claims the one it
+// sent a request to (the status pipe goes with the packet). Never a well-formed request.
+enum class SpareNote : char { Announced = 'S', Claimed = 'C' };
+std::string encodeSpareNote(SpareNote note, std::int64_t pid);
+// False when `data` is not exactly one spare note.
+bool decodeSpareNote(const std::string& data, SpareNote& note, std::int64_t& pid);
+
 }  // namespace isolation
 }  // namespace robottestingframework

@@ -39,8 +39,13 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
         error = "cannot create the worker's pipes";
         return false;
     }
-    if (!server.spawn(request, theirChannel.get(), outputWrite.get(), statusWrite.get(), error)) {
+    pid_t pid = -1;
+    if (!server.spawn(request, theirChannel.get(), outputWrite.get(), statusWrite.get(), error,
+                      &pid)) {
         return false;
+    }
+    if (pid > 0) {
+        pid_ = pid;  // a spare the server handed over: known now, not with Started
     }
     // Only the worker (and the server, for the status) may hold the writing ends now, so end
     // of file means what it should.

@@ -335,16 +335,16 @@ TEST_F(Isolation, ManyTestsInARowShareOneForkServer) {
     }
     // The last worker may still be exiting after it said it finished.
     platform::Deadline deadline(2.0);
-    while (markedProcesses(marker).size() > 2 && !deadline.expired()) {
+    while (markedProcesses(marker).size() > 3 && !deadline.expired()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    EXPECT_LE(markedProcesses(marker).size(), 2u) << "the fork server and its spare alone";
+    EXPECT_LE(markedProcesses(marker).size(), 3u) << "the fork server and its two spares alone";
     // A worker's guard leaves within its poll interval of the worker: only the server's and the
-    // spare's remain (none where the platform has prctl).
-    while (markedProcesses(marker, Guards::Only).size() > 2 && !deadline.expired()) {
+    // spares' remain (none where the platform has prctl).
+    while (markedProcesses(marker, Guards::Only).size() > 3 && !deadline.expired()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    EXPECT_LE(markedProcesses(marker, Guards::Only).size(), 2u) << "guards of ended workers left";
+    EXPECT_LE(markedProcesses(marker, Guards::Only).size(), 3u) << "guards of ended workers left";
     recorder.starts = recorder.ends = 1;  // this test did not use the shared recorder
 }
 
@@ -438,15 +438,15 @@ TEST(IsolationRunnerDeath, NoProcessSurvivesTheRunnerBeingKilled) {
         ::_exit(0);
     }
     ASSERT_GT(runner, 0);
-    // Server, spare, worker and the worker's child. In the portable build a parent-death guard
-    // counts for a moment while it is started (before it leads its session of its own): the
-    // four must be there in three readings in a row.
+    // Server, its two spares, worker and the worker's child. In the portable build a
+    // parent-death guard counts for a moment while it is started (before it leads its session
+    // of its own): the five must be there in three readings in a row.
     platform::Deadline deadline(10.0);
     for (int steady = 0; steady < 3 && !deadline.expired();) {
-        steady = markedProcesses(marker).size() == 4 ? steady + 1 : 0;
+        steady = markedProcesses(marker).size() == 5 ? steady + 1 : 0;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
-    EXPECT_EQ(markedProcesses(marker).size(), 4u);
+    EXPECT_EQ(markedProcesses(marker).size(), 5u);
     ::kill(runner, SIGKILL);
     int status;
     ::waitpid(runner, &status, 0);
