@@ -38,6 +38,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         if (decodeRequest(bytes, request) && encodeRequest(request) != bytes) {
             __builtin_trap();  // a request read is the one written
         }
+        SpareNote note;
+        std::int64_t pid;
+        if (decodeSpareNote(bytes, note, pid) &&
+            (encodeSpareNote(note, pid) != bytes || decodeRequest(bytes, request))) {
+            __builtin_trap();  // a note read is the one written, and never a request
+        }
         return 0;
     }
     const std::size_t piece = data[0] + 1;
