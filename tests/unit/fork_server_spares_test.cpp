@@ -68,6 +68,22 @@ std::vector<WireRecord> readAll(int fd, double seconds) {
     return records;
 }
 
+// The worker's records until it says it finished (true), or it ended without (bounded).
+bool finishes(isolation::WorkerProcess& worker) {
+    std::vector<WireRecord> records;
+    platform::Deadline deadline(10.0);
+    while (!worker.exited() && !deadline.expired()) {
+        records.clear();
+        worker.pump(deadline.remainingMs(), records);
+        for (const WireRecord& record : records) {
+            if (record.kind == WireKind::Finished) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
 // The worker program as a fork server on one end of a socket pair, as ForkServer starts it.
 class ServerProcess {
 public:
@@ -133,17 +149,7 @@ TEST(ForkServerSpares, AWorkersPidIsKnownWhenItStarts) {
     isolation::WorkerProcess worker;
     ASSERT_TRUE(worker.start(server, requestFor("passing_test"), error, false)) << error;
     EXPECT_GT(worker.pid(), 0);
-    std::vector<WireRecord> records;
-    platform::Deadline deadline(10.0);
-    bool finished = false;
-    while (!finished && !worker.exited() && !deadline.expired()) {
-        records.clear();
-        worker.pump(deadline.remainingMs(), records);
-        for (const WireRecord& record : records) {
-            finished = finished || record.kind == WireKind::Finished;
-        }
-    }
-    EXPECT_TRUE(finished);
+    EXPECT_TRUE(finishes(worker));
     server.stop();
 }
 
@@ -231,16 +237,7 @@ TEST(ForkServerSpares, ASpareThatDiedIsReplaced) {
     }
     isolation::WorkerProcess worker;
     ASSERT_TRUE(worker.start(server, requestFor("passing_test"), error, false)) << error;
-    bool finished = false;
-    std::vector<WireRecord> records;
-    while (!finished && !worker.exited() && !deadline.expired()) {
-        records.clear();
-        worker.pump(deadline.remainingMs(), records);
-        for (const WireRecord& record : records) {
-            finished = finished || record.kind == WireKind::Finished;
-        }
-    }
-    EXPECT_TRUE(finished);
+    EXPECT_TRUE(finishes(worker));
     EXPECT_EQ(std::find(killed.begin(), killed.end(), worker.pid()), killed.end());
     server.stop();
 }
