@@ -6,6 +6,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include "platform/sigpipe_guard.h"
+
 namespace robottestingframework {
 namespace platform {
 
@@ -78,6 +80,7 @@ bool writeAll(int fd, const void* data, std::size_t size) {
 }
 
 bool sendAll(int socket, const std::string& data) {
+    SigpipeGuard guard;
     return putAll(socket, data.data(), data.size(), [](int to, const char* p, std::size_t n) {
         return ::send(to, p, n, noSigpipeSendFlags());
     });

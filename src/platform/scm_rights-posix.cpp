@@ -8,6 +8,7 @@
 
 #include "platform/fd_passing.h"
 #include "platform/file_descriptor.h"
+#include "platform/sigpipe_guard.h"
 
 namespace robottestingframework {
 namespace platform {
@@ -42,6 +43,7 @@ ssize_t sendWithRights(int socket, const char* data, std::size_t size,
         header->cmsg_len = CMSG_LEN(sizeof(int) * fds.size());
         std::memcpy(CMSG_DATA(header), fds.data(), sizeof(int) * fds.size());
     }
+    SigpipeGuard guard;
     ssize_t n;
     do {
         n = ::sendmsg(socket, &msg, noSigpipeSendFlags());

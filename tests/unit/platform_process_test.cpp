@@ -1,6 +1,8 @@
 // The platform layer: spawning, killing whole process trees, signal names, passing descriptors.
 #include <gtest/gtest.h>
 
+#include <errno.h>
+#include <pthread.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -71,6 +73,27 @@ pid_t spawnTree(bool ignoreTerm, pid_t& grandchild) {
 }
 
 }  // namespace
+
+// Sending to a socket whose peer is gone fails with EPIPE and raises no SIGPIPE, whose default
+// would end the runner (macOS has no MSG_NOSIGNAL: platform/sigpipe_guard.h), and leaves none
+// pending or blocked.
+TEST(SendToAGonePeer, FailsWithEpipeAndNoSignal) {
+    for (bool packets : {true, false}) {
+        FileDescriptor ours, theirs;
+        ASSERT_TRUE(makeSocketPair(ours, theirs, packets));
+        theirs.reset();
+        errno = 0;
+        EXPECT_FALSE(sendWithFds(ours.get(), "request", {}));
+        EXPECT_EQ(errno, EPIPE);
+        EXPECT_FALSE(sendAll(ours.get(), "record"));
+        sigset_t pending, mask;
+        sigemptyset(&pending);
+        ASSERT_EQ(::sigpending(&pending), 0);
+        EXPECT_NE(sigismember(&pending, SIGPIPE), 1);
+        ASSERT_EQ(::pthread_sigmask(SIG_BLOCK, nullptr, &mask), 0);
+        EXPECT_NE(sigismember(&mask, SIGPIPE), 1);
+    }
+}
 
 TEST(SignalName, NamesTheCommonSignals) {
     EXPECT_EQ(signalName(SIGSEGV), "SIGSEGV");
