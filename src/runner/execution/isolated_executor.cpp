@@ -47,14 +47,16 @@ IsolatedExecutor::IsolatedExecutor(IsolationOptions options) : options_(std::mov
         slots_.push_back(std::make_shared<ServerSlot>());
     }
     server_ = slots_.front()->server;
-    platform::makePipe(wakeRead_, wakeWrite_);
-    platform::setNonBlocking(wakeRead_.get());
-    platform::setNonBlocking(wakeWrite_.get());
+    openWakePipe();
 }
 
 IsolatedExecutor::IsolatedExecutor(IsolationOptions options, std::shared_ptr<ServerSlot> slot)
     : options_(std::move(options)), server_(slot->server), laneSlot_(std::move(slot)) {
     ++laneSlot_->lanes;
+    openWakePipe();
+}
+
+void IsolatedExecutor::openWakePipe() {
     platform::makePipe(wakeRead_, wakeWrite_);
     platform::setNonBlocking(wakeRead_.get());
     platform::setNonBlocking(wakeWrite_.get());

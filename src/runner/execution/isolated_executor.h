@@ -66,6 +66,8 @@ private:
 
     // A lane: forks from `slot`'s server, which it counts in while it is open.
     IsolatedExecutor(IsolationOptions options, std::shared_ptr<ServerSlot> slot);
+    // wakeRead_/wakeWrite_, both non-blocking.
+    void openWakePipe();
 
     IsolationOptions options_;
     std::shared_ptr<ForkServer> server_;              // where this executor's workers fork
