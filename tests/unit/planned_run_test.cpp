@@ -225,6 +225,14 @@ TEST_F(PlannedRunTest, ASelectionMatchingNothingIsNothingSelectedUnlessAllowed) 
     EXPECT_EQ(notesOf(allowed), (std::vector<std::string>{"err: warning: no test is selected"}));
 }
 
+TEST_F(PlannedRunTest, SuitesWrittenWithoutTestsRunAsRtf2RanThemWithANote) {
+    const PlannedRun plan = planRun(Options(), {suite("empty", {})}, ShardChoice());
+    EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
+    EXPECT_EQ(namesOf(plan.suites), std::vector<std::string>{});
+    EXPECT_EQ(notesOf(plan),
+              (std::vector<std::string>{"out: note: the suites given have no test"}));
+}
+
 TEST_F(PlannedRunTest, AShardKeepsItsSuitesWithTheirPlacesInTheWholeSelection) {
     const PlannedRun plan = planRun(Options(), fourSuites(), shardOf(1, 2));
     EXPECT_EQ(namesOf(plan.suites), (std::vector<std::string>{"b/b1", "d/d1"}));

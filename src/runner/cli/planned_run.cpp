@@ -20,6 +20,15 @@ void warn(PlannedRun& plan, const std::string& text) {
     plan.notes.push_back({PlanNote::Stream::Err, text});
 }
 
+bool hasTests(const std::vector<SuiteSpec>& suites) {
+    for (const auto& suite : suites) {
+        if (!suite.tests.empty()) {
+            return true;
+        }
+    }
+    return false;
+}
+
 // --rerun-failed: only the tests the report says failed. False when the run ends here.
 bool keepFailed(const Options& options, PlannedRun& plan) {
     std::vector<FailedTest> failed;
@@ -97,24 +106,24 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     if (!options.rerunFailed.empty() && !keepFailed(options, plan)) {
         return plan;
     }
-    if (!options.selection.empty()) {
-        applySelection(plan.suites, options.selection);
-    }
-    bool anyTest = false;
-    for (const auto& suite : plan.suites) {
-        anyTest = anyTest || !suite.tests.empty();
-    }
-    if (!anyTest && !options.allowEmpty && !options.list && !options.listVariables) {
-        plan.outcome = PlannedRun::Outcome::NothingSelected;
-        plan.error = options.selection.empty()
-                         ? "no test to run (the suites given have none); --allow-empty makes "
-                           "that a success"
-                         : "no test is selected (by --filter, --tag or --exclude-tag); "
-                           "--allow-empty makes that a success";
-        return plan;
-    }
-    if (!anyTest) {
-        warn(plan, "warning: no test is selected");
+    // Suites written without tests run as RTF 2.x ran them (its own tests run such a suite and
+    // expect exit 0); only a selection that leaves nothing of a plan with tests is exit 5.
+    if (!hasTests(plan.suites)) {
+        say(plan, "note: the suites given have no test");
+    } else {
+        if (!options.selection.empty()) {
+            applySelection(plan.suites, options.selection);
+        }
+        if (!hasTests(plan.suites)) {
+            if (!options.allowEmpty && !options.list && !options.listVariables) {
+                plan.outcome = PlannedRun::Outcome::NothingSelected;
+                plan.error =
+                    "no test is selected (by --filter, --tag or --exclude-tag); "
+                    "--allow-empty makes that a success";
+                return plan;
+            }
+            warn(plan, "warning: no test is selected");
+        }
     }
     if (!options.durations.empty()) {
         try {

@@ -29,8 +29,9 @@ struct PlannedRun {
         Run,             // run (or list) `suites`
         NothingToRerun,  // the --rerun-failed report has no failed test: a success
         Error,           // a configuration error, `error` says which
-        // No test is selected (--filter, --tag, --rerun-failed, an empty suite): an error of
-        // its own (exit 5, as pytest's), unless --allow-empty. Never said for a shard.
+        // The selection (--filter, --tag, --exclude-tag) leaves no test of suites that have
+        // some: an error of its own (exit 5, as pytest's), unless --allow-empty. Never said for
+        // a shard, nor for suites written without tests (RTF 2.x runs them: exit 0).
         NothingSelected,
     };
     Outcome outcome = Outcome::Run;
