@@ -177,6 +177,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         "(unless --allow-empty), 130 when interrupted by Ctrl-C "
         "(SIGINT), 143 when stopped by SIGTERM.");
     app.option_defaults()->always_capture_default(false);
+    // RTF 2.x's documentation lists -? beside --help.
+    app.set_help_flag("-h,-?,--help", "Print this help message and exit");
     options.commandLine.assign(argv, argv + argc);
 
     std::vector<std::string> outputs;
