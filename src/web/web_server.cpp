@@ -10,6 +10,7 @@
 #include "web/exclusive_port.h"
 #include "web/page_assets.h"
 #include "web/socket_error.h"
+#include "web/whole_answer.h"
 
 namespace robottestingframework {
 namespace web {
@@ -137,8 +138,19 @@ bool WebServer::start(const std::string& host, unsigned int port, std::string& e
                        attachment.contentType.rfind("image/", 0) == 0 ? "inline" : "attachment");
         res.set_content(bytes.str(), attachment.contentType.c_str());
     });
-    server.Get("/status", [this](const httplib::Request&, httplib::Response& res) {
-        res.set_content(view_.statusJson(), "application/json");
+    // RTF 2.x's protocol, as its clients read it (RTF 2.0.1's own WebProgListener test): one
+    // read of at most 255 bytes must hold the whole answer, whose JSON line ends with "\r\n".
+    // So the headers meant for the page are left out here, the body is the line, and the
+    // answer to an HTTP/1.0 request, which closes the connection, leaves in one piece.
+    server.Get("/status", [this](const httplib::Request& req, httplib::Response& res) {
+        for (const char* pageOnly :
+             {"Content-Security-Policy", "X-Frame-Options", "Referrer-Policy"}) {
+            res.headers.erase(pageOnly);
+        }
+        res.set_content(view_.statusJson() + "\r\n", "application/json");
+        if (req.version == "HTTP/1.0" && req.get_header_value("Connection") != "keep-alive") {
+            holdAnswerUntilClosed(req.local_addr, req.local_port, req.remote_addr, req.remote_port);
+        }
     });
     server.Get("/update", [this](const httplib::Request&, httplib::Response& res) {
         res.set_content(view_.logText(), "text/plain; charset=utf-8");
