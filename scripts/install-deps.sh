@@ -15,7 +15,7 @@ packages=(
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
-    python3-yaml libsqlite3-dev
+    python3-yaml libsqlite3-dev libelf-dev
     gcovr tini ccache
     clang libclang-rt-14-dev
 )

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "dll/library_naming.h"
+#include "dll/rtf2_library.h"
 
 namespace robottestingframework {
 namespace plugin {
@@ -46,6 +47,12 @@ SharedLibrary::~SharedLibrary() {
 
 bool SharedLibrary::open(const std::string& path) {
     close();
+    // Never into this process: RTF 2.x's library would clash with this one (SIGABRT at best).
+    const std::string rtf2 = rtf2LibraryNeeded(path);
+    if (!rtf2.empty()) {
+        error_ = builtAgainstRtf2(path, rtf2);
+        return false;
+    }
     ::dlerror();
     // RTLD_LOCAL: two plug-ins defining the same class names do not clash.
     handle_ = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);

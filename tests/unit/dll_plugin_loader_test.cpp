@@ -57,3 +57,22 @@ TEST(DllPluginLoader, FixtureIsNotATestAndSaysSo) {
     EXPECT_NE(fixtures.getLastError().find("it is a test plug-in"), std::string::npos)
         << fixtures.getLastError();
 }
+
+// The plug-in needs a stand-in of RTF 2.x's core library that aborts the process loading it:
+// refused, it is never loaded, and the message says how to rebuild the plug-in.
+TEST(DllPluginLoader, APluginBuiltAgainstRtf2IsRefusedBeforeLoading) {
+    DllPluginLoader loader;
+    EXPECT_EQ(loader.open(plugin("built_against_rtf2")), nullptr);
+    const std::string error = loader.getLastError();
+    EXPECT_NE(error.find("built_against_rtf2.so' was built against RTF 2.x: it needs "
+                         "librobottestingframework.so.2"),
+              std::string::npos)
+        << error;
+    EXPECT_NE(error.find("compile unchanged against this version: rebuild it"), std::string::npos)
+        << error;
+
+    DllFixturePluginLoader fixtures;
+    EXPECT_EQ(fixtures.open(plugin("built_against_rtf2")), nullptr);
+    EXPECT_NE(fixtures.getLastError().find("was built against RTF 2.x"), std::string::npos)
+        << fixtures.getLastError();
+}
