@@ -172,3 +172,23 @@ def test_test_fail_if_fails_when_the_condition_is_false_as_in_rtf2(tmp_path, lan
                      cwd=tmp_path)
     assert run.returncode == 1, run
     assert "the motor is not homed" in run.output, run
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_suite_written_without_tests_runs_as_rtf2_ran_it(tmp_path, isolation):
+    # RTF 2.0.1's own test TestRunnerLoadSimpleSuite runs exactly this file and command, and
+    # expects exit 0 (it was exit 5, "no test to run"). A selection leaving nothing is still 5.
+    (tmp_path / "testsuite.xml").write_text("""<?xml version="1.0" encoding="UTF-8"?>
+
+<suite name="test suite">
+    <description> a simple test suite</description>
+    <environment></environment>
+</suite>
+""")
+    run = run_runner("-v", "--no-output", "--isolation", isolation, "--suite", "testsuite.xml",
+                     cwd=tmp_path)
+    assert run.returncode == 0, run
+    assert "the suites given have no test" in run.stdout, run
+    assert "0 passed, 0 failed" in run.stdout, run
+    run = run_runner("--no-output", "--suite", "testsuite.xml", "--filter", "x/y", cwd=tmp_path)
+    assert run.returncode == 0, run

@@ -81,6 +81,14 @@ def test_help_lists_every_option(tmp_path):
         assert option in run.stdout, (option, run)
 
 
+@pytest.mark.parametrize("flag", ["-?", "-h", "--help"])
+def test_rtf2_help_flags_print_the_help(tmp_path, flag):
+    # RTF 2.x's documentation lists `-?, --help`; -? was refused as an unexpected argument.
+    run = run_runner(flag, cwd=tmp_path)
+    assert run.returncode == 0, run
+    assert "-h,-?,--help" in run.stdout and "--suite" in run.stdout, run
+
+
 @pytest.mark.parametrize("args,says", [
     (["--frobnicate"], "--frobnicate"),
     ([], "nothing to run"),
