@@ -34,14 +34,35 @@ def cache_value(name, default):
 LIBDIR = cache_value("CMAKE_INSTALL_LIBDIR", "lib")
 
 
+# What the caller's terminal and CI engine say, which the runner reads: the terminal (the
+# progress line and colours), a CI engine's shard and run variables, the runner's own settings.
+# A test that cares sets them itself (terminal_environment() for one on a pseudo-terminal), so
+# the suite passes the same from a terminal, with TERM=dumb or unset, and under CI=true.
+CALLER_VARIABLES = (
+    "TERM", "COLUMNS", "LINES", "NO_COLOR", "CLICOLOR", "CLICOLOR_FORCE", "FORCE_COLOR", "CI",
+    "TEST_SHARD_INDEX", "TEST_TOTAL_SHARDS", "TEST_SHARD_STATUS_FILE", "XML_OUTPUT_FILE",
+    "GTEST_SHARD_INDEX", "GTEST_TOTAL_SHARDS", "CI_NODE_INDEX", "CI_NODE_TOTAL",
+    "JOB_COMPLETION_INDEX", "RTF_SHARD_COUNT", "RTF_RUN_ID", "RTF_PLUGIN_PATH", "RTF_PRESTART",
+    "GITHUB_RUN_ID", "GITHUB_RUN_ATTEMPT", "CI_PIPELINE_ID", "BUILD_TAG", "BUILDKITE_BUILD_ID",
+    "TEST_INVOCATION_ID", "TEST_TMPDIR")
+
+
 def _changes_a_runtime(name):
     """True for a variable that changes how the runtimes under test behave: the embedded
     Python (PYTHONUNBUFFERED once hid that a test's print() was lost), Ruby, Lua, the dynamic
-    loader, the locale. A user's shell has none of them, or others; tests/user-environment.cmake
-    removes the same ones from ctest's environment."""
+    loader, the locale, and the caller's terminal and CI engine (CALLER_VARIABLES). A user's
+    shell has none of them, or others; tests/user-environment.cmake removes the same ones from
+    ctest's environment."""
     return (name.startswith(("PYTHON", "RUBY", "GEM_", "LUA_", "LC_"))
             or name in ("LANG", "LANGUAGE", "VIRTUAL_ENV")
-            or name.startswith("LD_"))
+            or name.startswith("LD_")
+            or name in CALLER_VARIABLES)
+
+
+def terminal_environment(**more):
+    """The variables of a run on a user's terminal (a colour xterm, 80 columns), for a test
+    that starts the runner on a pseudo-terminal: it must not depend on the caller's TERM."""
+    return {"TERM": "xterm-256color", "COLUMNS": "80", **more}
 
 
 # The tests run the runner in a user's environment, not in the developer's: as a fresh

@@ -13,7 +13,7 @@ import time
 
 import pytest
 
-from conftest import RUNNER, plugin, run_runner
+from conftest import RUNNER, plugin, run_runner, terminal_environment
 
 ERASE = "\r\033[K"
 COLOURS = re.compile(r"\033\[3[123]m")
@@ -38,9 +38,7 @@ def run_on_terminal(args, cwd, env=None, timeout=60):
     """Runs the runner with stdout and stderr on a pseudo-terminal; (status, what it wrote)."""
     master, slave = pty.openpty()
     full_env = dict(os.environ)
-    full_env.pop("NO_COLOR", None)
-    full_env["TERM"] = "xterm"
-    full_env.update(env or {})
+    full_env.update(terminal_environment(**(env or {})))
     proc = subprocess.Popen([RUNNER, *args], cwd=cwd, stdin=subprocess.DEVNULL, stdout=slave,
                             stderr=slave, env=full_env, close_fds=True)
     os.close(slave)

@@ -406,7 +406,7 @@ class TestCase:
 def test_live_status_line_only_on_a_terminal(tmp_path):
     import pty
     import subprocess
-    from conftest import RUNNER
+    from conftest import RUNNER, terminal_environment
     log = tmp_path / "stamps.log"
     stamp_fixture(tmp_path, wait=0.5)
     args = []
@@ -415,7 +415,8 @@ def test_live_status_line_only_on_a_terminal(tmp_path):
     leader, follower = pty.openpty()
     proc = subprocess.Popen([RUNNER, *map(str, args), "-j", "2", "--no-output"],
                             cwd=tmp_path, stdout=follower, stderr=follower,
-                            stdin=subprocess.DEVNULL, start_new_session=True)
+                            stdin=subprocess.DEVNULL, start_new_session=True,
+                            env={**os.environ, **terminal_environment()})
     os.close(follower)
     seen = b""
     deadline = time.monotonic() + 60

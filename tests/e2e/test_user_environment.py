@@ -217,3 +217,15 @@ def test_a_cpp_plugins_unflushed_printf_and_cout_reach_the_reports(tmp_path, iso
     assert r.returncode == 0, r
     assert_reported(["CPP-PRINTF-LINE", "CPP-COUT-LINE", "CPP-STDERR-LINE", "CPP-COUT-UNENDED",
                      "CPP-PRINTF-UNENDED"], r, junit, ctrf)
+
+
+def test_the_callers_terminal_and_ci_engine_do_not_reach_the_tests():
+    # Issue 40: with TERM=dumb (as many CI runners have it) a pseudo-terminal test kept the
+    # caller's TERM and failed. The harness removes what the runner reads of the caller's
+    # terminal and CI engine (conftest.CALLER_VARIABLES, tests/user-environment.cmake.in);
+    # ./run.sh test passes the same with TERM=dumb, TERM unset, or CI=true.
+    import os
+    from conftest import CALLER_VARIABLES
+    for name in ("TERM", "COLUMNS", "NO_COLOR", "CI", "CI_NODE_INDEX", "GTEST_SHARD_INDEX"):
+        assert name in CALLER_VARIABLES, name
+        assert name not in os.environ, name
