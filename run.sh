@@ -3,9 +3,10 @@
 # then:
 #   ./run.sh example    runs the example suites; reports (text, JUnit, TAP, JSON, HTML) in
 #                       build/example-reports/
-#   ./run.sh test       runs every test (ctest), then the sanitizer job, the portable-POSIX
-#                       job and the Windows job (below); last line "N passed, N failed" over
-#                       all four
+#   ./run.sh test       runs every test (ctest), then RTF 2.0.1's own tests against the
+#                       installed tree (rtf2_job), the sanitizer job, the portable-POSIX job
+#                       and the Windows job (below); last line "N passed, N failed" over all
+#   ./run.sh rtf2       RTF 2.0.1's own tests alone (scripts/rtf2-tests.sh, build/rtf2/)
 #   ./run.sh portable   the portable-POSIX job alone: builds build-portable/ with
 #                       -DRTF_PORTABLE_POSIX=ON (the macOS code paths, on Linux) and runs the
 #                       unit tests and the isolation, interrupt, fixture and hostile-input
@@ -34,7 +35,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|sanitize|portable|windows|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
+    echo "usage: $0 example|test|rtf2|sanitize|portable|windows|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -230,6 +231,21 @@ windows_job() {
     return $status
 }
 
+# The RTF 2.x job: RTF 2.0.1's own tests/ tree, from Debian 12's source package, built unchanged
+# with its own CMake helpers against this build installed (scripts/rtf2-tests.sh, everything in
+# <build dir>/rtf2/), then its ctest: every test but misc::check_license (which checks the
+# licence headers of RTF's own sources) counts in the closing line.
+rtf2_job() {
+    if ! scripts/rtf2-tests.sh "$dir"; then
+        echo "run.sh: building RTF 2.0.1's tests failed" >&2
+        failed_total=$((failed_total + 1))
+        return 1
+    fi
+    # One at a time, as RTF 2.x ran them: its add_suite test's cleanup (FIXTURES_CLEANUP of a
+    # fixture no test requires) would otherwise remove the demo's folder while it is built.
+    run_ctest rtf2 "$dir/rtf2/build" -j1 -E '^misc::check_license$'
+}
+
 # The coverage job: build-coverage/ with gcov counters (Debug, so lines map to the code), every
 # test, then gcovr over src/: an HTML report (coverage/index.html, a page per file), a text one
 # (coverage.txt) and the table per folder of src/ (coverage-folders.md, as README.md shows it).
@@ -356,9 +372,17 @@ test)
     configure "$dir"
     build "$dir"
     run_ctest tests "$dir" || true
+    rtf2_job || true
     sanitizer_job || true
     portable_job || true
     windows_job || true
+    finish
+    ;;
+rtf2)
+    scripts/install-deps.sh
+    configure "$dir"
+    build "$dir"
+    rtf2_job || true
     finish
     ;;
 sanitize)
