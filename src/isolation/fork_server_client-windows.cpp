@@ -40,7 +40,8 @@ bool ForkServer::start(const std::string& workerPath, std::string& error, bool /
     return true;
 }
 
-bool ForkServer::spawn(const WorkRequest&, int, int, int, std::string& error, pid_t*) {
+bool ForkServer::spawn(const WorkRequest&, int, int, int, std::string& error, pid_t*,
+                       const std::vector<int>&) {
     error = "no fork server on Windows: WorkerProcess starts the worker";
     return false;
 }

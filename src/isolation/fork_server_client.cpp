@@ -89,7 +89,7 @@ bool ForkServer::takeSpare(Spare& spare) {
 }
 
 bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int status,
-                       std::string& error, pid_t* pid) {
+                       std::string& error, pid_t* pid, const std::vector<int>& network) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (pid_ <= 0) {
         error = "the fork server is not running";
@@ -98,7 +98,9 @@ bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int 
     const std::string packet = encodeRequest(request);
     Spare spare;
     while (!languages::isScriptLanguage(request.type) && takeSpare(spare)) {
-        if (!platform::sendWithFds(spare.link.get(), packet, {channel, output})) {
+        std::vector<int> fds{channel, output};
+        fds.insert(fds.end(), network.begin(), network.end());
+        if (!platform::sendWithFds(spare.link.get(), packet, fds)) {
             continue;  // it died waiting: the server reaps it and hands over another
         }
         if (!platform::sendWithFds(control_.get(), encodeSpareNote(SpareNote::Claimed, spare.pid),
@@ -112,7 +114,9 @@ bool ForkServer::spawn(const WorkRequest& request, int channel, int output, int 
         return true;
     }
     // A script, or no spare came: the server starts the worker.
-    if (!platform::sendWithFds(control_.get(), packet, {channel, output, status})) {
+    std::vector<int> fds{channel, output, status};
+    fds.insert(fds.end(), network.begin(), network.end());
+    if (!platform::sendWithFds(control_.get(), packet, fds)) {
         error = std::string("cannot reach the fork server: ") + ::strerror(errno);
         return false;
     }

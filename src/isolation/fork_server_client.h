@@ -33,9 +33,10 @@ public:
     // `output` its stdout and stderr; Started and Exited records are written to `status`.
     // A test or fixture that is not a script goes straight to a spare the server handed over
     // (fork_server_loop.h); its pid is then known at once, set in `pid` when given. Scripts
-    // go through the server, which hands them to its pre-started interpreter. Thread-safe.
+    // go through the server, which hands them to its pre-started interpreter. `network`: the
+    // namespaces of a private network, passed along for the worker to join. Thread-safe.
     bool spawn(const WorkRequest& request, int channel, int output, int status, std::string& error,
-               pid_t* pid = nullptr);
+               pid_t* pid = nullptr, const std::vector<int>& network = {});
 
     // Ends the server and, through it, every worker and their descendants. Waits (bounded).
     void stop();

@@ -25,6 +25,7 @@
 #include "platform/fd_passing.h"
 #include "platform/file_descriptor.h"
 #include "platform/fork_template.h"
+#include "platform/private_network.h"
 #include "platform/process.h"
 #include "platform/process_tree.h"
 #include "platform/signal_pipe.h"
@@ -35,6 +36,10 @@ namespace isolation {
 namespace {
 
 using platform::FileDescriptor;
+
+// A request's descriptors after its channel, output (and status, to the server): those of a
+// private network, its user namespace and its network namespace.
+constexpr std::size_t kMaxNetworkFds = 2;
 
 // The descriptors a pre-started runtime opened (Ruby's internal pipes): its workers keep them.
 std::vector<int> g_runtimeDescriptors;
@@ -70,8 +75,18 @@ void prepareChild(pid_t server) {
     ::sigprocmask(SIG_SETMASK, &none, nullptr);
 }
 
-// Become the worker of `request`. Never returns.
-[[noreturn]] void becomeWorker(const WorkRequest& request, int channel, int output) {
+// Become the worker of `request`; first, in `network` when given (its suite's private network:
+// the namespaces to join, platform/private_network.h). Never returns.
+[[noreturn]] void becomeWorker(const WorkRequest& request, int channel, int output,
+                               const std::vector<int>& network) {
+    std::string refused;
+    if (!network.empty() && !platform::joinPrivateNetwork(network, refused)) {
+        const std::string line =
+            "robottestingframework-worker: cannot join the suite's private network: " + refused +
+            "\n";
+        platform::writeAll(output, line);
+        ::_exit(125);
+    }
     // 0: /dev/null (the server's since it started), 1 and 2: the output pipe, 3: the channel,
     // close-on-exec (a program the test runs must not write on our channel); nothing else is
     // inherited. The spare received both descriptors close-on-exec on the lowest free numbers:
@@ -131,11 +146,16 @@ void prepareChild(pid_t server) {
     std::string packet;
     std::vector<FileDescriptor> fds;
     WorkRequest request;
-    if (!platform::receiveWithFds(link, packet, fds) || fds.size() != 2 ||
-        !decodeRequest(packet, request)) {
+    // The channel, the output, then the namespaces of a private network if any.
+    if (!platform::receiveWithFds(link, packet, fds) || fds.size() < 2 ||
+        fds.size() > 2 + kMaxNetworkFds || !decodeRequest(packet, request)) {
         ::_exit(0);  // the server is gone or shutting down
     }
-    becomeWorker(request, fds[0].get(), fds[1].get());
+    std::vector<int> network;
+    for (std::size_t i = 2; i < fds.size(); ++i) {
+        network.push_back(fds[i].get());
+    }
+    becomeWorker(request, fds[0].get(), fds[1].get(), network);
 }
 
 // Spares the fork server keeps handed to the runner: one for the test it is about to ask for,
@@ -347,8 +367,11 @@ int serve(int control, const std::string& language, bool verbose) {
             if (spare.pid < 0 && !makeSpare(spare, self, language)) {
                 break;
             }
-            if (platform::sendWithFds(spare.link.get(), request,
-                                      {passed[0].get(), passed[1].get()})) {
+            std::vector<int> handed{passed[0].get(), passed[1].get()};
+            for (std::size_t i = 3; i < passed.size(); ++i) {
+                handed.push_back(passed[i].get());  // a private network's
+            }
+            if (platform::sendWithFds(spare.link.get(), request, handed)) {
                 pid = spare.pid;
             } else {
                 ::kill(spare.pid, SIGKILL);  // a broken spare; reaped as an orphan
@@ -484,7 +507,8 @@ int serve(int control, const std::string& language, bool verbose) {
                 platform::sendWithFds(control, "taken", {});
             }
             WorkRequest request;
-            if (fds.size() != 3 || !decodeRequest(packet, request)) {
+            if (fds.size() < 3 || fds.size() > 3 + kMaxNetworkFds ||
+                !decodeRequest(packet, request)) {
                 continue;  // not a request we understand; its descriptors close here
             }
             if (prestart && isScriptLanguage(request.type)) {
@@ -494,9 +518,12 @@ int serve(int control, const std::string& language, bool verbose) {
                 }
                 // It answers the runner itself (Started, Exited) on the status descriptor. The
                 // request stays ours until it says it took it: one sent as it dies is not lost.
+                std::vector<int> forwarded;
+                for (const auto& fd : fds) {
+                    forwarded.push_back(fd.get());
+                }
                 if (entry.pid > 0 &&
-                    platform::sendWithFds(entry.control.get(), packet,
-                                          {fds[0].get(), fds[1].get(), fds[2].get()})) {
+                    platform::sendWithFds(entry.control.get(), packet, forwarded)) {
                     entry.pending.emplace_back(packet, std::move(fds));
                     fds.clear();
                     continue;

@@ -31,7 +31,7 @@ WorkerProcess::~WorkerProcess() {
 }
 
 bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error,
-                          bool waitForPid) {
+                          bool waitForPid, const std::vector<int>& network) {
     platform::FileDescriptor theirChannel, outputWrite, statusWrite;
     if (!platform::makeSocketPair(channel_, theirChannel, false) ||
         !platform::makePipe(output_fd_, outputWrite) ||
@@ -41,7 +41,7 @@ bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::s
     }
     pid_t pid = -1;
     if (!server.spawn(request, theirChannel.get(), outputWrite.get(), statusWrite.get(), error,
-                      &pid)) {
+                      &pid, network)) {
         return false;
     }
     if (pid > 0) {

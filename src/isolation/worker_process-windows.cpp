@@ -28,7 +28,7 @@ WorkerProcess::~WorkerProcess() {
 }
 
 bool WorkerProcess::start(ForkServer& server, const WorkRequest& request, std::string& error,
-                          bool /*waitForPid*/) {
+                          bool /*waitForPid*/, const std::vector<int>& /*network*/) {
     platform::FileDescriptor callsRead, eventsWrite, outputWrite;
     if (!platform::makePipe(callsRead, calls_) || !platform::makePipe(channel_, eventsWrite) ||
         !platform::makePipe(output_fd_, outputWrite)) {

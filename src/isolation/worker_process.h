@@ -33,8 +33,10 @@ public:
     // Asks `server` for a worker. With `waitForPid`, waits (bounded) until the server reports
     // the worker's pid; without, the pid arrives with the worker's first events (a test need
     // not wait a round trip for it) and is waited for only when the worker must be signalled.
+    // `network`: the namespaces of a private network the worker joins before anything else
+    // (platform/private_network.h); empty: the machine's network.
     bool start(ForkServer& server, const WorkRequest& request, std::string& error,
-               bool waitForPid = true);
+               bool waitForPid = true, const std::vector<int>& network = {});
     // -1 until the server reported it.
     pid_t pid() const { return pid_; }
 

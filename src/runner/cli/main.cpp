@@ -21,6 +21,7 @@
 #include "runner/cli/merge_command.h"
 #include "runner/cli/options.h"
 #include "runner/cli/planned_run.h"
+#include "runner/cli/private_networks.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/progress_plan.h"
 #include "runner/cli/run_facts.h"
@@ -76,6 +77,16 @@ int main(int argc, char** argv) {
     }
     if (options.list || options.listVariables) {
         return listCommand(options, planned, inputs.overrides);
+    }
+    {
+        std::string error, cost;
+        if (!preparePrivateNetworks(options, planned.suites, error, cost)) {
+            std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+            return configurationError;
+        }
+        if (options.verbose && !cost.empty()) {
+            std::printf("%s: %s\n", programName, cost.c_str());
+        }
     }
     std::fflush(stdout);
 

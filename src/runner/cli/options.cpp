@@ -245,6 +245,13 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "(in the runner's process)")
         ->type_name("MODE")
         ->check(CLI::IsMember({"none", "process"}));
+    std::string network = "host";
+    app.add_option("--network", network,
+                   "private: every suite runs in a network of its own, loopback only, so suites "
+                   "side by side bind the same fixed ports (Linux); host: the machine's network, "
+                   "unless a suite says network=\"private\" (the default)")
+        ->type_name("NETWORK")
+        ->check(CLI::IsMember({"private", "host"}));
     app.add_option("--timeout", options.timeout,
                    "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
                    "and a test's timeout=\"...\" win (default: none)")
@@ -403,6 +410,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
     }
 
     options.isolation = isolation == "none" ? Isolation::None : Isolation::Process;
+    options.privateNetworks = network == "private";
 
     if (!jobs.empty()) {
         const std::string problem = checkJobs(jobs, options.jobs);

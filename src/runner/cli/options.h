@@ -51,9 +51,10 @@ struct Options {
     bool verbose = false;                  // --verbose/-v: reports and output on the console
     std::vector<std::string> commandLine;  // argv as given, for the reports' run facts
     Isolation isolation = Isolation::Process;  // --isolation process|none
-    double timeout = 0;                        // --timeout SECONDS for every test; 0: none
-    bool failFast = false;                     // --fail-fast: the first failure stops the run
-    bool allowEmpty = false;                   // --allow-empty: no test selected is a success
+    bool privateNetworks = false;      // --network private: every suite in a network of its own
+    double timeout = 0;                // --timeout SECONDS for every test; 0: none
+    bool failFast = false;             // --fail-fast: the first failure stops the run
+    bool allowEmpty = false;           // --allow-empty: no test selected is a success
     unsigned int retries = 0;          // --retries N: a failing test runs again up to N times
     bool failOnFlaky = false;          // --fail-on-flaky: a flaky test fails the run
     unsigned int repeatUntilFail = 0;  // --repeat-until-fail N; 0: not given (once)

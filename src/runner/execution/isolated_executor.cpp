@@ -10,6 +10,7 @@
 #include "languages/plugin_locator.h"
 #include "languages/test_loader.h"
 #include "platform/clock.h"
+#include "platform/private_network.h"
 #include "platform/process.h"
 #include "platform/signal_name.h"
 
@@ -142,7 +143,9 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     }
     WorkerProcess worker;
     if (start(error)) {
-        worker.start(*server_, request, error, false);  // the pid comes with the events
+        // The pid comes with the events.
+        worker.start(*server_, request, error, false,
+                     network_ ? network_->descriptors() : std::vector<int>());
     }
     if (!error.empty()) {
         relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker", error));

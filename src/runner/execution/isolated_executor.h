@@ -31,7 +31,9 @@ struct IsolationOptions {
     std::size_t servers = 1;
 };
 
-class IsolatedExecutor : public runner::TestExecutor, public runner::WorkerEnvironment {
+class IsolatedExecutor : public runner::TestExecutor,
+                         public runner::WorkerEnvironment,
+                         public runner::WorkerNetwork {
 public:
     explicit IsolatedExecutor(IsolationOptions options = IsolationOptions());
     ~IsolatedExecutor() override;
@@ -52,6 +54,10 @@ public:
     // Given to every test this executor runs from now on.
     void setWorkerEnvironment(std::vector<std::string> variables) override {
         environment_ = std::move(variables);
+    }
+    // Every test this executor runs from now on runs in `network` (a lane's suite's).
+    void setWorkerNetwork(std::shared_ptr<const platform::PrivateNetwork> network) override {
+        network_ = std::move(network);
     }
 
     // Ends the fork server and every process the run started. The destructor does it too.
@@ -76,6 +82,7 @@ private:
     platform::FileDescriptor wakeRead_, wakeWrite_;   // interrupt() -> run()
     std::atomic<bool> interrupted_{false};
     std::vector<std::string> environment_;
+    std::shared_ptr<const platform::PrivateNetwork> network_;
 };
 
 }  // namespace isolation

@@ -13,6 +13,7 @@
 
 #include "isolation/event_relay.h"
 #include "platform/clock.h"
+#include "platform/private_network.h"
 #include "platform/process.h"
 #include "platform/process_tree.h"
 
@@ -152,7 +153,8 @@ bool IsolatedFixture::call(const std::string& name, const std::string& payload) 
         worker_.reset(new WorkerProcess());
         std::string error;
         request_.param = getParam();  // the scheduler may have filled in ${resource.NAME}
-        if (!worker_->start(*server_, request_, error)) {
+        if (!worker_->start(*server_, request_, error, true,
+                            network_ ? network_->descriptors() : std::vector<int>())) {
             failure_ = "cannot start fixture " + getName() + ": " + error;
             worker_.reset();
         } else {

@@ -27,7 +27,8 @@ namespace isolation {
 
 class IsolatedFixture : public FixtureManager,
                         public runner::InterruptibleFixture,
-                        public runner::WorkerEnvironment {
+                        public runner::WorkerEnvironment,
+                        public runner::WorkerNetwork {
 public:
     IsolatedFixture(std::shared_ptr<ForkServer> server, WorkRequest request,
                     IsolationOptions options);
@@ -42,6 +43,10 @@ public:
     void setWorkerEnvironment(std::vector<std::string> variables) override {
         request_.variables = std::move(variables);
     }
+    // The worker joins it when it starts (at the first call).
+    void setWorkerNetwork(std::shared_ptr<const platform::PrivateNetwork> network) override {
+        network_ = std::move(network);
+    }
 
     // Why the last call failed (empty when it returned false without saying why).
     std::string failure() const { return failure_; }
@@ -55,6 +60,7 @@ private:
 
     std::shared_ptr<ForkServer> server_;
     WorkRequest request_;
+    std::shared_ptr<const platform::PrivateNetwork> network_;
     IsolationOptions options_;
     std::unique_ptr<WorkerProcess> worker_;
     platform::FileDescriptor writer_;  // our end of the channel, for calls (main thread only)

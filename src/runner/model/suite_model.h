@@ -75,8 +75,13 @@ struct SuiteSpec {
     std::vector<std::string> tags;  // tags="..." of the suite: given to each of its tests
     std::vector<FixtureSpec> fixtures;
     std::vector<TestSpec> tests;
-    std::vector<ResourceSpec> resources;     // as written, in document order
-    bool exclusive = false;                  // exclusive="true": runs alone
+    std::vector<ResourceSpec> resources;  // as written, in document order
+    bool exclusive = false;               // exclusive="true": runs alone
+    // network="private" (or --network private): its fixtures, tests and what they start live
+    // in a network of their own (platform/private_network.h); "host" (the default): the
+    // machine's.
+    enum class Network { Host, Private };
+    Network network = Network::Host;
     std::vector<VariableValue> variables;    // by name
     std::vector<std::string> variablesUsed;  // the names its ${...} looked up
     SourceLocation where;

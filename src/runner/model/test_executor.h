@@ -14,6 +14,9 @@
 #include "runner/model/suite_model.h"
 
 namespace robottestingframework {
+namespace platform {
+class PrivateNetwork;  // platform/private_network.h
+}  // namespace platform
 namespace runner {
 
 // A fixture handle whose set-up or check in progress can be cut short when the run is
@@ -30,6 +33,15 @@ class WorkerEnvironment {
 public:
     virtual ~WorkerEnvironment() = default;
     virtual void setWorkerEnvironment(std::vector<std::string> variables) = 0;
+};
+
+// Something that starts worker processes and can put them in a suite's private network
+// (<suite network="private">): each worker joins it before it loads anything. nullptr: the
+// machine's network.
+class WorkerNetwork {
+public:
+    virtual ~WorkerNetwork() = default;
+    virtual void setWorkerNetwork(std::shared_ptr<const platform::PrivateNetwork> network) = 0;
 };
 
 class TestExecutor {

@@ -3,11 +3,15 @@
 namespace robottestingframework {
 namespace runner {
 
-void SuiteLane::open(std::vector<std::string> environment) {
+void SuiteLane::open(std::vector<std::string> environment,
+                     std::shared_ptr<const platform::PrivateNetwork> network) {
     std::unique_ptr<TestExecutor> lane = base_.makeLane();
     if (lane) {
         if (auto* holder = dynamic_cast<WorkerEnvironment*>(lane.get())) {
             holder->setWorkerEnvironment(std::move(environment));
+        }
+        if (auto* holder = dynamic_cast<WorkerNetwork*>(lane.get())) {
+            holder->setWorkerNetwork(std::move(network));
         }
     }
     std::lock_guard<std::mutex> lock(mutex_);

@@ -19,8 +19,10 @@ public:
     explicit SuiteLane(TestExecutor& base) : base_(base) {}
 
     // Before the suite runs (on the scheduler's thread): a lane of its own when the executor
-    // has lanes, with `environment` ("NAME=VALUE") for its workers.
-    void open(std::vector<std::string> environment);
+    // has lanes, with `environment` ("NAME=VALUE") for its workers, and its private network
+    // (nullptr: the machine's).
+    void open(std::vector<std::string> environment,
+              std::shared_ptr<const platform::PrivateNetwork> network = nullptr);
     // After the suite ran: back to the run's executor.
     void close();
 

@@ -9,6 +9,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "platform/environment.h"
+#include "platform/private_network.h"
 #include "variables/variables.h"
 
 namespace robottestingframework {
@@ -46,6 +47,8 @@ struct Scheduler::Job {
     std::vector<SuiteEvents::Event> pending;  // taken, not yet handed on (a later suite)
     std::string waitSaid;                     // what it was last said to wait for
     Current current;
+    // network="private": its network while it runs (its workers hold it too while they live).
+    std::shared_ptr<const platform::PrivateNetwork> network;
 };
 
 Scheduler::Scheduler(RunPlan& plan, ResourcePools pools, SchedulerSettings settings)
@@ -183,6 +186,18 @@ void Scheduler::start(Job& job) {
     for (const auto& pool : job.held.items) {
         environment.push_back(resourceVariable(pool.first) + "=" + value(pool.first));
     }
+    if (spec.network == SuiteSpec::Network::Private) {
+        // Checked before the run (cli/private_networks.h); one that fails now (the kernel's
+        // limit of namespaces) stops the suite rather than run it in the machine's network.
+        std::string error;
+        job.network = platform::PrivateNetwork::create(error);
+        if (!job.network) {
+            table_.release(job.held);
+            job.held = ResourceTable::Held();
+            notRun(job, TestMessage("not run: " + error), true);
+            return;
+        }
+    }
     const std::vector<FixtureManager*> fixtures = plan_.fixtures(i);
     for (std::size_t f = 0; f < fixtures.size() && f < fixtureParams_[i].size(); ++f) {
         spec.fixtures[f].param = variables::fillResources(fixtureParams_[i][f], value);
@@ -190,14 +205,27 @@ void Scheduler::start(Job& job) {
         if (auto* holder = dynamic_cast<WorkerEnvironment*>(fixtures[f])) {
             holder->setWorkerEnvironment(environment);
         }
+        if (auto* holder = dynamic_cast<WorkerNetwork*>(fixtures[f])) {
+            holder->setWorkerNetwork(job.network);
+        }
     }
-    plan_.lane(i).open(environment);
+    plan_.lane(i).open(environment, job.network);
     TestSuite& suite = plan_.suite(i);
     suite.setGate(&plan_.gate());
     job.state = Job::State::Running;
     ++running_;
     aloneRunning_ = aloneRunning_ || spec.exclusive;
     if (settings_.inlineSuites) {
+        // --isolation none: this thread, and what it starts, in the suite's network while it
+        // runs (cli/private_networks.h checked that the thread can join it).
+        platform::ThreadInNetwork inNetwork;
+        std::string error;
+        if (job.network && !inNetwork.enter(*job.network, error)) {
+            suite.reportNotRun(job.result, TestMessage("not run: its private network: " + error),
+                               true);
+            finish(job);
+            return;
+        }
         // One suite at a time in this process: its items are this process's environment
         // while it runs.
         for (const auto& variable : environment) {
@@ -232,6 +260,7 @@ void Scheduler::finish(Job& job) {
         job.thread.join();
     }
     plan_.lane(job.index).close();
+    job.network.reset();
     table_.release(job.held);
     job.held = ResourceTable::Held();
     job.state = Job::State::Finished;

@@ -303,7 +303,7 @@ public:
         } else if (rootName != "suite") {
             fail(root, "the root element is <" + rootName + ">; expected <suite name=\"...\">");
         }
-        checkAttributes(root, {"name", "tags", "exclusive"});
+        checkAttributes(root, {"name", "tags", "exclusive", "network"});
 
         SuiteSpec suite;
         suite.where = where(root);
@@ -313,6 +313,16 @@ public:
                 fail(root, "exclusive=\"" + exclusive + "\": expected true or false");
             }
             suite.exclusive = exclusive == "true";
+        }
+        if (root.attribute("network")) {
+            const std::string network = trim(root.attribute("network").value());
+            if (network != "private" && network != "host") {
+                fail(root, "network=\"" + network +
+                               "\": expected private (a network of its own) or host (the "
+                               "machine's)");
+            }
+            suite.network =
+                network == "private" ? SuiteSpec::Network::Private : SuiteSpec::Network::Host;
         }
         suite.name = trim(root.attribute("name").value());
         if (suite.name.empty()) {
