@@ -12,6 +12,7 @@
 #include <signal.h>
 #include <string.h>
 #include <sys/ioctl.h>
+#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/syscall.h>
 #include <sys/wait.h>
@@ -142,6 +143,9 @@ std::unique_ptr<PrivateNetwork> createInUserNamespace(std::string& error) {
             ::close(fd);
             return code;
         };
+        // A process that changed its user (setuid) is not dumpable: its /proc/self/uid_map
+        // would be root's to write, not its own.
+        ::prctl(PR_SET_DUMPABLE, 1, 0, 0, 0);
         if (::unshare(CLONE_NEWUSER | CLONE_NEWNET) != 0) {
             answer[0] = 1;
             answer[1] = errno;

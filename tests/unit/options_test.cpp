@@ -171,6 +171,7 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{"-t", "a.so", "-o", "yaml:out.yaml"}, "(expected text, junit, tap, json or html)"},
         {{"-t", "a.so", "-o", "junit:"}, "no file name"},
         {{"-t", "a.so", "--isolation", "thread"}, "isolation"},
+        {{"-t", "a.so", "--network", "bridge"}, "--network: bridge not in {private,host}"},
         {{"-t", "a.so", "--timeout", "-1"}, "timeout"},
         {{"-t", "a.so", "--timeout", "soon"}, "timeout"},
         {{"-t", "a.so", "--var", "novalue"}, "NAME=VALUE"},
@@ -224,6 +225,18 @@ TEST(Options, ProcessIsolationIsTheDefault) {
     EXPECT_EQ(chosen.isolation, Isolation::None);
     EXPECT_EQ(chosen.timeout, 2.5);
     EXPECT_TRUE(chosen.failFast);
+}
+
+TEST(Options, NetworkPrivateOrHost) {
+    Options options;
+    ASSERT_TRUE(runs(parse({"-t", "a.so"}, options)));
+    EXPECT_FALSE(options.privateNetworks);
+    Options isolated;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--network", "private"}, isolated)));
+    EXPECT_TRUE(isolated.privateNetworks);
+    Options host;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--network", "host"}, host)));
+    EXPECT_FALSE(host.privateNetworks);
 }
 
 TEST(Options, HelpAndVersionExitWithZero) {

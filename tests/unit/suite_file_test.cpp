@@ -115,6 +115,22 @@ TEST(SuiteFile, UnknownAttributeIsAnError) {
               std::string::npos);
 }
 
+TEST(SuiteFile, NetworkIsPrivateOrHost) {
+    EXPECT_EQ(parse("<suite><test>a.so</test></suite>").network, SuiteSpec::Network::Host);
+    EXPECT_EQ(parse("<suite network='private'><test>a.so</test></suite>").network,
+              SuiteSpec::Network::Private);
+    EXPECT_EQ(parse("<suite network=' host '><test>a.so</test></suite>").network,
+              SuiteSpec::Network::Host);
+    for (const char* bad : {"Private", "none", "", "bridge"}) {
+        std::string error =
+            errorOf(std::string("<suite\n network='") + bad + "'><test>a.so</test></suite>");
+        EXPECT_NE(error.find(std::string("suite.xml:1: network=\"") + bad +
+                             "\": expected private (a network of its own) or host"),
+                  std::string::npos)
+            << bad << ": " << error;
+    }
+}
+
 TEST(SuiteFile, RepetitionMustBeAPositiveWholeNumber) {
     for (const char* bad : {"abc", "0", "-1", "2.5", "", "3x", "99999999999999"}) {
         std::string error =
