@@ -1,0 +1,114 @@
+"""A private network per suite (<suite network="private">, --network private) through the
+installed runner, from the suites' own folder: four copies of a suite whose world serves one
+fixed port on 127.0.0.1 run side by side green in private networks, in both isolation modes,
+while this machine's loopback holds that very port; without private networks they clash. Bad
+values stop the run before it starts (exit 2). Loopback only; nothing is left behind."""
+import socket
+import sys
+
+import pytest
+
+from conftest import leftover_processes, marked, run_runner
+
+COPIES = ["arm", "base", "head", "legs"]
+
+
+def free_port():
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+def write_suites(folder, port, network=""):
+    """The world (an HTTP server on 127.0.0.1:port, ready once the port accepts), the test
+    that fetches from it, and four copies of the suite, identical but for their file names."""
+    (folder / "world.xml").write_text(f"""<world name="web" logdir="logs">
+  <process name="web" command="{sys.executable} -m http.server {port} --bind 127.0.0.1">
+    <ready timeout="20s"><port>{port}</port></ready>
+  </process>
+</world>
+""")
+    fetch = folder / "fetch.py"
+    fetch.write_text(f"""#!{sys.executable}
+import socket
+with socket.create_connection(("127.0.0.1", {port}), timeout=10) as s:
+    s.sendall(b"GET / HTTP/1.0\\r\\n\\r\\n")
+    answer = s.recv(100).decode(errors="replace")
+print(answer.splitlines()[0] if answer else "(no answer)")
+raise SystemExit(0 if answer.startswith("HTTP/1.0 200") else 1)
+""")
+    fetch.chmod(0o755)
+    attribute = f' network="{network}"' if network else ""
+    names = []
+    for copy in COPIES:
+        (folder / f"{copy}.xml").write_text(f"""<suite{attribute}>
+  <fixture type="process">world.xml</fixture>
+  <test type="exec">fetch.py</test>
+</suite>
+""")
+        names += ["-s", f"{copy}.xml"]
+    return names
+
+
+def holding(port):
+    """A socket listening on this machine's 127.0.0.1:port: a world in this machine's network
+    cannot have it, and a test connecting here gets no HTTP answer."""
+    s = socket.socket()
+    s.bind(("127.0.0.1", port))
+    s.listen(8)
+    return s
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_four_copies_of_a_fixed_port_world_run_side_by_side(tmp_path, marker, isolation):
+    port = free_port()
+    suites = write_suites(tmp_path, port)
+    with holding(port):
+        result = run_runner(*suites, "-j", "4", "--network", "private", "--isolation", isolation,
+                            "-v", "--no-output", cwd=tmp_path, env=marked(marker))
+    # The cost of a private network, for the record (never asserted).
+    print([line for line in result.stdout.splitlines() if "private network is made" in line])
+    assert result.returncode == 0, result.output
+    assert "4 passed, 0 failed" in result.stdout
+    assert result.stdout.count("HTTP/1.0 200 OK") == 4, result.stdout
+    assert not leftover_processes(marker)
+
+
+def test_without_private_networks_the_copies_clash(tmp_path, marker):
+    port = free_port()
+    suites = write_suites(tmp_path, port)
+    result = run_runner(*suites, "-j", "4", "--no-output", cwd=tmp_path, env=marked(marker))
+    assert result.returncode != 0, result.stdout
+    assert "0 failed" not in result.stdout.splitlines()[-1], result.stdout
+    assert not leftover_processes(marker)
+
+
+def test_a_suite_file_asks_for_its_own_network(tmp_path, marker):
+    port = free_port()
+    suites = write_suites(tmp_path, port, network="private")
+    with holding(port):
+        result = run_runner(*suites, "-j", "4", "--no-output", cwd=tmp_path, env=marked(marker))
+        # "host" is the default: as without the attribute, the held port stops the worlds.
+        write_suites(tmp_path, port, network="host")
+        clashing = run_runner(*suites, "-j", "4", "--no-output", cwd=tmp_path,
+                              env=marked(marker))
+    assert result.returncode == 0, result.output
+    assert "4 passed, 0 failed" in result.stdout
+    assert clashing.returncode != 0, clashing.stdout
+    assert "already accepts connections" in clashing.output
+    assert not leftover_processes(marker)
+
+
+def test_an_unknown_network_value_stops_the_run_naming_file_and_line(tmp_path):
+    (tmp_path / "suite.xml").write_text(
+        '<?xml version="1.0"?>\n<suite name="s"\n  network="bridge">\n'
+        '<test type="exec">/bin/true</test>\n</suite>\n')
+    result = run_runner("-s", "suite.xml", "--no-output", cwd=tmp_path)
+    assert result.returncode == 2, result.output
+    assert ('suite.xml:2: network="bridge": expected private (a network of its own) or host '
+            "(the machine's)") in result.stderr
+    assert "passed" not in result.stdout
+
+    option = run_runner("-s", "suite.xml", "--network", "Private", "--no-output", cwd=tmp_path)
+    assert option.returncode == 2
+    assert "--network: Private not in {private,host}" in option.stderr
