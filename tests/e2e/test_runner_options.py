@@ -77,7 +77,7 @@ def test_help_lists_every_option(tmp_path):
                    "-p,--param", "-e,--environment", "--repetition", "-o,--output",
                    "--output-type", "--no-output", "--no-summary", "-w,--web-reporter",
                    "--web-port", "--web-host", "--web-linger", "-d,--detail", "-v,--verbose", "--version", "--isolation",
-                   "--timeout", "--fail-fast"):
+                   "--network", "--timeout", "--fail-fast"):
         assert option in run.stdout, (option, run)
 
 
