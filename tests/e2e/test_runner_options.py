@@ -146,7 +146,8 @@ def value_options(folder):
 TAKES_EMPTY = {"--param", "--environment"}
 REFUSES_EMPTY = {
     "--test", "--tests", "--suite", "--suites", "--repetition", "--output", "--output-type",
-    "--web-port", "--web-host", "--web-linger", "--isolation", "--timeout", "--retries",
+    "--web-port", "--web-host", "--web-linger", "--isolation", "--network", "--timeout",
+    "--retries",
     "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
     "--filter", "--shard-index", "--shard-count", "--durations", "--merge", "--expect-shards",
     "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
