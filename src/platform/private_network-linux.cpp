@@ -74,6 +74,14 @@ std::string userNamespaceHint() {
            "user.max_user_namespaces allow them) or refused by a container's seccomp profile";
 }
 
+// A limit of namespaces reached (ENOSPC): the sysctls that set them.
+std::string limitHint() {
+    return "; a limit of namespaces is reached: the sysctls user.max_net_namespaces = " +
+           readSetting("/proc/sys/user/max_net_namespaces") +
+           " and user.max_user_namespaces = " + readSetting("/proc/sys/user/max_user_namespaces") +
+           " (raise them)";
+}
+
 std::string threadNetworkPath() {
     return "/proc/self/task/" + std::to_string(::syscall(SYS_gettid)) + "/ns/net";
 }
@@ -102,7 +110,7 @@ std::unique_ptr<PrivateNetwork> createDirectly(std::string& error, int& code) {
     });
     maker.join();
     if (code != 0) {
-        error = step + ": " + ::strerror(code);
+        error = step + ": " + ::strerror(code) + (code == ENOSPC ? limitHint() : "");
         return nullptr;
     }
     return std::make_unique<PrivateNetwork>(FileDescriptor(), std::move(network));
@@ -176,7 +184,7 @@ std::unique_ptr<PrivateNetwork> createInUserNamespace(std::string& error) {
         error = "the child making it ended first";
     } else if (answer[0] == 1) {
         error = std::string("unshare(CLONE_NEWUSER|CLONE_NEWNET): ") + ::strerror(answer[1]) +
-                userNamespaceHint();
+                (answer[1] == ENOSPC ? limitHint() : userNamespaceHint());
     } else if (answer[0] == 2) {
         error = std::string("mapping this user in the user namespace: ") + ::strerror(answer[1]);
     } else if (answer[0] == 3) {

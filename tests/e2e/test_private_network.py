@@ -4,11 +4,12 @@ fixed port on 127.0.0.1 run side by side green in private networks, in both isol
 while this machine's loopback holds that very port; without private networks they clash. Bad
 values stop the run before it starts (exit 2). Loopback only; nothing is left behind."""
 import socket
+import subprocess
 import sys
 
 import pytest
 
-from conftest import leftover_processes, marked, run_runner
+from conftest import RUNNER, leftover_processes, marked, run_runner, runner_environment
 
 COPIES = ["arm", "base", "head", "legs"]
 
@@ -112,3 +113,22 @@ def test_an_unknown_network_value_stops_the_run_naming_file_and_line(tmp_path):
     option = run_runner("-s", "suite.xml", "--network", "Private", "--no-output", cwd=tmp_path)
     assert option.returncode == 2
     assert "--network: Private not in {private,host}" in option.stderr
+
+
+def test_where_no_private_network_can_be_had_the_run_stops_before_it_starts(tmp_path, marker):
+    # A user namespace of this test's own whose limit of network namespaces is 0: the kernel
+    # refuses every new one there, as on a machine whose setting forbids them.
+    port = free_port()
+    suites = write_suites(tmp_path, port)
+    args = [*suites, "--network", "private", "--no-output"]
+    proc = subprocess.run(
+        ["unshare", "--user", "--map-root-user", "sh", "-c",
+         'echo 0 > /proc/sys/user/max_net_namespaces && exec "$0" "$@"', RUNNER, *args],
+        cwd=tmp_path, env=runner_environment(args, marked(marker), cwd=tmp_path),
+        stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 2, proc.stdout + proc.stderr
+    assert ("--network private: a private network cannot be made: unshare(CLONE_NEWNET): "
+            "No space left on device") in proc.stderr
+    assert "user.max_net_namespaces = 0" in proc.stderr
+    assert "passed" not in proc.stdout and "web" not in proc.stdout
+    assert not leftover_processes(marker)
