@@ -26,10 +26,11 @@ constexpr double futureToleranceSeconds = 24 * 3600;
 // "2026-11-27T10:00:00Z".
 std::string isoUtc(double seconds) {
     const std::time_t when = static_cast<std::time_t>(seconds);
-    std::tm parts{};
     char text[64] = "?";
-    if (gmtime_r(&when, &parts) != nullptr) {
-        std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+    // std::gmtime, not gmtime_r (which MinGW-w64 declares only when asked): the import runs on
+    // the main thread alone.
+    if (const std::tm* parts = std::gmtime(&when)) {
+        std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", parts);
     }
     return text;
 }
