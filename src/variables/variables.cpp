@@ -5,6 +5,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <sstream>
+
+#include "platform/bounded_file.h"
 
 namespace robottestingframework {
 namespace variables {
@@ -239,11 +242,14 @@ bool parseAssignment(const std::string& text, std::string& name, std::string& va
 }
 
 bool readVariableFile(const std::string& path, std::vector<Variable>& out, std::string& error) {
-    std::ifstream in(path);
-    if (!in) {
-        error = path + ": cannot read the variable file (" + std::strerror(errno) + ")";
+    // A regular file or a pipe (`<(...)`), of at most 16 MiB: /dev/zero is refused, not read
+    // until memory runs out.
+    std::string text;
+    if (!platform::readBoundedFile(path, "variable file", maxExpandedTotal, platform::Pipes::Read,
+                                   text, error)) {
         return false;
     }
+    std::istringstream in(text);
     return readVariables(in, path, out, error);
 }
 

@@ -3,6 +3,8 @@
 
 #include <signal.h>
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "process_test_helpers.h"
@@ -296,6 +298,14 @@ TEST(WorldFile, ReadsTheFileFromDiskAndResolvesFoldersAgainstIt) {
 
     EXPECT_FALSE(readWorldFile((folder / "missing.xml").string(), {}, world, error));
     EXPECT_NE(error.find("cannot read the world file"), std::string::npos) << error;
+
+    // A device or a file past 16 MiB is refused, not read until memory runs out (issue 40).
+    EXPECT_FALSE(readWorldFile("/dev/zero", {}, world, error));
+    EXPECT_NE(error.find("/dev/zero: is a character device, not a world file"), std::string::npos)
+        << error;
+    std::filesystem::resize_file(folder / "w.xml", 16 * 1024 * 1024 + 1);  // sparse
+    EXPECT_FALSE(readWorldFile(file.string(), {}, world, error));
+    EXPECT_NE(error.find("the world file is larger than 16 MiB"), std::string::npos) << error;
 }
 
 TEST(CommandLine, SplitsLikeAShell) {

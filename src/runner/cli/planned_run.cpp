@@ -103,6 +103,11 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     PlannedRun plan;
     plan.suites = std::move(suites);
     plan.shard = std::move(shard);
+    plan.error = filterNamingNoTest(plan.suites, options.selection);
+    if (!plan.error.empty()) {
+        plan.outcome = PlannedRun::Outcome::Error;
+        return plan;
+    }
     if (!options.rerunFailed.empty() && !keepFailed(options, plan)) {
         return plan;
     }

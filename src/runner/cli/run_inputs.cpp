@@ -101,6 +101,11 @@ bool readRunInputs(Options& options, RunInputs& inputs) {
         std::fprintf(stderr, "%s: %s\n", programName, poolProblem.c_str());
         return false;
     }
+    // Last, once every input is known good: no folder is made for a run that never starts.
+    if (!createOutputFolders(options.outputs, error)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+        return false;
+    }
     return true;
 }
 

@@ -60,6 +60,7 @@ std::int64_t pragmaNumber(sqlite3* db, const char* pragma, const std::string& fi
 }  // namespace
 
 HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(path) {
+    checkHistoryFileKind(path);  // never a device: SQLite would leave PATH-journal beside it
     const int flags =
         mode == Mode::Append ? SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE : SQLITE_OPEN_READONLY;
     if (sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {

@@ -55,5 +55,11 @@ private:
 // --durations tells a history file from a report.
 bool looksLikeHistoryFile(const std::string& path);
 
+// Throws HistoryError "--history PATH: is a character device, not a history file ..." when
+// `path` names something other than a regular file (a folder, a FIFO, a device such as /dev/null
+// or /dev/full, a socket): SQLite would write its journal beside it (/dev/null-journal). A path
+// that names nothing yet is fine (the history file is created there).
+void checkHistoryFileKind(const std::string& path);
+
 }  // namespace runner
 }  // namespace robottestingframework

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "platform/bounded_file.h"
+
 namespace robottestingframework {
 namespace runner {
 
@@ -438,13 +440,13 @@ void readJsonShape(Report& report, const Place& place) {
 }  // namespace
 
 Report readReport(const std::string& option, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw std::runtime_error(option + " " + path + ": cannot read the report");
+    std::string text;
+    std::string error;
+    if (!platform::readBoundedFile(path, "report", maxReportBytes, platform::Pipes::Read, text,
+                                   error)) {
+        throw std::runtime_error(option + " " + error);
     }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parseReport(option, buffer.str(), path);
+    return parseReport(option, text, path);
 }
 
 Report parseReport(const std::string& option, const std::string& text, const std::string& path) {

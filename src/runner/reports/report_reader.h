@@ -4,6 +4,7 @@
 // file, the line when known, and what was expected.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +53,10 @@ struct Report {
 // "OPTION FILE:LINE: ..." when the file is missing, unreadable, not JUnit or JSON, not written by
 // this runner, or out of shape.
 Report readReport(const std::string& option, const std::string& path);
+
+// The largest report readReport and readImportedReport read (a regular file or a pipe, such as
+// the shell's `<(...)`): a run's outputs are capped far below it (README: output limits).
+constexpr std::size_t maxReportBytes = 256 * 1024 * 1024;
 
 // The same from text already read; `path` names it in messages.
 Report parseReport(const std::string& option, const std::string& text, const std::string& path);
