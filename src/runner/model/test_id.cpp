@@ -206,10 +206,12 @@ std::set<std::size_t> collidingSuites(const std::vector<SuiteSpec>& suites, std:
 fs::path commonFolder(const std::vector<fs::path>& files) {
     fs::path common = files.front().parent_path();
     for (const fs::path& file : files) {
+        // One path to iterate over: each parent_path() call makes a new one.
+        const fs::path folder = file.parent_path();
         fs::path shared;
         auto a = common.begin();
-        auto b = file.parent_path().begin();
-        for (; a != common.end() && b != file.parent_path().end() && *a == *b; ++a, ++b) {
+        auto b = folder.begin();
+        for (; a != common.end() && b != folder.end() && *a == *b; ++a, ++b) {
             shared /= *a;
         }
         common = shared;
