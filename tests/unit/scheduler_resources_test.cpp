@@ -117,6 +117,28 @@ TEST(SchedulerResources, SuiteFileRefusesBadResourcesWithFileAndLine) {
               std::string::npos);
 }
 
+TEST(SchedulerResources, SuiteFileRefusesAPoolTakenTwiceSayingWhatToWrite) {
+    // Each alone fits a one-item pool; together they never would (the run waited for ever).
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource pool=\"p\" default=\"1\"/>\n"
+                      "<resource pool=\"p\" count=\"2\" default=\"1\"/></suite>"),
+              "/nowhere/suite.xml:3: pool \"p\" is taken a second time (first at line 2); write "
+              "one <resource pool=\"p\" count=\"3\"/> for 3 items");
+    // A lock named twice is one lock: harmless.
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource lock=\"a\"/>\n<resource lock=\"a\"/>"
+                      "</suite>"),
+              "");
+}
+
+TEST(SchedulerResources, SuiteFileRefusesAnItemRepeatedInDefault) {
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource pool=\"p\" default=\"7 7\"/></suite>"),
+              "/nowhere/suite.xml:2: default=\"...\": item \"7\" is given twice (each item of a "
+              "pool once: two suites would hold it at once)");
+    EXPECT_NE(errorOf("<suite name=\"s\">\n\n<resource pool=\"p\" count=\"2\" "
+                      "default=\"1 2 1\"/></suite>")
+                  .find("suite.xml:3: default=\"...\": item \"1\" is given twice"),
+              std::string::npos);
+}
+
 TEST(SchedulerResources, LocksAreTakenAllOrNothing) {
     ResourceTable table{ResourcePools()};
     ResourceTable::Held a, b, c;

@@ -371,6 +371,7 @@ public:
                 suite.fixtures.push_back(readFixture(node));
             } else if (name == "resource") {
                 suite.resources.push_back(readResource(node));
+                checkPoolOnce(suite.resources);
             } else if (name == "test") {
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
@@ -556,6 +557,12 @@ private:
                     fail(node, "default=\"...\": item \"" + id +
                                    "\" is not an id (letters, digits, _, - and .)");
                 }
+                if (std::find(resource.defaults.begin(), resource.defaults.end(), id) !=
+                    resource.defaults.end()) {
+                    fail(node, "default=\"...\": item \"" + id +
+                                   "\" is given twice (each item of a pool once: two suites "
+                                   "would hold it at once)");
+                }
                 resource.defaults.push_back(id);
             }
             if (resource.defaults.empty()) {
@@ -563,6 +570,23 @@ private:
             }
         }
         return resource;
+    }
+
+    // A pool named twice in one suite could never be served (its items are taken all at once,
+    // each <resource> checked alone): one <resource> with count="N" says it.
+    void checkPoolOnce(const std::vector<ResourceSpec>& resources) const {
+        const ResourceSpec& added = resources.back();
+        for (std::size_t i = 0; !added.pool.empty() && i + 1 < resources.size(); ++i) {
+            const ResourceSpec& earlier = resources[i];
+            if (earlier.pool == added.pool) {
+                throw SuiteFileError(added.where.toString() + ": pool \"" + added.pool +
+                                     "\" is taken a second time (first at line " +
+                                     std::to_string(earlier.where.line) +
+                                     "); write one <resource pool=\"" + added.pool + "\" count=\"" +
+                                     std::to_string(earlier.count + added.count) + "\"/> for " +
+                                     std::to_string(earlier.count + added.count) + " items");
+            }
+        }
     }
 
     // ${resource.NAME} gets an item of the pool NAME: the suite must take one.
