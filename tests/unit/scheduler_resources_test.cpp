@@ -139,6 +139,21 @@ TEST(SchedulerResources, SuiteFileRefusesAnItemRepeatedInDefault) {
               std::string::npos);
 }
 
+TEST(SchedulerResources, AProcessFixtureGetsTheItemsOfEveryPoolForItsWorldFile) {
+    SuiteSpec suite = parse(R"(<suite name="s">
+  <fixture type="process">world.xml</fixture>
+  <fixture type="python">other.py</fixture>
+  <resource pool="port" count="2"/>
+  <resource lock="arm"/>
+</suite>)");
+    ASSERT_EQ(suite.fixtures.size(), 2u);
+    EXPECT_EQ(variables::resourcesUsed(suite.fixtures[0].param), std::vector<std::string>{"port"});
+    EXPECT_EQ(variables::fillResources(suite.fixtures[0].param,
+                                       [](const std::string&) { return std::string("7,8"); }),
+              "--var 'resource.port=7,8'");
+    EXPECT_EQ(suite.fixtures[1].param, "");
+}
+
 TEST(SchedulerResources, LocksAreTakenAllOrNothing) {
     ResourceTable table{ResourcePools()};
     ResourceTable::Held a, b, c;

@@ -389,6 +389,7 @@ public:
             }
         }
         checkResourceUses(suite);
+        giveResourcesToWorlds(suite);
         for (const auto& variable : table_.all()) {
             suite.variables.push_back(
                 {variable.first, valueOf(root, variable.first), variable.second.origin});
@@ -609,6 +610,23 @@ private:
         }
         for (const auto& fixture : suite.fixtures) {
             check(fixture.param, fixture.where);
+        }
+    }
+
+    // A process fixture's world file may use ${resource.POOL} of each pool the suite takes:
+    // the items reach it as --var resource.POOL=ITEMS (the scheduler fills the marker in).
+    static void giveResourcesToWorlds(SuiteSpec& suite) {
+        std::string words;
+        for (const auto& resource : suite.resources) {
+            if (!resource.pool.empty()) {
+                words += " --var " + quoted("resource." + resource.pool + "=" +
+                                            variables::resourceMarker(resource.pool));
+            }
+        }
+        for (auto& fixture : suite.fixtures) {
+            if (fixture.type == "process" && !words.empty()) {
+                fixture.param += fixture.param.empty() ? words.substr(1) : words;
+            }
         }
     }
 
