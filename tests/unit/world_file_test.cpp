@@ -120,6 +120,21 @@ TEST(WorldFile, LogFolderFromTheFixtureParamWins) {
     EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere");
 }
 
+TEST(WorldFile, SuitesSharingTheWorldFileEachHaveTheirLogFolder) {
+    WorldOptions options;
+    options.instance = "left";
+    Parsed parsed = parse("<world><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left").string());
+    EXPECT_EQ(parsed.world.processes[0].logFile,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left" / "a.log").string());
+    options.logFolder = "/tmp/elsewhere";
+    parsed = parse("<world logdir='x'><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere/left");
+}
+
 TEST(WorldFile, ThePoolItemsOfTheSuiteReplaceResourceVariables) {
     WorldOptions options;
     options.variables["resource.port"] = "7,8";

@@ -5,6 +5,7 @@
 
 #include "runner/cli/sharded_run_setup.h"
 #include "runner/plan/selection.h"
+#include "runner/plan/world_logs.h"
 #include "runner/reports/rerun_report.h"
 
 namespace robottestingframework {
@@ -100,6 +101,7 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     if (!options.selection.empty()) {
         applySelection(plan.suites, options.selection);
     }
+    separateWorldLogs(plan.suites);
     bool anyTest = false;
     for (const auto& suite : plan.suites) {
         anyTest = anyTest || !suite.tests.empty();
