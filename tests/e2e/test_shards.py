@@ -325,3 +325,42 @@ def test_suites_sharing_a_lock_go_to_the_same_shard(tmp_path):
     # And the runs of both shards hold every suite once.
     xmls, _ = shard_reports(tmp_path, suites, 2)
     assert sorted(name for xml in xmls for name in suites_of(xml)) == ["s00", "s01", "s02", "s03"]
+
+
+def linked_suites(folder):
+    """Suites a (test "base"), b (a test that depends on "base") and c, in `folder`."""
+    folder.mkdir(parents=True, exist_ok=True)
+    write_script(folder / "ok.sh", "#!/bin/sh\necho fine\nexit 0\n")
+    (folder / "a.xml").write_text('<suite name="a">\n  <test type="exec" name="base">ok.sh</test>'
+                                  '\n</suite>\n')
+    (folder / "b.xml").write_text('<suite name="b">\n  <test type="exec" name="uses" '
+                                  'depends="base">ok.sh</test>\n</suite>\n')
+    (folder / "c.xml").write_text('<suite name="c">\n  <test type="exec" name="alone">ok.sh'
+                                  '</test>\n</suite>\n')
+    return ["--suite", "a.xml", "--suite", "b.xml", "--suite", "c.xml"]
+
+
+def test_suites_linked_by_depends_go_to_the_same_shard(tmp_path):
+    # Issue 39, 7: round-robin put a and b on different shards, and b's test was always
+    # skipped ("depends on base, which did not run") while every shard exited 0.
+    folder = tmp_path / "suites"
+    suites = linked_suites(folder)
+    r = run(*suites, "--list", "--shard-index", 0, "--shard-count", 2, "-o", "json:list.json",
+            cwd=folder)
+    assert r.returncode == 0, r
+    shard = [s["shard"] for s in json.loads((folder / "list.json").read_text())["suites"]]
+    assert shard[0] == shard[1] != shard[2], shard
+    one = run(*suites, "-o", "junit:one.xml", cwd=folder)
+    assert one.returncode == 0, one
+    for index in range(2):
+        r = run(*suites, "--shard-index", index, "--shard-count", 2, "-o",
+                f"junit:shard-{index}.xml", cwd=folder)
+        assert r.returncode == 0, r
+        assert "did not run" not in r.stdout, r
+    r = run("--merge", "junit:merged.xml", "--expect-shards", 2, "shard-0.xml", "shard-1.xml",
+            cwd=folder)
+    assert r.returncode == 0, r
+    assert normal_junit(folder / "merged.xml") == normal_junit(folder / "one.xml")
+    assert {case.get("name"): junit_state(case) for case in
+            ET.parse(folder / "merged.xml").getroot().iter("testcase")} == {
+        "base": "passed", "uses": "passed", "alone": "passed"}

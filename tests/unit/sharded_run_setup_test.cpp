@@ -222,3 +222,18 @@ TEST_F(ShardSetup, DurationsThatCannotBeReadThrowNamingTheReport) {
             << e.what();
     }
 }
+
+TEST_F(ShardSetup, SuitesLinkedByDependsAreInOneShard) {
+    // Round-robin over a, b, c would put b on shard 1; its test depends on a's.
+    std::vector<SuiteSpec> suites{suite("a"), suite("b"), suite("c")};
+    TestSpec base;
+    base.name = "base";
+    suites[0].tests.push_back(base);
+    TestSpec uses;
+    uses.name = "uses";
+    uses.depends = {"base"};
+    suites[1].tests.push_back(uses);
+    const std::vector<unsigned int> shards = shardsOf(suites, 2, std::nullopt);
+    EXPECT_EQ(shards[0], shards[1]);
+    EXPECT_NE(shards[2], shards[0]);
+}

@@ -1,11 +1,13 @@
 #include "runner/cli/sharded_run_setup.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <map>
 
 #include "platform/environment.h"
+#include "runner/plan/run_gate.h"
 #include "runner/plan/shard_split.h"
 #include "runner/reports/report_reader.h"
 
@@ -69,6 +71,27 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
         const auto found = known.find(suite.name);
         item.milliseconds = found == known.end() ? -1 : found->second;
         items.push_back(std::move(item));
+    }
+    // A test that depends on a test of another suite: both suites on one shard, linked as a
+    // shared lock links them (a key no lock name can be: lock names have no spaces).
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        for (const auto& test : suites[s].tests) {
+            for (const auto& dependency : test.depends) {
+                for (std::size_t other = 0; other < suites.size(); ++other) {
+                    const auto& candidates = suites[other].tests;
+                    if (other == s || std::none_of(candidates.begin(), candidates.end(),
+                                                   [&dependency](const TestSpec& candidate) {
+                                                       return dependencyNames(dependency,
+                                                                              candidate);
+                                                   })) {
+                        continue;
+                    }
+                    const std::string link = "depends on suite " + std::to_string(other);
+                    items[s].locks.push_back(link);
+                    items[other].locks.push_back(link);
+                }
+            }
+        }
     }
     return assignShards(items, count, durations.has_value());
 }
