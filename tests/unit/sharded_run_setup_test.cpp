@@ -237,3 +237,16 @@ TEST_F(ShardSetup, SuitesLinkedByDependsAreInOneShard) {
     EXPECT_EQ(shards[0], shards[1]);
     EXPECT_NE(shards[2], shards[0]);
 }
+
+TEST_F(ShardSetup, ThePlanIdentityIsTheWholeSelections) {
+    std::vector<SuiteSpec> suites{suite("a"), suite("b")};
+    const std::string plan = planIdentity(suites, 2);
+    EXPECT_EQ(plan.size(), 16U);
+    EXPECT_EQ(plan.find_first_not_of("0123456789abcdef"), std::string::npos);
+    EXPECT_EQ(planIdentity(suites, 2), plan);  // the same on every machine
+    EXPECT_NE(planIdentity(suites, 3), plan);
+    EXPECT_NE(planIdentity({suite("a"), suite("c")}, 2), plan);
+    suites[1].tests.emplace_back();
+    suites[1].tests.back().id = "t";
+    EXPECT_NE(planIdentity(suites, 2), plan);
+}

@@ -39,6 +39,7 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
         plan.reportSettings.sharded = earlier.shard.known;
         plan.reportSettings.shardIndex = earlier.shard.index;
         plan.reportSettings.shardCount = earlier.shard.count;
+        plan.reportSettings.shardPlan = earlier.shard.plan;
     } catch (const std::exception& e) {
         plan.outcome = PlannedRun::Outcome::Error;
         plan.error = e.what();
@@ -66,6 +67,7 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
 // shards' reports merge into the one a single machine would write.
 void keepShard(const Options& options, const std::vector<unsigned int>& shardOf, PlannedRun& plan) {
     const ShardChoice& shard = plan.shard;
+    plan.reportSettings.shardPlan = planIdentity(plan.suites, shard.count);
     std::vector<SuiteSpec> mine;
     for (std::size_t i = 0; i < plan.suites.size(); ++i) {
         if (shardOf[i] != shard.index) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
@@ -94,6 +96,28 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
         }
     }
     return assignShards(items, count, durations.has_value());
+}
+
+std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int count) {
+    std::uint64_t hash = 14695981039346656037ULL;
+    auto add = [&hash](const std::string& text) {
+        for (const char c : text) {
+            hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+        }
+        hash = (hash ^ 0x1fU) * 1099511628211ULL;  // ends each piece: "ab","c" is not "a","bc"
+    };
+    add(std::to_string(count));
+    for (const auto& suite : suites) {
+        add(suite.name);
+        add(suite.where.file);
+        for (const auto& test : suite.tests) {
+            add(test.id);
+        }
+        add("\x1e");
+    }
+    char text[17];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
 }
 
 }  // namespace runner
