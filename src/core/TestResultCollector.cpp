@@ -592,6 +592,15 @@ void TestResultCollector::interruptOpen(const TestMessage& why) {
         }
     }
     while (!openSuites_.empty()) {
+        // Nothing ended the suite: its fixtures' tearDown (or, before any test, their set-up)
+        // did not finish. The suite is interrupted with `why` and says so: that fails it, as a
+        // fixture that failed does (a run cut short is never reported passed).
+        const bool anyTest = !suites_[openSuites_.back().index].tests.empty();
+        const std::string phase = anyTest ? "tearDown" : "set-up";
+        addInterrupted(nullptr, TestMessage(why.getMessage() + ": the " + phase +
+                                                " of the suite's fixtures did not finish",
+                                            why.getDetail(), why.getSourceFileName(),
+                                            why.getSourceLineNumber()));
         endTestSuite(nullptr);
     }
     if (end_ < 0) {
