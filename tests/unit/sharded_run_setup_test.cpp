@@ -244,6 +244,11 @@ TEST_F(ShardSetup, ThePlanIdentityIsTheWholeSelections) {
     EXPECT_EQ(plan.size(), 16U);
     EXPECT_EQ(plan.find_first_not_of("0123456789abcdef"), std::string::npos);
     EXPECT_EQ(planIdentity(suites, 2), plan);  // the same on every machine
+    std::vector<SuiteSpec> elsewhere{suite("a"), suite("b")};
+    for (auto& moved : elsewhere) {
+        moved.where.file = "/builds/runner-7/" + moved.where.file.str();  // another checkout
+    }
+    EXPECT_EQ(planIdentity(elsewhere, 2), plan);
     EXPECT_NE(planIdentity(suites, 3), plan);
     EXPECT_NE(planIdentity({suite("a"), suite("c")}, 2), plan);
     suites[1].tests.emplace_back();

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
@@ -109,7 +110,8 @@ std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int coun
     add(std::to_string(count));
     for (const auto& suite : suites) {
         add(suite.name);
-        add(suite.where.file);
+        // The file's name only: machines check the sources out in folders of their own.
+        add(std::filesystem::path(suite.where.file.str()).filename().string());
         for (const auto& test : suite.tests) {
             add(test.id);
         }

@@ -29,9 +29,9 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
                                    const std::optional<SuiteSeconds>& durations);
 
 // What makes the shards' reports recognisably those of one run: the whole selection (each
-// suite's name, file and test ids, in order) and the shard count, hashed (FNV-1a, 64 bits, as 16
-// hex digits: the same on every machine and platform). Each shard report carries it; --merge
-// refuses a report whose plan differs.
+// suite's name, file name and test ids, in order) and the shard count, hashed (FNV-1a, 64 bits,
+// as 16 hex digits: the same on every machine and platform, wherever the sources are checked
+// out). Each shard report carries it; --merge refuses a report whose plan differs.
 std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int count);
 
 }  // namespace runner
