@@ -209,6 +209,9 @@ TEST(TestResultCollector, InterruptOpenEndsTheOpenTestAndSuiteAsInterrupted) {
     EXPECT_EQ(tests[1].reason()->message.getMessage(), "quit");
     EXPECT_EQ(c.suiteCount(), 1u);
     EXPECT_EQ(c.failedCount(), 1u);
+    // Its interrupted test fails the suite: nothing is said of fixtures it may not have.
+    EXPECT_TRUE(c.suites()[0].events.empty());
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
 }
 
 TEST(TestResultCollector, InterruptOpenFailsASuiteWhoseTearDownDidNotFinish) {
