@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -117,8 +116,10 @@ std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int coun
         }
         add("\x1e");
     }
-    char text[17];
-    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    std::string text(16, '0');
+    for (std::size_t i = 16; i-- > 0; hash >>= 4) {
+        text[i] = "0123456789abcdef"[hash & 0xfU];
+    }
     return text;
 }
 
