@@ -252,6 +252,9 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
     if (first && settings.sharded) {
         property("rtf.shard.index", std::to_string(settings.shardIndex));
         property("rtf.shard.count", std::to_string(settings.shardCount));
+        if (!settings.shardPlan.empty()) {
+            property("rtf.shard.plan", settings.shardPlan);
+        }
     }
     if (first && settings.rerun) {
         property("rtf.rerun", "true");

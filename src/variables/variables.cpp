@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "platform/bounded_file.h"
 
@@ -40,6 +41,12 @@ void VariableTable::define(const Variable& variable) {
     }
     variables_[variable.name] = variable;
     expanded_.clear();  // a value may have used the old one
+}
+
+void VariableTable::giveResources(std::map<std::string, std::string> items) {
+    resources_ = std::move(items);
+    resourcesGiven_ = true;
+    expanded_.clear();  // a value expanded before holds markers
 }
 
 const Variable* VariableTable::find(const std::string& name) const {
@@ -157,7 +164,16 @@ std::string VariableTable::expandText(const std::string& text, const std::string
                                   text + "' (write $${ for a literal ${)"};
         }
         const std::string name = text.substr(i + 2, close - i - 2);
-        if (name.compare(0, 9, "resource.") == 0 && name.size() > 9) {
+        if (name.compare(0, 9, "resource.") == 0 && name.size() > 9 && resourcesGiven_) {
+            const auto found = resources_.find(name.substr(9));
+            if (found == resources_.end()) {
+                throw ExpandError{ExpandError::Kind::PoolNotTaken, name,
+                                  "${" + name + "} but the suite takes no item of pool " +
+                                      name.substr(9) + " (add <resource pool=\"" + name.substr(9) +
+                                      "\"/> to the suite)"};
+            }
+            out += found->second;
+        } else if (name.compare(0, 9, "resource.") == 0 && name.size() > 9) {
             out += resourceMarker(name.substr(9));  // filled in when the suite is started
         } else if (name.compare(0, 4, "env:") == 0) {
             const char* value = std::getenv(name.substr(4).c_str());

@@ -122,6 +122,42 @@ TEST(WorldFile, LogFolderFromTheFixtureParamWins) {
     EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere");
 }
 
+TEST(WorldFile, SuitesSharingTheWorldFileEachHaveTheirLogFolder) {
+    WorldOptions options;
+    options.instance = "left";
+    Parsed parsed = parse("<world><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left").string());
+    EXPECT_EQ(parsed.world.processes[0].logFile,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left" / "a.log").string());
+    options.logFolder = "/tmp/elsewhere";
+    parsed = parse("<world logdir='x'><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere/left");
+}
+
+TEST(WorldFile, ThePoolItemsOfTheSuiteReplaceResourceVariables) {
+    WorldOptions options;
+    options.variables["resource.port"] = "7,8";
+    Parsed parsed = parse(
+        "<world>\n<variable name='ports'>${resource.port}</variable>\n"
+        "<process name='a' command='serve ${resource.port} ${ports}'/></world>",
+        options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.processes[0].argv, (std::vector<std::string>{"serve", "7,8", "7,8"}));
+    // A pool the suite does not take, with or without items of others.
+    parsed = parse("<world>\n<process name='a' command='serve ${resource.gpu}'/></world>", options);
+    ASSERT_FALSE(parsed.ok);
+    EXPECT_EQ(parsed.error,
+              "/tmp/rtf-world/world.xml:2: ${resource.gpu} but the suite takes no item of pool "
+              "gpu (add <resource pool=\"gpu\"/> to the suite)");
+    expectError(
+        "<world>\n<process name='a'>\n<command>run ${resource.gpu}</command></process>"
+        "</world>",
+        3, "${resource.gpu} but the suite takes no item of pool gpu");
+}
+
 TEST(WorldFile, ReportsMalformedXmlWithItsLine) {
     expectError("<world>\n  <process name='a' command='true'>\n</world>\n", 3, "malformed XML");
 }

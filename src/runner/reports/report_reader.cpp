@@ -13,6 +13,7 @@ namespace runner {
 
 const char* const shardIndexProperty = "rtf.shard.index";
 const char* const shardCountProperty = "rtf.shard.count";
+const char* const shardPlanProperty = "rtf.shard.plan";
 const char* const rerunProperty = "rtf.rerun";
 const char* const ctrfExtensionKey = "robotology.rtf";
 
@@ -118,6 +119,9 @@ void readJUnitShard(Report& report, const pugi::xml_node root, const Place& plac
             }
             holderIndex = holderIndex || name == shardIndexProperty;
             holderCount = holderCount || name == shardCountProperty;
+            if (name == shardPlanProperty && report.shard.plan.empty()) {
+                report.shard.plan = value;
+            }
             if (name == rerunProperty) {
                 report.shard.rerun = report.shard.rerun || value == "true";
             }
@@ -365,6 +369,12 @@ void readJsonShape(Report& report, const Place& place) {
         report.shard.known = true;
         report.shard.index = shard["index"].get<unsigned int>();
         report.shard.count = shard["count"].get<unsigned int>();
+        if (shard.contains("plan")) {
+            if (!shard["plan"].is_string()) {
+                throw place.error(-1, "results.extra.robotology.rtf.shard.plan: expected a string");
+            }
+            report.shard.plan = shard["plan"].get<std::string>();
+        }
     }
     if (extra.contains("rerun") && !extra["rerun"].is_boolean()) {
         throw place.error(-1, "results.extra.robotology.rtf.rerun: expected true or false");

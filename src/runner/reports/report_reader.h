@@ -35,6 +35,7 @@ struct ReportedShard {
     bool known = false;
     unsigned int index = 0;
     unsigned int count = 0;
+    std::string plan;    // the whole run's plan identity; empty in reports of earlier versions
     bool rerun = false;  // written by --rerun-failed: it replaces tests of an earlier report
 };
 
@@ -72,6 +73,7 @@ bool isJUnitRunSuite(pugi::xml_node suite);
 // The JUnit <property> names and CTRF keys of the shard a report comes from.
 extern const char* const shardIndexProperty;  // "rtf.shard.index"
 extern const char* const shardCountProperty;  // "rtf.shard.count"
+extern const char* const shardPlanProperty;   // "rtf.shard.plan"
 extern const char* const rerunProperty;       // "rtf.rerun"
 // The key of the runner's extensions in each CTRF "extra" object (json_reporter.cpp writes it),
 // namespaced as the CTRF specification recommends (an owner's prefix and a delimiter). Reports

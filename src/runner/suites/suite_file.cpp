@@ -330,6 +330,7 @@ public:
                 suite.fixtures.push_back(readFixture(node));
             } else if (name == "resource") {
                 suite.resources.push_back(readResource(node));
+                checkPoolOnce(suite.resources);
             } else if (name == "test") {
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
@@ -347,6 +348,7 @@ public:
             }
         }
         checkResourceUses(suite);
+        giveResourcesToWorlds(suite);
         for (const auto& variable : table_.all()) {
             suite.variables.push_back(
                 {variable.first, valueOf(root, variable.first), variable.second.origin});
@@ -515,6 +517,12 @@ private:
                     fail(node, "default=\"...\": item \"" + id +
                                    "\" is not an id (letters, digits, _, - and .)");
                 }
+                if (std::find(resource.defaults.begin(), resource.defaults.end(), id) !=
+                    resource.defaults.end()) {
+                    fail(node, "default=\"...\": item \"" + id +
+                                   "\" is given twice (each item of a pool once: two suites "
+                                   "would hold it at once)");
+                }
                 resource.defaults.push_back(id);
             }
             if (resource.defaults.empty()) {
@@ -522,6 +530,23 @@ private:
             }
         }
         return resource;
+    }
+
+    // A pool named twice in one suite could never be served (its items are taken all at once,
+    // each <resource> checked alone): one <resource> with count="N" says it.
+    void checkPoolOnce(const std::vector<ResourceSpec>& resources) const {
+        const ResourceSpec& added = resources.back();
+        for (std::size_t i = 0; !added.pool.empty() && i + 1 < resources.size(); ++i) {
+            const ResourceSpec& earlier = resources[i];
+            if (earlier.pool == added.pool) {
+                throw SuiteFileError(added.where.toString() + ": pool \"" + added.pool +
+                                     "\" is taken a second time (first at line " +
+                                     std::to_string(earlier.where.line) +
+                                     "); write one <resource pool=\"" + added.pool + "\" count=\"" +
+                                     std::to_string(earlier.count + added.count) + "\"/> for " +
+                                     std::to_string(earlier.count + added.count) + " items");
+            }
+        }
     }
 
     // ${resource.NAME} gets an item of the pool NAME: the suite must take one.
@@ -544,6 +569,23 @@ private:
         }
         for (const auto& fixture : suite.fixtures) {
             check(fixture.param, fixture.where);
+        }
+    }
+
+    // A process fixture's world file may use ${resource.POOL} of each pool the suite takes:
+    // the items reach it as --var resource.POOL=ITEMS (the scheduler fills the marker in).
+    static void giveResourcesToWorlds(SuiteSpec& suite) {
+        std::string words;
+        for (const auto& resource : suite.resources) {
+            if (!resource.pool.empty()) {
+                words += " --var " + quoted("resource." + resource.pool + "=" +
+                                            variables::resourceMarker(resource.pool));
+            }
+        }
+        for (auto& fixture : suite.fixtures) {
+            if (fixture.type == "process" && !words.empty()) {
+                fixture.param += fixture.param.empty() ? words.substr(1) : words;
+            }
         }
     }
 
