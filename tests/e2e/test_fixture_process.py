@@ -14,7 +14,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import RUNNER, plugin, run_runner, start_runner, validate_junit
+from conftest import RUNNER, cache_value, plugin, run_runner, start_runner, validate_junit
 
 ACTOR = Path(__file__).parent / "world" / "actor.py"
 PYTHON = "/usr/bin/python3"
@@ -364,6 +364,11 @@ def test_a_port_taken_after_the_start_by_another_program_is_not_the_world_ready(
         if runner.poll() is None:
             runner.kill()
             runner.communicate()
+    if cache_value("RTF_PORTABLE_POSIX", "OFF") == "ON":
+        # The portable build (macOS code paths) cannot tell whose listener it reached and
+        # counts it, as documented (docs/process-fixture.md).
+        assert runner.returncode == 0, (out, err)
+        return
     assert runner.returncode == 1, (out, err)
     assert (f"process 'server' did not become ready: TCP port 127.0.0.1:{port} accepting "
             f"connections (line 4) accepts connections, but from pid {os.getpid()} (") \
