@@ -21,32 +21,46 @@ namespace {
 // (languages::setExecGuard), and so does everything it starts; should the runner be killed,
 // even by SIGKILL, a watchdog kills every process carrying it, as a world's watchdog does for
 // its processes (docs/process-fixture.md): the parent-death signal reaches the program only.
-// Started with the first exec test (a run without one has no watchdog), never destroyed: it
-// sweeps when the runner's end closes its pipe.
+// Started with the first exec test (a run without one has no watchdog); it sweeps when the
+// runner's end closes its pipe, or when endExecGuard() lets it go.
+std::mutex guardMutex;
+std::unique_ptr<fixtures::Watchdog> guardWatchdog;
+std::string guardEntry;
+bool guardTried = false;
+
 std::string guardWhatExecTestsStart() {
-    static std::once_flag started;
-    static std::string entry;
-    std::call_once(started, [] {
-        std::random_device random;
-        char name[64];
-        std::snprintf(name, sizeof name, "RTF_IN_PROCESS_RUN_%08x%08x=1", random(), random());
-        auto watchdog = std::make_unique<fixtures::Watchdog>();
-        std::string error;
-        if (!watchdog->start(name, error)) {
-            std::fprintf(stderr,
-                         "%s: warning: --isolation none: %s; what exec tests start may outlive "
-                         "a killed runner\n",
-                         programName, error.c_str());
-            return;
-        }
-        static fixtures::Watchdog* const kept = watchdog.release();  // until the runner ends
-        (void)kept;
-        entry = name;
-    });
-    return entry;
+    std::lock_guard<std::mutex> lock(guardMutex);
+    if (guardTried) {
+        return guardEntry;
+    }
+    guardTried = true;
+    std::random_device random;
+    char name[64];
+    std::snprintf(name, sizeof name, "RTF_IN_PROCESS_RUN_%08x%08x=1", random(), random());
+    auto watchdog = std::make_unique<fixtures::Watchdog>();
+    std::string error;
+    if (!watchdog->start(name, error)) {
+        std::fprintf(stderr,
+                     "%s: warning: --isolation none: %s; what exec tests start may outlive a "
+                     "killed runner\n",
+                     programName, error.c_str());
+        return guardEntry;
+    }
+    guardWatchdog = std::move(watchdog);
+    guardEntry = name;
+    return guardEntry;
 }
 
 }  // namespace
+
+void endExecGuard() {
+    std::unique_ptr<fixtures::Watchdog> watchdog;
+    {
+        std::lock_guard<std::mutex> lock(guardMutex);
+        watchdog.swap(guardWatchdog);
+    }
+    watchdog.reset();  // it sweeps (the runner does not carry the variable), exits, is reaped
+}
 
 std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
     std::fprintf(stderr,
