@@ -225,7 +225,17 @@ TEST(WorldFile, ReportsBadValuesOfChecks) {
     expectError(
         "<world>\n<process name='a' command='true'><ready>\n<output>([a-</output>"
         "</ready></process></world>",
-        3, "is not a valid regular expression");
+        3, "is not a regular expression RE2 takes");
+    // RE2 has no back-references or look-around: refused when the file is read, not at
+    // set-up (README: the syntax users may write).
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<output>(a)\\1</output>"
+        "</ready></process></world>",
+        3, "invalid escape sequence");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<output>(?=ready)</output>"
+        "</ready></process></world>",
+        3, "no back-references or look-around");
     expectError(
         "<world>\n<process name='a' command='true'><ready>\n"
         "<file timeout='forever'>x</file></ready></process></world>",
