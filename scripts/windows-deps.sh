@@ -49,26 +49,12 @@ for i in "${!packages[@]}"; do
     fi
 done
 if ((${#missing[@]} > 0)); then
-    apt_dir=$deps/apt
-    mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
-    cat >"$apt_dir/sources.list" <<LIST
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm-updates main
-LIST
-    apt_options=(
-        -o "Dir::Etc::sourcelist=$apt_dir/sources.list"
-        -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
-        -o "Dir::State::Lists=$apt_dir/lists"
-        -o "Dir::Cache=$apt_dir/cache"
-        -o "Dir::Cache::archives=$apt_dir/cache/archives"
-        -o "Dir::Cache::pkgcache=$apt_dir/cache/pkgcache.bin"
-        -o "Dir::Cache::srcpkgcache=$apt_dir/cache/srcpkgcache.bin"
-        -o "Debug::NoLocking=1"
-        -o "APT::Sandbox::User=root"
-    )
+    # shellcheck source=scripts/private-apt.sh
+    . "$(dirname "$0")/private-apt.sh"
+    private_apt "$deps/apt" deb-src
     echo "windows-deps: fetching the Debian sources of ${missing[*]} into $deps"
-    apt-get "${apt_options[@]}" -q update
-    (cd "$deps" && apt-get "${apt_options[@]}" -q source "${missing[@]}")
+    apt-get "${private_apt_options[@]}" -q update
+    (cd "$deps" && apt-get "${private_apt_options[@]}" -q source "${missing[@]}")
 fi
 
 # SQLite's amalgamation, generated once in a build folder of its own (the unpacked source stays
