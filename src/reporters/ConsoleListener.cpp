@@ -8,6 +8,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 
@@ -63,7 +64,7 @@ void ConsoleListener::message(const char* label, const char* colour, const TestM
     } else {
         text += label;
     }
-    text += ": " + reporters::messageText(msg);
+    text += ": " + reporters::shownMessage(msg, "          ");
     line(std::move(text));
 }
 
@@ -218,12 +219,12 @@ void ConsoleListener::startTestSuite(const TestSuite* suite) {
     const std::size_t count = suite->size();
     std::string text = "\n";
     text += colors_ ? bold : "";
-    text += "suite " + suite->getName();
+    text += "suite " + reporters::visibleText(suite->getName());
     text += colors_ ? plain : "";
     text += "  (" + std::to_string(count) + (count == 1 ? " test)" : " tests)");
     line(std::move(text));
     if (verbose_ && !suite->getDescription().empty()) {
-        line("  " + suite->getDescription());
+        line("  " + reporters::visibleText(suite->getDescription()));
     }
 }
 
@@ -242,7 +243,8 @@ void ConsoleListener::endTestSuite(const TestSuite* suite) {
     }
     text += ok ? "passed" : "FAILED";
     text += colors_ ? plain : "";
-    text += "  " + record.name + "  (" + reporters::seconds(record.duration) + ")";
+    text += "  " + reporters::visibleText(record.name) + "  (" +
+            reporters::seconds(record.duration) + ")";
     line(std::move(text));
 }
 
