@@ -46,6 +46,17 @@ void ConsoleListener::setStream(std::FILE* stream) {
     tty_ = ::isatty(::fileno(stream_)) == 1;
 }
 
+void ConsoleListener::onEvent(const RunEvent& event) {
+    const RunEvent* before = record_.timeAs(&event);
+    try {
+        TestListener::onEvent(event);
+    } catch (...) {
+        record_.timeAs(before);
+        throw;
+    }
+    record_.timeAs(before);
+}
+
 void ConsoleListener::line(std::string text) {
     text += '\n';
     std::fwrite(text.data(), 1, text.size(), stream_);
