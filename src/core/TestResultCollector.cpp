@@ -260,6 +260,12 @@ void TestResultCollector::onEvent(const RunEvent& event) {
     delivering_ = outer;
 }
 
+const RunEvent* TestResultCollector::timeAs(const RunEvent* event) {
+    const RunEvent* before = delivering_;
+    delivering_ = event;
+    return before;
+}
+
 void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg, bool passed,
                                  const Measurement* measurement,
                                  std::shared_ptr<const Attachment> attachment) {
