@@ -6,6 +6,8 @@
 #   httplib::httplib   cpp-httplib's header-only httplib.h, from Debian's source package
 #   SQLite::SQLite3    SQLite, a static library from the amalgamation scripts/windows-deps.sh
 #                      generates from Debian's source package (so no DLL to ship)
+#   re2::re2           RE2 from Debian's source package and the tables scripts/windows-deps.sh
+#                      generates from it, a static library
 #   CLI11::CLI11, nlohmann_json::nlohmann_json   the copied headers
 #   GTest::gtest, GTest::gtest_main   GoogleTest built from /usr/src/googletest
 set(RTF_WINDOWS_DEPS_DIR ${PROJECT_BINARY_DIR}/deps CACHE PATH
@@ -50,6 +52,26 @@ target_compile_definitions(rtf_sqlite3 PRIVATE SQLITE_THREADSAFE=1 SQLITE_OMIT_L
 # Third-party C code: built with its own warnings, not ours.
 target_compile_options(rtf_sqlite3 PRIVATE -w)
 add_library(SQLite::SQLite3 ALIAS rtf_sqlite3)
+
+# RE2's library sources, as its CMakeLists.txt lists them; three of them are the generated tables.
+rtf_windows_dep_folder(re2_dir re2-*)
+set(re2_tables ${RTF_WINDOWS_DEPS_DIR}/re2-tables/re2)
+if(NOT EXISTS ${re2_tables}/unicode_groups.cc)
+    message(FATAL_ERROR "${re2_tables} lacks RE2's tables: run "
+                        "scripts/windows-deps.sh ${PROJECT_BINARY_DIR}")
+endif()
+set(re2_sources)
+foreach(name bitstate compile dfa filtered_re2 mimics_pcre nfa onepass parse prefilter
+             prefilter_tree prog re2 regexp set simplify stringpiece tostring)
+    list(APPEND re2_sources ${re2_dir}/re2/${name}.cc)
+endforeach()
+add_library(rtf_re2 STATIC ${re2_sources} ${re2_dir}/util/rune.cc ${re2_dir}/util/strutil.cc
+            ${re2_tables}/perl_groups.cc ${re2_tables}/unicode_casefold.cc
+            ${re2_tables}/unicode_groups.cc)
+target_include_directories(rtf_re2 SYSTEM PUBLIC ${re2_dir})
+# Third-party code: built with its own warnings, not ours.
+target_compile_options(rtf_re2 PRIVATE -w)
+add_library(re2::re2 ALIAS rtf_re2)
 
 set(header_dir ${RTF_WINDOWS_DEPS_DIR}/include)
 if(NOT EXISTS ${header_dir}/CLI/CLI.hpp OR NOT EXISTS ${header_dir}/nlohmann/json.hpp)

@@ -4,7 +4,8 @@
 #   scripts/install-deps.sh            the Linux build's packages
 #   scripts/install-deps.sh --windows  also the Windows job's tools (./run.sh windows):
 #                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`,
-#                                      tcl to generate SQLite's amalgamation
+#                                      tcl to generate SQLite's amalgamation, unicode-data
+#                                      and python3-six to generate RE2's tables
 set -euo pipefail
 
 packages=(
@@ -15,14 +16,15 @@ packages=(
     liblua5.4-dev lua5.4 ruby ruby-dev
     mosquitto mosquitto-clients perl nodejs
     libcpp-httplib-dev chromium chromium-driver python3-selenium
-    python3-yaml libsqlite3-dev libelf-dev
+    python3-yaml libsqlite3-dev libelf-dev libre2-dev
     gcovr tini ccache
     clang libclang-rt-14-dev
 )
 # Optional: the Windows job cross-builds with MinGW-w64 (the posix flavour: C++ threads), runs
 # under Wine and fetches pugixml's, Lua's and SQLite's sources with `apt-get source`
-# (dpkg-source); SQLite's sqlite3.c is generated from its source tree with tclsh (tcl).
-windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev tcl)
+# (dpkg-source); SQLite's sqlite3.c is generated from its source tree with tclsh (tcl), RE2's
+# Unicode tables from unicode-data with its Python scripts (python3-six).
+windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev tcl unicode-data python3-six)
 if [[ "${1:-}" == --windows ]]; then
     packages+=("${windows_packages[@]}")
 elif [[ $# -gt 0 ]]; then

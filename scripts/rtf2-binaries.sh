@@ -17,7 +17,7 @@ if compgen -G "$out/root/usr/include/*/robottestingframework/TestCase.h" >/dev/n
 fi
 # shellcheck source=scripts/private-apt.sh
 . "$root/scripts/private-apt.sh"
-private_apt "$out/apt"
+private_apt "$out/apt" deb
 apt-get "${private_apt_options[@]}" -q update
 packages=(librobottestingframework2 librobottestingframework-dll2 librobottestingframework-dev
     libtinyxml2.6.2v5)

@@ -24,7 +24,7 @@ source=$out/source
 if [[ ! -e $source/tests/CMakeLists.txt ]]; then
     # shellcheck source=scripts/private-apt.sh
     . "$root/scripts/private-apt.sh"
-    private_apt "$out/apt"
+    private_apt "$out/apt" deb-src
     echo "rtf2-tests: fetching RTF 2.0.1's Debian source package into $out"
     apt-get "${private_apt_options[@]}" -q update
     # --download-only: the orig tarball is all that is needed; a missing Debian part (answered

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # windows-deps.sh BUILD_DIR: the third-party code the Windows build (cmake/mingw-w64.cmake)
 # compiles or includes, fetched into BUILD_DIR/deps/ and never into the repository:
-#   - pugixml, Lua 5.4, cpp-httplib and SQLite: Debian 12's source packages (`apt-get source`;
+#   - pugixml, Lua 5.4, cpp-httplib, SQLite and RE2: Debian 12's source packages (`apt-get source`;
 #     Debian's installed httplib.h declares only, its code being in libcpp-httplib.so, while the
 #     source has the header-only httplib.h the Windows build compiles), through an apt
 #     configuration of its own under BUILD_DIR/deps/apt/ (its sources.list with deb-src lines,
@@ -9,6 +9,10 @@
 #   - SQLite's amalgamation (sqlite3.c, sqlite3.h): Debian's source is SQLite's full tree, so it
 #     is generated from it with the native tools (./configure, make sqlite3.c: tclsh), in
 #     BUILD_DIR/deps/sqlite3-amalgamation/, which the Windows build cross-compiles;
+#   - RE2's generated tables (perl_groups.cc, unicode_casefold.cc, unicode_groups.cc): Debian's
+#     source leaves them out (debian/copyright, Files-Excluded) and makes them when it builds,
+#     from the Unicode data of the unicode-data package (python3, python3-six, perl); they are
+#     generated the same way into BUILD_DIR/deps/re2-tables/re2/;
 #   - CLI11 and nlohmann-json: the headers Debian installed, copied alone into
 #     BUILD_DIR/deps/include/, so the cross compiler never sees /usr/include (glibc's headers).
 # Quick when done: each part is fetched (and SQLite's amalgamation generated) once.
@@ -34,9 +38,9 @@ done
 rm -f "$deps/include/httplib.h"
 
 # Source packages: their name, and the folder `apt-get source` unpacks them to.
-packages=(pugixml lua5.4 cpp-httplib sqlite3)
+packages=(pugixml lua5.4 cpp-httplib sqlite3 re2)
 folders=("pugixml-*/src/pugixml.cpp" "lua5.4-*/src/lua.h" "cpp-httplib-*/httplib.h"
-    "sqlite3-*/tool/mksqlite3c.tcl")
+    "sqlite3-*/tool/mksqlite3c.tcl" "re2-*/re2/re2.cc")
 missing=()
 for i in "${!packages[@]}"; do
     # shellcheck disable=SC2086 # the pattern is meant to expand
@@ -45,26 +49,12 @@ for i in "${!packages[@]}"; do
     fi
 done
 if ((${#missing[@]} > 0)); then
-    apt_dir=$deps/apt
-    mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$apt_dir/sources.list.d"
-    cat >"$apt_dir/sources.list" <<LIST
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm main
-deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] http://deb.debian.org/debian bookworm-updates main
-LIST
-    apt_options=(
-        -o "Dir::Etc::sourcelist=$apt_dir/sources.list"
-        -o "Dir::Etc::sourceparts=$apt_dir/sources.list.d"
-        -o "Dir::State::Lists=$apt_dir/lists"
-        -o "Dir::Cache=$apt_dir/cache"
-        -o "Dir::Cache::archives=$apt_dir/cache/archives"
-        -o "Dir::Cache::pkgcache=$apt_dir/cache/pkgcache.bin"
-        -o "Dir::Cache::srcpkgcache=$apt_dir/cache/srcpkgcache.bin"
-        -o "Debug::NoLocking=1"
-        -o "APT::Sandbox::User=root"
-    )
+    # shellcheck source=scripts/private-apt.sh
+    . "$(dirname "$0")/private-apt.sh"
+    private_apt "$deps/apt" deb-src
     echo "windows-deps: fetching the Debian sources of ${missing[*]} into $deps"
-    apt-get "${apt_options[@]}" -q update
-    (cd "$deps" && apt-get "${apt_options[@]}" -q source "${missing[@]}")
+    apt-get "${private_apt_options[@]}" -q update
+    (cd "$deps" && apt-get "${private_apt_options[@]}" -q source "${missing[@]}")
 fi
 
 # SQLite's amalgamation, generated once in a build folder of its own (the unpacked source stays
@@ -89,5 +79,30 @@ if [[ ! -e "$amalgamation/sqlite3.c" || ! -e "$amalgamation/sqlite3.h" ]]; then
     cp "$amalgamation.build/sqlite3.c" "$amalgamation.build/sqlite3.h" "$amalgamation/"
     rm -rf "$amalgamation.build"
 fi
-echo "windows-deps: pugixml, Lua 5.4, cpp-httplib, SQLite and the header-only libraries" \
+# RE2's tables, generated once from its Debian source (the patched unicode.py reads
+# /usr/share/unicode, not the network) with its own scripts, as its Makefile's REBUILD_TABLES does.
+re2_tables=$deps/re2-tables/re2
+if [[ ! -e "$re2_tables/perl_groups.cc" || ! -e "$re2_tables/unicode_casefold.cc" ||
+    ! -e "$re2_tables/unicode_groups.cc" ]]; then
+    if [[ ! -e /usr/share/unicode/UnicodeData.txt ]]; then
+        echo "windows-deps: /usr/share/unicode is missing (scripts/install-deps.sh --windows" \
+            "installs unicode-data)" >&2
+        exit 1
+    fi
+    re2_source=$(compgen -G "$deps/re2-*/re2/re2.cc" | head -n 1)
+    re2_source=${re2_source%/re2/re2.cc}
+    echo "windows-deps: generating RE2's Unicode tables from $re2_source"
+    rm -rf "$re2_tables.build"
+    mkdir -p "$re2_tables.build"
+    (cd "$re2_source" && perl re2/make_perl_groups.pl >"$re2_tables.build/perl_groups.cc" &&
+        python3 re2/make_unicode_casefold.py >"$re2_tables.build/unicode_casefold.cc" &&
+        python3 re2/make_unicode_groups.py >"$re2_tables.build/unicode_groups.cc") || {
+        echo "windows-deps: generating RE2's tables failed" >&2
+        exit 1
+    }
+    rm -rf "$re2_tables"
+    mkdir -p "$(dirname "$re2_tables")"
+    mv "$re2_tables.build" "$re2_tables"
+fi
+echo "windows-deps: pugixml, Lua 5.4, cpp-httplib, SQLite, RE2 and the header-only libraries" \
     "are in $deps"

@@ -51,6 +51,9 @@ public:
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void addEvent(const Test* test, const ResultEvent& event) override;
+    // Hands `event` to the handlers above, its own record timing it when it happened (as the
+    // run's collector does): a test's time on the console is the reports' time.
+    void onEvent(const RunEvent& event) override;
 
 private:
     // A message of `kind` (its word and colour from the tables), printed when it is due.

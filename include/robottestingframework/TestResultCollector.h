@@ -227,6 +227,10 @@ public:
     // Hands the event to the named handlers (a subclass may override them, as in RTF 2.x), with
     // the time it happened at hand.
     void onEvent(const RunEvent& event) override;
+    // For a listener that keeps a collector of its own and calls its named handlers itself
+    // (ConsoleListener): what they record is timed when `event` happened, as onEvent times
+    // it. Returns the event timed so before, to give back after (nullptr: the time now).
+    const RunEvent* timeAs(const RunEvent* event);
 
 private:
     // A test between its startTest and endTest: where its record is. Found by id, never by

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <set>
 #include <utility>
 
 #include <robottestingframework/RunEvent.h>
@@ -257,6 +258,12 @@ void TestResultCollector::onEvent(const RunEvent& event) {
         throw;
     }
     delivering_ = outer;
+}
+
+const RunEvent* TestResultCollector::timeAs(const RunEvent* event) {
+    const RunEvent* before = delivering_;
+    delivering_ = event;
+    return before;
 }
 
 void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg, bool passed,
@@ -582,9 +589,11 @@ void TestResultCollector::endTestSuite(const TestSuite* suite) {
 }
 
 void TestResultCollector::interruptOpen(const TestMessage& why) {
+    std::set<std::size_t> cut;  // the suites whose test is interrupted here
     while (!openTests_.empty()) {
         const std::size_t open = openTests_.size();
         const Test* test = openTests_.back().test;
+        cut.insert(openTests_.back().suite);
         addInterrupted(test, why);
         endTest(test);
         if (openTests_.size() == open) {
@@ -592,6 +601,20 @@ void TestResultCollector::interruptOpen(const TestMessage& why) {
         }
     }
     while (!openSuites_.empty()) {
+        // A suite whose test was interrupted fails by it. Another one open was in its fixtures'
+        // tearDown (or, before any test, their set-up), which did not finish: the suite is
+        // interrupted with `why` and says so, which fails it as a failed fixture does (a run
+        // cut short is never reported passed).
+        if (cut.count(openSuites_.back().index) != 0) {
+            endTestSuite(nullptr);
+            continue;
+        }
+        const bool anyTest = !suites_[openSuites_.back().index].tests.empty();
+        const std::string phase = anyTest ? "tearDown" : "set-up";
+        addInterrupted(nullptr, TestMessage(why.getMessage() + ": the " + phase +
+                                                " of the suite's fixtures did not finish",
+                                            why.getDetail(), why.getSourceFileName(),
+                                            why.getSourceLineNumber()));
         endTestSuite(nullptr);
     }
     if (end_ < 0) {

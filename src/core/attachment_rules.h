@@ -27,7 +27,7 @@ bool attachmentsFolder(std::filesystem::path& folder, std::string& error);
 std::string runOverLimit(const std::filesystem::path& folder, std::uint64_t size,
                          std::uint64_t runLimit, std::uint64_t& files);
 
-// The name a stored copy of `source` gets in its folder: "<number>-<file name>".
+// The name a stored copy of `source` gets in its folder: "<number>-<safe file name>".
 std::string storedNameOf(const std::string& source, std::uint64_t number);
 
 // Fills `attachment` for the copy `storedName` in `folder` of `source`.

@@ -34,11 +34,13 @@ private:
     int fd_;
 };
 
-bool copyBytes(int from, int to, std::uint64_t size, std::string& error) {
+// Copies `from` to its end, whatever its size said: a file of /proc or /sys says 0 and has
+// more. Stops with `error` once more than `limit` bytes came; `copied` gets how many did.
+bool copyBytes(int from, int to, std::uint64_t limit, std::uint64_t& copied, std::string& error) {
     char buffer[64 * 1024];
-    std::uint64_t left = size;
-    while (left > 0) {
-        const ssize_t got = ::read(from, buffer, left < sizeof(buffer) ? left : sizeof(buffer));
+    copied = 0;
+    for (;;) {
+        const ssize_t got = ::read(from, buffer, sizeof(buffer));
         if (got < 0 && errno == EINTR) {
             continue;
         }
@@ -47,7 +49,13 @@ bool copyBytes(int from, int to, std::uint64_t size, std::string& error) {
             return false;
         }
         if (got == 0) {
-            break;  // the file shrank while copied: keep what there was
+            return true;
+        }
+        copied += static_cast<std::uint64_t>(got);
+        if (copied > limit) {
+            error = "it has more than the " + std::to_string(limit) + " bytes a file may have (" +
+                    kAttachmentFileLimitVariable + ")";
+            return false;
         }
         for (ssize_t done = 0; done < got;) {
             const ssize_t put = ::write(to, buffer + done, static_cast<size_t>(got - done));
@@ -60,9 +68,7 @@ bool copyBytes(int from, int to, std::uint64_t size, std::string& error) {
             }
             done += put;
         }
-        left -= static_cast<std::uint64_t>(got);
     }
-    return true;
 }
 
 }  // namespace
@@ -120,12 +126,22 @@ bool storeAttachment(const std::string& source, const std::string& description,
     }
     Descriptor outputFile(output);
     std::string copyError;
-    if (!copyBytes(input.get(), outputFile.get(), size, copyError)) {
+    std::uint64_t copied = 0;
+    if (!copyBytes(input.get(), outputFile.get(), fileLimit, copied, copyError)) {
         ::unlink((folder / storedName).c_str());
         error = what + copyError;
         return false;
     }
-    describeStored(folder, storedName, source, description, size, attachment);
+    if (copied > size) {
+        // It had more than its size said (/proc): the run's account again, with the copy in.
+        problem = runOverLimit(folder, 0, runLimit, files);
+        if (!problem.empty()) {
+            ::unlink((folder / storedName).c_str());
+            error = what + problem;
+            return false;
+        }
+    }
+    describeStored(folder, storedName, source, description, copied, attachment);
     return true;
 }
 

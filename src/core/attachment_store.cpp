@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "attachment_store.h"
+#include "reporters/text_safety.h"
 
 namespace fs = std::filesystem;
 
@@ -86,7 +87,8 @@ std::string runOverLimit(const fs::path& folder, std::uint64_t size, std::uint64
 }
 
 std::string storedNameOf(const std::string& source, std::uint64_t number) {
-    return std::to_string(number) + "-" + fs::path(source).filename().string();
+    return std::to_string(number) + "-" +
+           reporters::safeFileName(fs::path(source).filename().string());
 }
 
 void describeStored(const fs::path& folder, const std::string& storedName,

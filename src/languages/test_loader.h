@@ -47,6 +47,12 @@ void rehearseLanguage(const std::string& type);
 // when it has one (`hosted` true: this thread then waits), else right here.
 int hostLanguage(const std::string& type, int (*serve)(void*), void* context, bool& hosted);
 
+// --isolation none (the runner: executor_choice.cpp): `guard` is called before each exec
+// test's program starts, and what it returns (NAME=VALUE, or empty) is added to the program's
+// environment: the runner's watchdog of what the tests start, started with the first. None by
+// default (workers, the library). POSIX only: on Windows a program's job ends with the runner.
+void setExecGuard(std::string (*guard)());
+
 // The types this build supports ("dll", "exec", and the enabled script languages).
 bool isSupportedType(const std::string& type);
 

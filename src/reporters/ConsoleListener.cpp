@@ -8,6 +8,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 
@@ -45,6 +46,17 @@ void ConsoleListener::setStream(std::FILE* stream) {
     tty_ = ::isatty(::fileno(stream_)) == 1;
 }
 
+void ConsoleListener::onEvent(const RunEvent& event) {
+    const RunEvent* before = record_.timeAs(&event);
+    try {
+        TestListener::onEvent(event);
+    } catch (...) {
+        record_.timeAs(before);
+        throw;
+    }
+    record_.timeAs(before);
+}
+
 void ConsoleListener::line(std::string text) {
     text += '\n';
     std::fwrite(text.data(), 1, text.size(), stream_);
@@ -63,7 +75,7 @@ void ConsoleListener::message(const char* label, const char* colour, const TestM
     } else {
         text += label;
     }
-    text += ": " + reporters::messageText(msg);
+    text += ": " + reporters::shownMessage(msg, "          ");
     line(std::move(text));
 }
 
@@ -218,12 +230,12 @@ void ConsoleListener::startTestSuite(const TestSuite* suite) {
     const std::size_t count = suite->size();
     std::string text = "\n";
     text += colors_ ? bold : "";
-    text += "suite " + suite->getName();
+    text += "suite " + reporters::visibleText(suite->getName());
     text += colors_ ? plain : "";
     text += "  (" + std::to_string(count) + (count == 1 ? " test)" : " tests)");
     line(std::move(text));
     if (verbose_ && !suite->getDescription().empty()) {
-        line("  " + suite->getDescription());
+        line("  " + reporters::visibleText(suite->getDescription()));
     }
 }
 
@@ -242,7 +254,8 @@ void ConsoleListener::endTestSuite(const TestSuite* suite) {
     }
     text += ok ? "passed" : "FAILED";
     text += colors_ ? plain : "";
-    text += "  " + record.name + "  (" + reporters::seconds(record.duration) + ")";
+    text += "  " + reporters::visibleText(record.name) + "  (" +
+            reporters::seconds(record.duration) + ")";
     line(std::move(text));
 }
 

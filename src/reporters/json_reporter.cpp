@@ -316,7 +316,10 @@ void JsonReporter::writeDocument(ReportText& out) {
     out += ",\"suites\":[" + suites + "]";
     if (settings_.sharded) {
         out += ",\"shard\":{\"index\":" + std::to_string(settings_.shardIndex) +
-               ",\"count\":" + std::to_string(settings_.shardCount) + "}";
+               ",\"count\":" + std::to_string(settings_.shardCount) +
+               (settings_.shardPlan.empty() ? std::string()
+                                            : ",\"plan\":" + jsonString(settings_.shardPlan)) +
+               "}";
     }
     if (settings_.rerun) {
         out += ",\"rerun\":true";

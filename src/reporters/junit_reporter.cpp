@@ -118,18 +118,25 @@ std::string problems(const std::vector<ResultEvent>& events) {
 
 // A measurement as Jenkins reads one from <system-out> (each on its own line): the words,
 // then "[[PROPERTY|name=value]]". junit-10.xsd allows no <properties> in a <testcase>.
+// Jenkins knows no escape there: in the name, what would end it or the line early (`=`, `[`,
+// `]`, `|`, a control character) is `_`; the words above keep the name as it was given.
 std::string measurementLines(const Measurement& measurement) {
     std::string name = measurement.name;  // one line, whatever the test called it
-    std::replace(name.begin(), name.end(), '\n', ' ');
-    std::replace(name.begin(), name.end(), '\r', ' ');
-    return "measurement: " + describeMeasurement(measurement) + "\n[[PROPERTY|" + name + "=" +
-           formatNumber(measurement.value) + "]]\n";
+    std::replace_if(
+        name.begin(), name.end(),
+        [](char ch) {
+            const auto c = static_cast<unsigned char>(ch);
+            return c < 0x20 || c == 0x7F || ch == '=' || ch == '[' || ch == ']' || ch == '|';
+        },
+        '_');
+    return "measurement: " + visibleText(describeMeasurement(measurement)) + "\n[[PROPERTY|" +
+           name + "=" + formatNumber(measurement.value) + "]]\n";
 }
 
 // An attachment as Jenkins' junit-attachments plug-in reads one: "[[ATTACHMENT|path]]" alone
 // on its line, the path absolute.
 std::string attachmentLines(const Attachment& attachment) {
-    return "attachment: " + describeAttachment(attachment) + "\n[[ATTACHMENT|" +
+    return "attachment: " + visibleText(describeAttachment(attachment)) + "\n[[ATTACHMENT|" +
            attachment.absolutePath + "]]\n";
 }
 
@@ -252,6 +259,9 @@ std::string suiteProperties(const ReporterSettings& settings, bool first, const 
     if (first && settings.sharded) {
         property("rtf.shard.index", std::to_string(settings.shardIndex));
         property("rtf.shard.count", std::to_string(settings.shardCount));
+        if (!settings.shardPlan.empty()) {
+            property("rtf.shard.plan", settings.shardPlan);
+        }
     }
     if (first && settings.rerun) {
         property("rtf.rerun", "true");

@@ -41,7 +41,8 @@ struct ReporterSettings {
     bool sharded = false;
     unsigned int shardIndex = 0;
     unsigned int shardCount = 0;
-    bool rerun = false;  // --rerun-failed: --merge lets it replace the tests it reruns
+    std::string shardPlan;  // the whole run's plan (planIdentity): --merge checks it is one run
+    bool rerun = false;     // --rerun-failed: --merge lets it replace the tests it reruns
     // The place (from 0) of each suite of this run among every selected suite, before a shard
     // was taken: JUnit's testsuite id and JSON's testId, so merged shards order their suites
     // as one machine would. Empty: the suites' places in this run.

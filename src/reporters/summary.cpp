@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "reporters/text_safety.h"
+
 namespace robottestingframework {
 namespace reporters {
 
@@ -33,6 +35,10 @@ std::string messageText(const TestMessage& msg) {
         text += " [" + where + "]";
     }
     return text;
+}
+
+std::string shownMessage(const TestMessage& msg, const char* continuation) {
+    return visibleText(messageText(msg), continuation);
 }
 
 std::string traceText(const std::vector<ResultEvent>& events) {
@@ -68,11 +74,13 @@ std::string shownAs(const std::string& key, const std::string& name) {
 void appendShownAs(std::string& text, const std::string& key, const std::string& name) {
     // An absolute path is the name a loader gives a script it loaded (RTF 2.x), not one the test
     // chose: beside the id it would only show the workspace's path.
+    // Control characters in either are shown escaped (visibleText): a name must not drive the
+    // terminal or fake a line of its own.
     if (key.empty() || name.empty() || key == name || name[0] == '/') {
-        text += key.empty() ? name : key;
+        text += visibleText(key.empty() ? name : key);
         return;
     }
-    text.append(key).append(" (").append(name).append(")");
+    text.append(visibleText(key)).append(" (").append(visibleText(name)).append(")");
 }
 
 std::string seconds(double value) {

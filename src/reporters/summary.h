@@ -29,6 +29,10 @@ const char* statusWord(TestStatus status);
 std::string eventLabel(ResultEvent::Kind kind, bool passed);
 // "message: detail [file:line]".
 std::string messageText(const TestMessage& msg);
+// messageText as a terminal or the text report shows it: control characters escaped, and each
+// line after its first starting with `continuation` (deeper than the line it is under), so
+// that no message fakes a line of the console (text_safety.h, visibleText).
+std::string shownMessage(const TestMessage& msg, const char* continuation);
 // Every problem of a test (failure, error, crash, ...), one "kind: message" per line: the
 // trace of the HTML and JSON reports.
 std::string traceText(const std::vector<ResultEvent>& events);
@@ -37,6 +41,7 @@ std::vector<std::string> outputLines(const std::string& text);
 // How the consoles and the text report name a test: its id in its suite, then the name it gives
 // itself in parentheses when that differs ("tests/arith.lua (ArmTest)"); either alone when the
 // other is empty, and the id alone when the name is an absolute path (a loader's default).
+// Control characters in them shown escaped (text_safety.h, visibleText).
 std::string shownAs(const std::string& key, const std::string& name);
 // The same appended to `text`: the console's line of each test, with no string of its own.
 void appendShownAs(std::string& text, const std::string& key, const std::string& name);

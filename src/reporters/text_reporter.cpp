@@ -30,8 +30,9 @@ void appendEvents(std::string& out, const std::vector<ResultEvent>& events,
         }
         char at[32];
         std::snprintf(at, sizeof(at), "[%.3f s] ", event.time);
+        const std::string continuation = std::string(indent) + "    ";
         out += indent + std::string(at) + eventLabel(event.kind, event.passed) + ": " +
-               messageText(event.message) + "\n";
+               shownMessage(event.message, continuation.c_str()) + "\n";
     }
 }
 
@@ -63,10 +64,11 @@ void TextReporter::writeDocument(ReportText& text) {
         if (suite.name.empty()) {
             out += "Tests outside any suite\n";
         } else {
-            out += "Suite " + suite.name + ": " + (suite.succeeded() ? "passed" : "FAILED") +
-                   "  (" + seconds(suite.duration) + ")\n";
+            out += "Suite " + visibleText(suite.name) + ": " +
+                   (suite.succeeded() ? "passed" : "FAILED") + "  (" + seconds(suite.duration) +
+                   ")\n";
             if (!suite.description.empty()) {
-                out += "  " + suite.description + "\n";
+                out += "  " + visibleText(suite.description) + "\n";
             }
         }
         appendEvents(out, suite.events, settings_, "  ");

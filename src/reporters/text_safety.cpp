@@ -90,6 +90,47 @@ std::string plainText(const std::string& text) {
     return out;
 }
 
+std::string visibleText(const std::string& text, const char* continuation) {
+    const bool clean = std::all_of(text.begin(), text.end(), [](char ch) {
+        const auto c = static_cast<unsigned char>(ch);
+        return (c >= 0x20 && c < 0x7F) || c == '\t';
+    });
+    if (clean) {
+        return text;  // most names and messages: nothing to copy byte by byte
+    }
+    const std::string valid = validUtf8(text);
+    std::string out;
+    out.reserve(valid.size() + 16);
+    for (std::size_t i = 0; i < valid.size(); ++i) {
+        const auto c = static_cast<unsigned char>(valid[i]);
+        if (c == '\n' && continuation != nullptr) {
+            out += '\n';
+            out += continuation;
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == 0x1B) {
+            out += "\\e";
+        } else if ((c < 0x20 && c != '\t') || c == 0x7F) {
+            char escaped[8];
+            std::snprintf(escaped, sizeof(escaped), "\\x%02x", c);
+            out += escaped;
+        } else if (c == 0xC2 && i + 1 < valid.size() &&
+                   static_cast<unsigned char>(valid[i + 1]) < 0xA0) {
+            // U+0080..U+009F: C1 controls (U+009B starts a sequence as ESC [ does).
+            char escaped[8];
+            std::snprintf(escaped, sizeof(escaped), "\\u%04x",
+                          static_cast<unsigned char>(valid[i + 1]));
+            out += escaped;
+            ++i;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
 std::string jsonString(const std::string& text) {
     const std::string valid = validUtf8(text);
     std::string out;
@@ -176,6 +217,30 @@ std::string escapeMarkup(const std::string& text, Markup where) {
         }
     }
     return out;
+}
+
+std::string safeFileName(const std::string& name) {
+    std::string safe;
+    safe.reserve(name.size());
+    for (std::size_t i = 0; i < name.size();) {
+        const auto c = static_cast<unsigned char>(name[i]);
+        if (c >= 0x80) {
+            const std::size_t length = validSequence(name, i);
+            if (length == 0) {
+                safe += '_';
+                ++i;
+            } else {
+                safe.append(name, i, length);
+                i += length;
+            }
+            continue;
+        }
+        const bool unsafe = c < 0x20 || c == 0x7F || c == '[' || c == ']' || c == '|' || c == '<' ||
+                            c == '>' || c == ':' || c == '"' || c == '\\' || c == '?' || c == '*';
+        safe += unsafe ? '_' : static_cast<char>(c);
+        ++i;
+    }
+    return safe;
 }
 
 }  // namespace reporters

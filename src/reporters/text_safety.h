@@ -18,6 +18,13 @@ std::string validUtf8(const std::string& text);
 // `text` as a plain text file should hold it: invalid UTF-8 replaced as validUtf8 does, and
 // control characters other than tab, newline and carriage return (a NUL, an escape) dropped.
 std::string plainText(const std::string& text);
+// `text` as a terminal or a plain text report shows it without obeying it (a name or a message
+// of a test must not clear the screen, retitle the window or fake a line): invalid UTF-8
+// replaced as validUtf8 does, and every control character but tab (C0, DEL, C1) written as an
+// escape one can read: \r, \n, \e, \xNN (\u0085 and the like for C1). With `continuation`,
+// line breaks stay, and each line after the first starts with `continuation`. `text` itself
+// when it has nothing to escape.
+std::string visibleText(const std::string& text, const char* continuation = nullptr);
 // `text` as a quoted JSON string: invalid UTF-8 replaced, control characters escaped, and `<`,
 // `>` and `&` as \u escapes so the literal stays inert inside an HTML <script>.
 std::string jsonString(const std::string& text);
@@ -33,6 +40,11 @@ enum class Markup {
 // cannot hold (control characters other than tab, newline and carriage return, bytes that are
 // not valid UTF-8) dropped. The one escaping of the JUnit report and the web page's log.
 std::string escapeMarkup(const std::string& text, Markup where);
+
+// `name` as a file name every report can link and Jenkins' [[ATTACHMENT|...]] line can hold
+// (README: Attachments): control characters, bytes that are not UTF-8, `[`, `]`, `|` and what
+// Windows refuses in a name (`<`, `>`, `:`, `"`, `\`, `?`, `*`) each become `_`.
+std::string safeFileName(const std::string& name);
 
 }  // namespace reporters
 }  // namespace robottestingframework

@@ -5,6 +5,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "platform/bounded_file.h"
 
 namespace robottestingframework {
 namespace variables {
@@ -37,6 +41,12 @@ void VariableTable::define(const Variable& variable) {
     }
     variables_[variable.name] = variable;
     expanded_.clear();  // a value may have used the old one
+}
+
+void VariableTable::giveResources(std::map<std::string, std::string> items) {
+    resources_ = std::move(items);
+    resourcesGiven_ = true;
+    expanded_.clear();  // a value expanded before holds markers
 }
 
 const Variable* VariableTable::find(const std::string& name) const {
@@ -154,7 +164,16 @@ std::string VariableTable::expandText(const std::string& text, const std::string
                                   text + "' (write $${ for a literal ${)"};
         }
         const std::string name = text.substr(i + 2, close - i - 2);
-        if (name.compare(0, 9, "resource.") == 0 && name.size() > 9) {
+        if (name.compare(0, 9, "resource.") == 0 && name.size() > 9 && resourcesGiven_) {
+            const auto found = resources_.find(name.substr(9));
+            if (found == resources_.end()) {
+                throw ExpandError{ExpandError::Kind::PoolNotTaken, name,
+                                  "${" + name + "} but the suite takes no item of pool " +
+                                      name.substr(9) + " (add <resource pool=\"" + name.substr(9) +
+                                      "\"/> to the suite)"};
+            }
+            out += found->second;
+        } else if (name.compare(0, 9, "resource.") == 0 && name.size() > 9) {
             out += resourceMarker(name.substr(9));  // filled in when the suite is started
         } else if (name.compare(0, 4, "env:") == 0) {
             const char* value = std::getenv(name.substr(4).c_str());
@@ -239,11 +258,14 @@ bool parseAssignment(const std::string& text, std::string& name, std::string& va
 }
 
 bool readVariableFile(const std::string& path, std::vector<Variable>& out, std::string& error) {
-    std::ifstream in(path);
-    if (!in) {
-        error = path + ": cannot read the variable file (" + std::strerror(errno) + ")";
+    // A regular file or a pipe (`<(...)`), of at most 16 MiB: /dev/zero is refused, not read
+    // until memory runs out.
+    std::string text;
+    if (!platform::readBoundedFile(path, "variable file", maxExpandedTotal, platform::Pipes::Read,
+                                   text, error)) {
         return false;
     }
+    std::istringstream in(text);
     return readVariables(in, path, out, error);
 }
 

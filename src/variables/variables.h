@@ -36,7 +36,15 @@ struct Variable {
 };
 
 struct ExpandError {
-    enum class Kind { Undefined, EnvironmentUnset, Unterminated, Cycle, TooLong, TooMuch };
+    enum class Kind {
+        Undefined,
+        EnvironmentUnset,
+        Unterminated,
+        Cycle,
+        TooLong,
+        TooMuch,
+        PoolNotTaken
+    };
     Kind kind;
     std::string name;     // the variable being expanded when it happened
     std::string message;  // the whole story, without file and line (the caller knows them)
@@ -56,6 +64,10 @@ public:
     // The value of `name`, expanded (throws ExpandError when it is not defined); not counted
     // as a use of `name`.
     std::string valueOf(const std::string& name);
+    // The items of each pool the suite took (pool -> "ID,ID"), once they are known (a world
+    // file's): ${resource.POOL} expands to them, and to an error (PoolNotTaken) for a pool not
+    // here. Until this is called, ${resource.POOL} stays a marker (resourceMarker).
+    void giveResources(std::map<std::string, std::string> items);
     // A new file starts: the total of maxExpandedTotal counts again from zero.
     void resetTotal() { total_ = 0; }
     // The names that expand() looked up, defined or not.
@@ -73,6 +85,8 @@ private:
     std::vector<std::string> resolving_;           // the chain being expanded, for cycles
     std::vector<std::string> used_;
     std::size_t total_ = 0;
+    bool resourcesGiven_ = false;
+    std::map<std::string, std::string> resources_;
 };
 
 // "a: x" for a parsed NAME=VALUE, or false with `error` saying what is wrong and where

@@ -110,3 +110,38 @@ def test_a_log_over_the_limit_is_not_attached_and_the_suite_says_so(tmp_path, is
     assert len(refused) == 2 and all("broker.log" in m or "robot.log" in m for m in refused), \
         suite["messages"]
     assert os.path.exists(tmp_path / "rtf-logs" / "arm" / "robot.log")
+
+
+@pytest.mark.parametrize("isolation", ["none", "process"])
+def test_two_suites_of_one_world_file_each_keep_their_own_logs(tmp_path, isolation):
+    # Issue 39, 3: the README's own case, two suites starting robot.world.xml at once (-j 2),
+    # wrote both worlds into rtf-logs/robot/*.log: each suite's attachment mixed both worlds'
+    # lines, and one world's first line was lost.
+    (tmp_path / "robot.world.xml").write_text("".join(
+        ['<world name="robot">\n'] +
+        [f'  <process name="{process}" command="/bin/sh -c \'echo {process} of ${{who}} up; '
+         f'exec sleep 30\'">\n    <ready timeout="20s"><output>^{process} of ${{who}} up$'
+         f'</output></ready>\n  </process>\n' for process in ("broker", "robot")] +
+        ["</world>\n"]))
+    # Long enough for the two worlds to be up at once.
+    (tmp_path / "slow.py").write_text("import time\n\n\nclass TestCase:\n    def run(self):\n"
+                                      "        time.sleep(1.5)\n")
+    for name in ("left", "right"):
+        (tmp_path / f"{name}.xml").write_text(
+            f'<suite name="{name}">\n  <variable name="who">{name}</variable>\n'
+            '  <fixture type="process">robot.world.xml</fixture>\n'
+            '  <test name="slow">slow.py</test>\n</suite>\n')
+    r = run_runner("--isolation", isolation, "-j", "2", "--suite", "left.xml", "--suite",
+                   "right.xml", "-o", "json:r.json", cwd=tmp_path, timeout=150)
+    assert r.returncode == 0, r
+    expected = {(suite, f"{process}.log"): f"{process} of {suite} up\n"
+                for suite in ("left", "right") for process in ("broker", "robot")}
+    # One folder per suite under the world's log folder, named after the suite.
+    for (suite, log), text in expected.items():
+        assert (tmp_path / "rtf-logs" / "robot" / suite / log).read_text() == text
+    seen = {}
+    for suite in validate_ctrf(tmp_path / "r.json")["results"]["extra"]["robotology.rtf"][
+            "suites"]:
+        for attachment in suite["attachments"]:
+            seen[(suite["name"], attachment["name"])] = (tmp_path / attachment["path"]).read_text()
+    assert seen == expected

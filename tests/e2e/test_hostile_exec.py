@@ -273,6 +273,25 @@ def test_an_exec_test_dies_with_a_runner_killed_by_sigkill(tmp_path, marker, iso
 
 
 @pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_what_an_exec_test_runs_dies_with_a_runner_killed_by_sigkill(tmp_path, marker,
+                                                                      isolation):
+    # Issue 39, 15: `sleep` is the shell's child, not the test itself: the parent-death signal
+    # reaches the shell only. With --isolation none the run's watchdog kills it.
+    path = shell(tmp_path, "touch \"$0.ready\"\nsleep 60\nexit 0\n")
+    proc = start_runner("--isolation", isolation, "--no-output", "--test", path.name,
+                        env=marked(marker), cwd=tmp_path)
+    ready = tmp_path / "check.ready"
+    deadline = time.monotonic() + 30
+    while not ready.exists():
+        assert time.monotonic() < deadline and proc.poll() is None, proc.communicate()
+        time.sleep(0.05)
+    time.sleep(0.2)   # the shell has started sleep
+    proc.kill()  # the runner alone, not its group
+    proc.communicate(timeout=30)
+    assert leftover_processes(marker, grace=5.0) == []
+
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
 def test_daemons_of_exec_tests_do_not_survive_the_run(tmp_path, marker, isolation):
     # A daemon in a session of its own, out of the test's process group.
     path = shell(tmp_path, "setsid sh -c 'echo $$ > \"$1\"; exec sleep 60' sh \"$0.daemon\" "

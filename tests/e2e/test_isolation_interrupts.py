@@ -1,6 +1,7 @@
 """Ctrl-C and SIGTERM: the running test is stopped, tear-downs run, the outputs are written with
 what finished and the rest interrupted, the exit status says so (130 SIGINT, 143 SIGTERM); a
 second Ctrl-C ends at once; nothing the run started survives it, even a SIGKILL of the runner."""
+import json
 import os
 import signal
 import subprocess
@@ -141,4 +142,54 @@ def test_an_exec_test_that_leaves_a_child_behind_leaves_nothing_in_process(tmp_p
                         env=marked(marker), cwd=tmp_path)
     code, out, err = finish(proc)
     assert code == 0, (code, out, err)
+    assert leftover_processes(marker) == []
+
+
+HANGING_TEARDOWN = """import time
+
+
+class FixtureManager:
+    def setup(self, param):
+        self.flag = param.strip()
+        return True
+
+    def check(self):
+        return True
+
+    def tearDown(self):
+        with open(self.flag, "w") as out:
+            out.write("tearing down")
+        time.sleep(120)
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_hung_teardown_interrupted_twice_is_reported_interrupted(tmp_path, marker, isolation):
+    # Issue 39, 5: exit 143, yet the text report said "Suite s: passed", JSON suitesFailed 0
+    # and JUnit had no <error>.
+    (tmp_path / "hang.py").write_text(HANGING_TEARDOWN)
+    (tmp_path / "suite.xml").write_text(f'''<suite name="s">
+  <fixture type="python" param="tearing.flag">hang.py</fixture>
+  <test name="done">{plugin("passing_test")}</test>
+</suite>''')
+    proc = start_runner("--isolation", isolation, "--suite", "suite.xml", "-o", "text:out.txt",
+                        "-o", "json:out.json", "-o", "junit:out.xml", env=marked(marker),
+                        cwd=tmp_path)
+    wait_for(lambda: (tmp_path / "tearing.flag").exists(), what="the hanging tearDown")
+    proc.send_signal(signal.SIGTERM)
+    time.sleep(0.5)
+    proc.send_signal(signal.SIGTERM)
+    code, out, err = finish(proc, timeout=20)
+    assert code == 143, (code, out, err)
+    said = "interrupted: the runner quit: the tearDown of the suite's fixtures did not finish"
+    text = (tmp_path / "out.txt").read_text()
+    assert "Suite s: FAILED" in text and said in text, text
+    report = json.loads((tmp_path / "out.json").read_text())
+    assert report["results"]["summary"]["extra"]["robotology.rtf"]["suitesFailed"] == 1, report
+    validate_junit(tmp_path / "out.xml")
+    (suite,) = ET.parse(tmp_path / "out.xml").getroot().iter("testsuite")
+    errors = [error for case in suite.iter("testcase") for error in case.iter("error")]
+    assert any(said in (error.text or "") + (error.get("message") or "") for error in errors), \
+        ET.tostring(suite)
+    assert statuses(tmp_path / "out.xml")["done"] == "passed"
     assert leftover_processes(marker) == []

@@ -1,7 +1,8 @@
 """Fixture plug-ins: set up in order, torn down in reverse, a failing one skips the suite."""
 import re
+import xml.etree.ElementTree as ET
 
-from conftest import plugin, run_runner
+from conftest import SOURCE_DIR, plugin, run_runner, validate_junit
 
 
 def fixture(log, name, extra=""):
@@ -54,3 +55,30 @@ def test_fixture_that_cannot_be_loaded_fails_the_suite_with_the_reason(tmp_path,
     assert "cannot load no_such_fixture" in run.stdout, run
     assert "libno_such_fixture.so" in run.stdout, run
     assert re.search(r"^\s*skipped\s+\S*passing_test", run.stdout, re.M), run
+
+
+def test_a_failed_fixture_counts_in_junit_as_the_readers_count_and_as_the_readme_says(
+        tmp_path, suite_file):
+    # Issue 39, 14: one test whose fixture fails is tests="2" (the test skipped, the
+    # "fixtures" testcase an error), as junitparser and xunitparser recount it; the README
+    # said so in one place and the opposite in another.
+    log = tmp_path / "fixtures.log"
+    suite = suite_file(f"""<suite name="broken world">
+  {fixture(log, "A", " --fail-setup")}
+  <test>{plugin("passing_test")}</test>
+</suite>""")
+    run = run_runner("-s", suite.name, "-o", "out.xml", "--output-type", "junit", cwd=tmp_path)
+    assert run.returncode == 1, run
+    read = validate_junit(tmp_path / "out.xml")    # the readers' counts equal the report's
+    assert read[0]["totals"] == {"tests": 2, "failures": 0, "errors": 1, "skipped": 1}, read
+    cases = ET.parse(tmp_path / "out.xml").getroot().findall("testsuite/testcase")
+    assert [c.get("name") for c in cases][-1] == "fixtures", [c.get("name") for c in cases]
+
+    # Every README sentence about the fixtures testcase and tests= says it is counted.
+    readme = re.sub(r"\s+", " ", (SOURCE_DIR / "README.md").read_text())
+    sentences = [s for s in re.split(r"(?<=[.|])\s", readme)
+                 if "fixtures" in s and "tests=" in s]
+    assert sentences, "the README says nothing of the fixtures testcase in tests="
+    for sentence in sentences:
+        assert "not one more test" not in sentence and "not counted" not in sentence, sentence
+        assert "counted in `tests=`" in sentence, sentence

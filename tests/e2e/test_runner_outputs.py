@@ -79,9 +79,13 @@ def test_verbose_console_shows_what_the_test_printed(tmp_path):
 
 
 def test_unwritable_output_is_reported_and_exits_two(tmp_path):
+    # A missing folder is made (issue 40); one under a file cannot be, which is said before
+    # the run.
+    (tmp_path / "no").write_text("a file\n")
     run = run_runner("-t", plugin("passing_test"), "-o", "no/such/dir.txt", cwd=tmp_path)
     assert run.returncode == 2, run
-    assert "cannot write the text output no/such/dir.txt" in run.stderr, run
+    assert "--output text:no/such/dir.txt: cannot create the folder no/such" in run.stderr, run
+    assert "passed" not in run.stdout, run
 
 
 def test_no_summary_keeps_the_closing_line_on_the_console(tmp_path):

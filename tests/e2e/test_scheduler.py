@@ -482,3 +482,31 @@ def test_each_suite_running_at_once_forks_its_workers_from_a_fork_server_of_its_
             assert not os.path.exists(f"/proc/{pid}"), f"fork server {pid} outlived the run"
     assert len(by_jobs["1"]) == 1, by_jobs
     assert len(by_jobs["2"]) == 2, by_jobs
+
+
+def test_a_pool_taken_twice_by_one_suite_exits_2_saying_what_to_write(tmp_path, suite_file):
+    # Issue 39, 1: each <resource> alone fits the one-item pool, both together never do; the
+    # run waited for ever (also with -j 1), --list passed. Bounded: a hang fails the test.
+    path = suite_file('<suite name="s">\n'
+                      '  <resource pool="p" default="1"/>\n'
+                      '  <resource pool="p" default="1"/>\n'
+                      f'  <test>{plugin("passing_test")}</test>\n</suite>\n')
+    for extra in ([], ["-j", "1"], ["--list"]):
+        r = run_runner("--suite", path.name, "--no-output", *extra, cwd=tmp_path, timeout=30)
+        assert r.returncode == 2, (extra, r)
+        assert ('suite.xml:3: pool "p" is taken a second time (first at line 2); write one '
+                '<resource pool="p" count="2"/>') in r.stderr, (extra, r)
+
+
+def test_a_repeated_item_in_default_exits_2_naming_the_line(tmp_path, suite_file):
+    # Issue 39, 10 and issue 40, 3: default="7 7" gave two suites item 7 at once, and
+    # default="1 1 1" with count="2" handed out 1,1; a --resources file refuses the same.
+    for resource in ('<resource pool="ports" default="7 7"/>',
+                     '<resource pool="ports" default="1 1 1" count="2"/>'):
+        path = suite_file(f'<suite name="s">\n  {resource}\n'
+                          f'  <test>{plugin("passing_test")}</test>\n</suite>\n')
+        for extra in ([], ["--list"]):
+            r = run_runner("--suite", path.name, "--no-output", *extra, cwd=tmp_path, timeout=30)
+            assert r.returncode == 2, (resource, extra, r)
+            assert 'suite.xml:2: default="...": item "' in r.stderr, (resource, r)
+            assert "is given twice" in r.stderr, (resource, r)

@@ -1,6 +1,7 @@
 """Shards through the real runner: --shard-index/--shard-count and the CI engines' variables,
 --durations, --list, empty shards, --merge (JUnit and JSON, reruns), and their bad input."""
 import json
+import re
 import subprocess
 import xml.etree.ElementTree as ET
 
@@ -76,10 +77,14 @@ def test_each_shard_report_says_which_shard_it_is(tmp_path):
     # (Beside each suite's display names of its tests, "rtf.name.S.T".)
     properties = {p.get("name"): p.get("value") for p in first.find("properties")
                   if not p.get("name").startswith("rtf.name.")}
+    # And the whole run's plan, the same in every shard's report (--merge checks it).
+    assert re.fullmatch("[0-9a-f]{16}", properties.pop("rtf.shard.plan", "")), properties
     assert properties == {"rtf.shard.index": "1", "rtf.shard.count": "2"}
     assert all(not p.get("name").startswith("rtf.shard.")
                for suite in others for p in suite.iter("property")), ET.tostring(root)
     shard = json.loads(jsons[1].read_text())["results"]["extra"]["robotology.rtf"]["shard"]
+    assert shard.pop("plan") == first.find("properties").find(
+        "property[@name='rtf.shard.plan']").get("value")
     assert shard == {"index": 1, "count": 2}
 
 
@@ -94,8 +99,9 @@ def test_an_empty_shard_exits_0_with_valid_empty_reports(tmp_path):
     assert suites_of(xml) == []
     (holder,) = ET.parse(xml).getroot().iter("testsuite")
     assert holder.get("tests") == "0" and holder.find("testcase") is None
-    assert {p.get("name"): p.get("value") for p in holder.find("properties")} == {
-        "rtf.shard.index": "3", "rtf.shard.count": "4"}
+    properties = {p.get("name"): p.get("value") for p in holder.find("properties")}
+    assert re.fullmatch("[0-9a-f]{16}", properties.pop("rtf.shard.plan", "")), properties
+    assert properties == {"rtf.shard.index": "3", "rtf.shard.count": "4"}
     assert validate_ctrf(js)["results"]["summary"]["tests"] == 0
 
 
@@ -325,3 +331,78 @@ def test_suites_sharing_a_lock_go_to_the_same_shard(tmp_path):
     # And the runs of both shards hold every suite once.
     xmls, _ = shard_reports(tmp_path, suites, 2)
     assert sorted(name for xml in xmls for name in suites_of(xml)) == ["s00", "s01", "s02", "s03"]
+
+
+def linked_suites(folder):
+    """Suites a (test "base"), b (a test that depends on "base") and c, in `folder`."""
+    folder.mkdir(parents=True, exist_ok=True)
+    write_script(folder / "ok.sh", "#!/bin/sh\necho fine\nexit 0\n")
+    (folder / "a.xml").write_text('<suite name="a">\n  <test type="exec" name="base">ok.sh</test>'
+                                  '\n</suite>\n')
+    (folder / "b.xml").write_text('<suite name="b">\n  <test type="exec" name="uses" '
+                                  'depends="base">ok.sh</test>\n</suite>\n')
+    (folder / "c.xml").write_text('<suite name="c">\n  <test type="exec" name="alone">ok.sh'
+                                  '</test>\n</suite>\n')
+    return ["--suite", "a.xml", "--suite", "b.xml", "--suite", "c.xml"]
+
+
+def test_suites_linked_by_depends_go_to_the_same_shard(tmp_path):
+    # Issue 39, 7: round-robin put a and b on different shards, and b's test was always
+    # skipped ("depends on base, which did not run") while every shard exited 0.
+    folder = tmp_path / "suites"
+    suites = linked_suites(folder)
+    r = run(*suites, "--list", "--shard-index", 0, "--shard-count", 2, "-o", "json:list.json",
+            cwd=folder)
+    assert r.returncode == 0, r
+    shard = [s["shard"] for s in json.loads((folder / "list.json").read_text())["suites"]]
+    assert shard[0] == shard[1] != shard[2], shard
+    one = run(*suites, "-o", "junit:one.xml", cwd=folder)
+    assert one.returncode == 0, one
+    for index in range(2):
+        r = run(*suites, "--shard-index", index, "--shard-count", 2, "-o",
+                f"junit:shard-{index}.xml", cwd=folder)
+        assert r.returncode == 0, r
+        assert "did not run" not in r.stdout, r
+    r = run("--merge", "junit:merged.xml", "--expect-shards", 2, "shard-0.xml", "shard-1.xml",
+            cwd=folder)
+    assert r.returncode == 0, r
+    assert normal_junit(folder / "merged.xml") == normal_junit(folder / "one.xml")
+    assert {case.get("name"): junit_state(case) for case in
+            ET.parse(folder / "merged.xml").getroot().iter("testcase")} == {
+        "base": "passed", "uses": "passed", "alone": "passed"}
+
+
+def test_merge_refuses_a_shard_of_another_run_naming_it(tmp_path):
+    # Issue 39, 6: shard 1 of a run over other suites merged with shards 0 and 2 of run A
+    # gave exit 0 and a report silently short of A's suites.
+    first = make_suites(tmp_path / "first", count=6, failing=())
+    other = make_suites(tmp_path / "other", count=4, failing=())
+    for name, folder in (("A", first), ("B", other)):
+        for index in range(3):
+            for kind in ("xml", "json"):
+                r = run("--suites", ".", "--shard-index", index, "--shard-count", 3, "-o",
+                        f"{'junit' if kind == 'xml' else 'json'}:../{name}{index}.{kind}",
+                        cwd=folder)
+                assert r.returncode == 0, r
+    for kind, out in (("xml", "junit"), ("json", "json")):
+        for given, foreign in ((["A0", "B1", "A2"], "B1"), (["B0", "A1", "A2"], "B0")):
+            r = run("--merge", f"{out}:merged.{kind}", "--expect-shards", 3,
+                    *[f"{report}.{kind}" for report in given], cwd=tmp_path)
+            assert r.returncode == 2, (given, r)
+            assert f"--merge {foreign}.{kind}: a report of another run" in r.stderr, (given, r)
+            assert not (tmp_path / f"merged.{kind}").exists()
+        # The shards of one run merge as before.
+        r = run("--merge", f"{out}:merged.{kind}", "--expect-shards", 3,
+                *[f"A{index}.{kind}" for index in range(3)], cwd=tmp_path)
+        assert r.returncode == 0, r
+    # Each shard report carries the plan, the same on all three.
+    plans = set()
+    for index in range(3):
+        root = ET.parse(tmp_path / f"A{index}.xml").getroot()
+        first_suite = next(root.iter("testsuite"))
+        properties = {p.get("name"): p.get("value") for p in first_suite.find("properties")}
+        plans.add(properties["rtf.shard.plan"])
+        shard = json.loads((tmp_path / f"A{index}.json").read_text())["results"]["extra"][
+            "robotology.rtf"]["shard"]
+        assert shard["plan"] == properties["rtf.shard.plan"], shard
+    assert len(plans) == 1, plans

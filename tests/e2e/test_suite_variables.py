@@ -114,6 +114,49 @@ def test_a_suite_variable_reaches_the_world_file_and_var_beats_it(tmp_path, isol
     assert "not used" not in run.stderr, run
 
 
+def test_the_pool_items_of_the_suite_reach_the_world_file(tmp_path, isolation, marker):
+    # Issue 39, 2: ${resource.NAME} in a world file reached the process as the runner's
+    # internal placeholder ("\x1eresource.slot\x1e"), silently.
+    world = write(tmp_path / "world.xml", f"""<world name="w" logdir="logs">
+  <process name="p" command="{sys.executable} {ACTOR} --say slot=${{resource.slot}}">
+    <ready timeout="10s"><output>^slot=</output></ready>
+  </process>
+</world>
+""")
+    suite = write(tmp_path / "suite.xml", f"""<suite name="s">
+  <resource pool="slot" count="2" default="7 8"/>
+  <fixture type="process">{world.name}</fixture>
+  <test>{plugin("passing_test")}</test>
+</suite>
+""")
+    run = run_runner("--suite", suite.name, "--isolation", isolation, "--no-output", cwd=tmp_path,
+                     env=marked(marker), timeout=60)
+    assert run.returncode == 0, run
+    assert (tmp_path / "logs" / "p.log").read_text().splitlines()[0] == "slot=7,8", run
+
+
+def test_a_pool_the_suite_does_not_take_in_a_world_file_names_file_and_line(tmp_path, marker):
+    world = write(tmp_path / "world.xml", f"""<world name="w" logdir="logs">
+  <process name="p" command="{sys.executable} {ACTOR} --say slot=${{resource.other}}">
+    <ready timeout="10s"><output>^slot=</output></ready>
+  </process>
+</world>
+""")
+    suite = write(tmp_path / "suite.xml", f"""<suite name="s">
+  <resource pool="slot" default="7"/>
+  <fixture type="process">{world.name}</fixture>
+  <test>{plugin("passing_test")}</test>
+</suite>
+""")
+    run = run_runner("--suite", suite.name, "--no-output", cwd=tmp_path, env=marked(marker),
+                     timeout=60)
+    # Exit 1 while the world file is read at set-up; 2 once it is read with the plan.
+    assert run.returncode in (1, 2), run
+    assert ("world.xml:2: ${resource.other} but the suite takes no item of pool other (add "
+            '<resource pool="other"/> to the suite)') in run.stdout + run.stderr, run
+    assert not (tmp_path / "logs" / "p.log").exists(), run
+
+
 def test_an_undefined_variable_names_file_line_and_the_close_ones(tmp_path):
     suite = write(tmp_path / "suite.xml", f"""<suite name="s">
   <variable name="robot_port">10001</variable>

@@ -209,6 +209,40 @@ TEST(TestResultCollector, InterruptOpenEndsTheOpenTestAndSuiteAsInterrupted) {
     EXPECT_EQ(tests[1].reason()->message.getMessage(), "quit");
     EXPECT_EQ(c.suiteCount(), 1u);
     EXPECT_EQ(c.failedCount(), 1u);
+    // Its interrupted test fails the suite: nothing is said of fixtures it may not have.
+    EXPECT_TRUE(c.suites()[0].events.empty());
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+}
+
+TEST(TestResultCollector, InterruptOpenFailsASuiteWhoseTearDownDidNotFinish) {
+    // Every test ended, the fixture's tearDown hung, and the runner quit: not a passed suite.
+    TestResultCollector c;
+    TestSuite suite("s");
+    Named done("done");
+    c.startTestRunner();
+    c.startTestSuite(&suite);
+    oneTest(c, done, {});
+    c.interruptOpen(TestMessage("interrupted: the runner quit"));
+    ASSERT_EQ(c.suites().size(), 1u);
+    const auto& record = c.suites()[0];
+    EXPECT_FALSE(record.succeeded());
+    EXPECT_TRUE(record.fixtureFailed);
+    ASSERT_EQ(record.events.size(), 1u);
+    EXPECT_EQ(record.events[0].message.getMessage(),
+              "interrupted: the runner quit: the tearDown of the suite's fixtures did not finish");
+    EXPECT_EQ(c.failedSuiteCount(), 1u);
+    EXPECT_EQ(c.passedSuiteCount(), 0u);
+
+    // Before any test: its set-up did not finish.
+    TestResultCollector early;
+    early.startTestRunner();
+    early.startTestSuite(&suite);
+    early.interruptOpen(TestMessage("quit"));
+    ASSERT_EQ(early.suites().size(), 1u);
+    ASSERT_EQ(early.suites()[0].events.size(), 1u);
+    EXPECT_EQ(early.suites()[0].events[0].message.getMessage(),
+              "quit: the set-up of the suite's fixtures did not finish");
+    EXPECT_EQ(early.failedSuiteCount(), 1u);
 }
 
 TEST(TestResult, DispatchesToEveryListenerInOrderAndRemoves) {

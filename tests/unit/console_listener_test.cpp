@@ -145,3 +145,34 @@ TEST(ConsoleListener, SuiteLineSaysFailedWhenAnEarlierTestFailed) {
     LambdaTest a("a", [] { ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("no"); }), b("b");
     EXPECT_TRUE(has(consoleText({&a, &b}), "  suite FAILED  arm tests"));
 }
+
+// Under a scheduler, a test's events reach the console after they happened (kept up to 100 ms):
+// the console times them when they happened, as the reports do (issue 40, item 6).
+TEST(ConsoleListener, ATestsTimeIsWhenItsEventsHappenedNotWhenTheyArrived) {
+    const std::string path = (scratchDir() / "console-times.txt").string();
+    std::FILE* file = std::fopen(path.c_str(), "w");
+    ASSERT_NE(file, nullptr);
+    ConsoleListener console;
+    console.setStream(file);
+    TestSuite suite("arm tests");
+    LambdaTest test("grip");
+    RunEvent start;
+    start.data.kind = ResultEvent::Kind::StartSuite;
+    start.test = &suite;
+    start.suite = &suite;
+    console.onEvent(start);
+    RunEvent begin;
+    begin.data.kind = ResultEvent::Kind::StartTest;
+    begin.test = &test;
+    begin.happened = 1000.0;
+    RunEvent end = begin;
+    end.data.kind = ResultEvent::Kind::EndTest;
+    end.happened = 1000.5;  // half a second later, handed on at once
+    console.onEvent(begin);
+    console.onEvent(end);
+    std::fclose(file);
+    std::ifstream in(path);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_TRUE(has(text.str(), "grip  (0.500 s)")) << text.str();
+}

@@ -19,10 +19,12 @@ namespace {
 
 // A JUnit report of shard `index` of `count` holding one suite at `place`.
 std::string shardReport(int index, int count, int place, const std::string& suite,
-                        const std::string& tests, bool rerun = false) {
+                        const std::string& tests, bool rerun = false,
+                        const std::string& plan = "") {
     return std::string("<testsuites name=\"RobotTestingFramework\" tests=\"9\">\n<properties>") +
            "<property name=\"rtf.shard.index\" value=\"" + std::to_string(index) + "\"/>" +
            "<property name=\"rtf.shard.count\" value=\"" + std::to_string(count) + "\"/>" +
+           (plan.empty() ? "" : "<property name=\"rtf.shard.plan\" value=\"" + plan + "\"/>") +
            (rerun ? "<property name=\"rtf.rerun\" value=\"true\"/>" : "") + "</properties>\n" +
            "<testsuite name=\"" + suite + "\" tests=\"9\" time=\"1.000\" id=\"" +
            std::to_string(place) + "\">\n" + tests + "</testsuite>\n</testsuites>\n";
@@ -152,4 +154,42 @@ TEST_F(MergeReports, ReportsOfNowKeepTheirStatesAndLoseTheShardProperties) {
                  property.attribute("value").value() + " ";
     }
     EXPECT_EQ(names, "rtf.state.1.1=flaky ");
+}
+
+TEST_F(MergeReports, AShardOfAnotherRunIsAnErrorNamingIt) {
+    const auto zero = write(
+        "A0.xml", shardReport(0, 3, 0, "a", testCase("t", "passed"), false, "00000000000000aa"));
+    const auto one = write(
+        "B1.xml", shardReport(1, 3, 1, "x", testCase("t", "passed"), false, "00000000000000bb"));
+    const auto two = write(
+        "A2.xml", shardReport(2, 3, 2, "c", testCase("t", "passed"), false, "00000000000000aa"));
+    const auto old = write("old1.xml", shardReport(1, 3, 1, "b", testCase("t", "passed")));
+    // Whatever the order: the plan most reports say is the run's.
+    for (const auto& reports :
+         {std::vector<std::string>{zero, one, two}, std::vector<std::string>{one, zero, two}}) {
+        const std::string error = errorOf({"junit", "out.xml", reports, 3});
+        EXPECT_EQ(error.rfind("--merge " + one +
+                                  ": a report of another run (its plan is "
+                                  "00000000000000bb; the shards of 2 other report(s) are of plan "
+                                  "00000000000000aa)",
+                              0),
+                  0U)
+            << error;
+    }
+    // A report that says no plan, beside reports that say one.
+    EXPECT_EQ(errorOf({"junit", "out.xml", {zero, old, two}, 3})
+                  .rfind("--merge " + old + ": a report of another run (it says no plan", 0),
+              0U);
+    // The shards of one run merge.
+    const auto oneOfA = write(
+        "A1.xml", shardReport(1, 3, 1, "b", testCase("t", "passed"), false, "00000000000000aa"));
+    pugi::xml_document merged;
+    ASSERT_TRUE(
+        merged.load_string(mergeReports({"junit", "out.xml", {zero, oneOfA, two}, 3}).c_str()));
+    EXPECT_EQ(std::string(merged.document_element().attribute("tests").value()), "3");
+    for (const pugi::xml_node suite : merged.document_element().children("testsuite")) {
+        for (const pugi::xml_node property : suite.child("properties").children("property")) {
+            EXPECT_STRNE(property.attribute("name").value(), "rtf.shard.plan");
+        }
+    }
 }

@@ -58,6 +58,25 @@ TEST(ProcessFixture, ABadWorldFileFailsSetupWithFileAndLine) {
     }
 }
 
+TEST(ProcessFixture, CheckWorldFileReadsItAsTheSetupWouldWithTheParam) {
+    // Issue 39, 12: the runner calls it when the plan is made.
+    const auto folder = freshFolder();
+    const auto world = writeFile(folder / "world.xml",
+                                 "<world>\n  <process name='a' command='true'>\n"
+                                 "    <ready><port>${port}</port></ready>\n"
+                                 "  </process>\n</world>\n");
+    EXPECT_EQ(fixtures::checkWorldFile(world.string(), "--var port=8080"), "");
+    EXPECT_TRUE(contains(fixtures::checkWorldFile(world.string(), "--var port=http"),
+                         world.string() + ":3: 'http' is not a TCP port"));
+    EXPECT_TRUE(contains(fixtures::checkWorldFile(world.string(), ""),
+                         world.string() + ":3: undefined variable ${port}"))
+        << fixtures::checkWorldFile(world.string(), "");
+    EXPECT_TRUE(contains(fixtures::checkWorldFile(world.string(), "--colour red"),
+                         "unknown option '--colour'"));
+    EXPECT_TRUE(contains(fixtures::checkWorldFile((folder / "none.xml").string(), ""),
+                         "cannot read the world file"));
+}
+
 TEST(ProcessFixture, ParamSetsVariablesAndTheLogFolder) {
     const auto folder = freshFolder();
     const auto world = writeFile(folder / "world.xml",

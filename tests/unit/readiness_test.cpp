@@ -135,6 +135,19 @@ TEST(Readiness, OutputPassesOnAMatchingLine) {
     EXPECT_DOUBLE_EQ(check->passedAt(), 2);
 }
 
+TEST(Readiness, OutputMatchesInTimeLinearInTheLine) {
+    // Backtracking (std::regex) took 28 s for 18 a's and minutes for 24: far past any deadline.
+    ReadyCheck spec = checkOf(ReadyCheck::Kind::Output);
+    spec.pattern = "^(a*)*b$";
+    auto check = make(spec, 0);
+    const double began = monotonicSeconds();
+    check->line(std::string(4096, 'a'), 1);
+    EXPECT_FALSE(check->passed());
+    check->line(std::string(4095, 'a') + "b", 2);
+    EXPECT_TRUE(check->passed());
+    EXPECT_LT(monotonicSeconds() - began, 1.0);
+}
+
 TEST(Readiness, DeadlineIsCountedFromTheProcessStart) {
     ReadyCheck spec = checkOf(ReadyCheck::Kind::Output, 3);
     spec.pattern = "never";

@@ -17,6 +17,7 @@
 #include "core_test_helpers.h"
 #include "reporters/html_reporter.h"
 #include "reporters/reporter_registry.h"
+#include "reporters/summary.h"
 #include "reporters/tap_reporter.h"
 #include "reporters/text_safety.h"
 
@@ -132,6 +133,27 @@ TEST(TextSafety, InvalidUtf8IsReplacedAndJsonStaysInertInHtml) {
 
 TEST(TextSafety, PlainTextIsValidUtf8WithoutControlCharacters) {
     EXPECT_EQ(plainText(std::string("a\0b\xff\tc\x1b[31m\r\n", 13)), "ab\xEF\xBF\xBD\tc[31m\r\n");
+}
+
+TEST(TextSafety, VisibleTextShowsControlCharactersEscaped) {
+    // A window title, a cleared screen, a carriage return that rewrites the line.
+    EXPECT_EQ(visibleText("a\x1b]0;pwned\x07"
+                          "b\x1b[2J\rc\nd\te\x7f"),
+              "a\\e]0;pwned\\x07b\\e[2J\\rc\\nd\te\\x7f");
+    EXPECT_EQ(visibleText("csi\xC2\x9B"
+                          "2J \xC3\xA9 \xff"),
+              "csi\\u009b2J \xC3\xA9 \xEF\xBF\xBD");
+    EXPECT_EQ(visibleText("plain name"), "plain name");
+}
+
+TEST(TextSafety, VisibleTextKeepsLineBreaksUnderAContinuation) {
+    EXPECT_EQ(visibleText("one\n  passed      fake\r", "        "),
+              "one\n          passed      fake\\r");
+}
+
+TEST(Summary, ANameShownOnTheConsoleCannotFakeALine) {
+    EXPECT_EQ(shownAs("t.py", "x\n  passed      y"), "t.py (x\\n  passed      y)");
+    EXPECT_EQ(shownAs("\x1b[2Jt.py", ""), "\\e[2Jt.py");
 }
 
 TEST(TextSafety, OneMarkupEscapingForEachPlaceTextGoes) {

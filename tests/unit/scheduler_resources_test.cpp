@@ -117,6 +117,43 @@ TEST(SchedulerResources, SuiteFileRefusesBadResourcesWithFileAndLine) {
               std::string::npos);
 }
 
+TEST(SchedulerResources, SuiteFileRefusesAPoolTakenTwiceSayingWhatToWrite) {
+    // Each alone fits a one-item pool; together they never would (the run waited for ever).
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource pool=\"p\" default=\"1\"/>\n"
+                      "<resource pool=\"p\" count=\"2\" default=\"1\"/></suite>"),
+              "/nowhere/suite.xml:3: pool \"p\" is taken a second time (first at line 2); write "
+              "one <resource pool=\"p\" count=\"3\"/> for 3 items");
+    // A lock named twice is one lock: harmless.
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource lock=\"a\"/>\n<resource lock=\"a\"/>"
+                      "</suite>"),
+              "");
+}
+
+TEST(SchedulerResources, SuiteFileRefusesAnItemRepeatedInDefault) {
+    EXPECT_EQ(errorOf("<suite name=\"s\">\n<resource pool=\"p\" default=\"7 7\"/></suite>"),
+              "/nowhere/suite.xml:2: default=\"...\": item \"7\" is given twice (each item of a "
+              "pool once: two suites would hold it at once)");
+    EXPECT_NE(errorOf("<suite name=\"s\">\n\n<resource pool=\"p\" count=\"2\" "
+                      "default=\"1 2 1\"/></suite>")
+                  .find("suite.xml:3: default=\"...\": item \"1\" is given twice"),
+              std::string::npos);
+}
+
+TEST(SchedulerResources, AProcessFixtureGetsTheItemsOfEveryPoolForItsWorldFile) {
+    SuiteSpec suite = parse(R"(<suite name="s">
+  <fixture type="process">world.xml</fixture>
+  <fixture type="python">other.py</fixture>
+  <resource pool="port" count="2"/>
+  <resource lock="arm"/>
+</suite>)");
+    ASSERT_EQ(suite.fixtures.size(), 2u);
+    EXPECT_EQ(variables::resourcesUsed(suite.fixtures[0].param), std::vector<std::string>{"port"});
+    EXPECT_EQ(variables::fillResources(suite.fixtures[0].param,
+                                       [](const std::string&) { return std::string("7,8"); }),
+              "--var 'resource.port=7,8'");
+    EXPECT_EQ(suite.fixtures[1].param, "");
+}
+
 TEST(SchedulerResources, LocksAreTakenAllOrNothing) {
     ResourceTable table{ResourcePools()};
     ResourceTable::Held a, b, c;

@@ -139,3 +139,47 @@ TEST(Selection, AFilterThatIsATestIdAsWrittenSelectsThatTestAlone) {
         EXPECT_EQ("arm-suite/" + suites[0].tests[0].name, id);
     }
 }
+
+TEST(Selection, AnExactIdWinsOverPatternSyntax) {
+    SuiteSpec suite;
+    suite.name = "arm::left";
+    suite.tests = {test("grip", {}), test("grip-", {}), test("other", {})};
+    for (const std::string id : {"arm::left/grip", "arm::left/grip-"}) {
+        std::vector<SuiteSpec> suites{suite};
+        NameFilter filter;
+        std::string error;
+        ASSERT_FALSE(NameFilter::parse(id, filter, error)) << id;
+        Selection selection;
+        selection.filters.push_back(NameFilter::exactIdOnly(id, error));
+        EXPECT_EQ(filterNamingNoTest(suites, selection), "") << id;
+        applySelection(suites, selection);
+        ASSERT_EQ(suites.size(), 1u) << id;
+        ASSERT_EQ(suites[0].tests.size(), 1u) << id;
+        EXPECT_EQ("arm::left/" + suites[0].tests[0].name, id);
+    }
+    // No test has that id: the pattern's error stands.
+    Selection selection;
+    selection.filters.push_back(NameFilter::exactIdOnly("leg::x", "an empty pattern at column 5"));
+    const std::string error = filterNamingNoTest({suite}, selection);
+    EXPECT_NE(error.find("--filter leg::x: an empty pattern at column 5"), std::string::npos)
+        << error;
+}
+
+TEST(NameFilter, AQuestionMarkIsOneUtf8Character) {
+    NameFilter filter;
+    std::string error;
+    ASSERT_TRUE(NameFilter::parse("u/?", filter, error)) << error;
+    EXPECT_TRUE(filter.matches("u/\xC3\xBC"));          // ü, 2 bytes
+    EXPECT_TRUE(filter.matches("u/\xE2\x82\xAC"));      // €, 3 bytes
+    EXPECT_TRUE(filter.matches("u/\xF0\x9F\xA4\x96"));  // 🤖, 4 bytes
+    EXPECT_FALSE(filter.matches("u/ab"));
+    ASSERT_TRUE(NameFilter::parse("u/??", filter, error)) << error;
+    EXPECT_FALSE(filter.matches("u/\xC3\xBC"));
+    EXPECT_TRUE(filter.matches("u/\xC3\xBCx"));
+    ASSERT_TRUE(NameFilter::parse("*?x", filter, error)) << error;
+    EXPECT_TRUE(filter.matches("\xC3\xBC\xC3\xBCx"));
+    // Bytes that start no well-formed sequence are one character each.
+    ASSERT_TRUE(NameFilter::parse("u/??", filter, error)) << error;
+    EXPECT_TRUE(filter.matches("u/\xC3x"));
+    EXPECT_TRUE(globMatches("l?g", "l\xC3\xB6g"));
+}

@@ -222,3 +222,36 @@ TEST_F(ShardSetup, DurationsThatCannotBeReadThrowNamingTheReport) {
             << e.what();
     }
 }
+
+TEST_F(ShardSetup, SuitesLinkedByDependsAreInOneShard) {
+    // Round-robin over a, b, c would put b on shard 1; its test depends on a's.
+    std::vector<SuiteSpec> suites{suite("a"), suite("b"), suite("c")};
+    TestSpec base;
+    base.name = "base";
+    suites[0].tests.push_back(base);
+    TestSpec uses;
+    uses.name = "uses";
+    uses.depends = {"base"};
+    suites[1].tests.push_back(uses);
+    const std::vector<unsigned int> shards = shardsOf(suites, 2, std::nullopt);
+    EXPECT_EQ(shards[0], shards[1]);
+    EXPECT_NE(shards[2], shards[0]);
+}
+
+TEST_F(ShardSetup, ThePlanIdentityIsTheWholeSelections) {
+    std::vector<SuiteSpec> suites{suite("a"), suite("b")};
+    const std::string plan = planIdentity(suites, 2);
+    EXPECT_EQ(plan.size(), 16U);
+    EXPECT_EQ(plan.find_first_not_of("0123456789abcdef"), std::string::npos);
+    EXPECT_EQ(planIdentity(suites, 2), plan);  // the same on every machine
+    std::vector<SuiteSpec> elsewhere{suite("a"), suite("b")};
+    for (auto& moved : elsewhere) {
+        moved.where.file = "/builds/runner-7/" + moved.where.file.str();  // another checkout
+    }
+    EXPECT_EQ(planIdentity(elsewhere, 2), plan);
+    EXPECT_NE(planIdentity(suites, 3), plan);
+    EXPECT_NE(planIdentity({suite("a"), suite("c")}, 2), plan);
+    suites[1].tests.emplace_back();
+    suites[1].tests.back().id = "t";
+    EXPECT_NE(planIdentity(suites, 2), plan);
+}

@@ -36,7 +36,7 @@ const Rule rules[] = {
     // "Test points may be output in any order": out of order is valid and successful.
     {"NumbersOutOfOrder", "TAP version 14\n1..4\nok 1\nok 3\nok 2\nok 4\n", false, 4, 0, "",
      nullptr},
-    // ...but a number the plan does not hold is an error (stricter than tap-parser's count).
+    // ...but a number the plan does not hold is an error (tap-parser says so too).
     {"NumberBeyondThePlan", "TAP version 14\n1..2\nok 1\nok 3\n", true, 2, 0,
      "test number 3 is beyond the plan 1..2", nullptr},
     // "Harnesses must not treat failing SKIP test points as a test failure".

@@ -48,6 +48,20 @@ TEST(TapRecords, ANonNumberIsAProblemNamingTheItem) {
     EXPECT_EQ(records.problems[0], "measurements item 1: value 'fast' is not a number");
 }
 
+TEST(TapRecords, ANumberTooLargeForADoubleIsRefusedAsWritten) {
+    const auto records = readTapRecords(
+        "measurements:\n  - name: x\n    value: 1e400\n  - name: y\n    value: 2\n"
+        "    high: -1e999\n");
+    EXPECT_TRUE(records.measurements.empty());
+    ASSERT_EQ(records.problems.size(), 2u);
+    EXPECT_EQ(records.problems[0],
+              "measurements item 1: value '1e400' is too large: a measurement holds at most "
+              "1.8e308");
+    EXPECT_EQ(records.problems[1],
+              "measurements item 2: high '-1e999' is too large: a measurement holds at most "
+              "1.8e308");
+}
+
 TEST(TapRecords, YamlInfinityIsKeptToBeRefusedByName) {
     const auto records = readTapRecords("measurements:\n  - name: x\n    value: .inf\n");
     ASSERT_EQ(records.measurements.size(), 1u);

@@ -89,3 +89,79 @@ TEST(TestId, NumbersTheRunsOfOnePluginInOrderSkippingNumbersANameTook) {
     expected.push_back("arm/p.so[1002]");
     EXPECT_EQ(idsOf(tests), expected);
 }
+
+namespace {
+
+SuiteSpec suiteOf(const std::string& name, const std::string& file, std::vector<TestSpec> tests) {
+    SuiteSpec suite;
+    suite.name = name;
+    suite.where.file = file;
+    suite.where.line = 1;
+    for (auto& spec : tests) {
+        spec.where.file = file;
+        spec.where.line = 2;
+    }
+    suite.tests = std::move(tests);
+    assignTestIds(suite, std::filesystem::path(file).parent_path().string());
+    return suite;
+}
+
+std::vector<std::string> allIds(const std::vector<SuiteSpec>& suites) {
+    std::vector<std::string> ids;
+    for (const auto& suite : suites) {
+        for (const auto& spec : suite.tests) {
+            ids.push_back(testId(suite, spec));
+        }
+    }
+    return ids;
+}
+
+}  // namespace
+
+TEST(TestId, TwoSuiteFilesOfOneNameAreQualifiedByTheirPaths) {
+    std::vector<SuiteSpec> suites{suiteOf("arm", "suites/left/arm.xml", {test("t.py")}),
+                                  suiteOf("arm", "suites/right/arm.xml", {test("t.py")}),
+                                  suiteOf("leg", "suites/leg.xml", {test("t.py")})};
+    EXPECT_EQ(makeIdsUniqueAcrossSuites(suites), "");
+    EXPECT_EQ(allIds(suites), (std::vector<std::string>{"arm[left/arm.xml]/t.py",
+                                                        "arm[right/arm.xml]/t.py", "leg/t.py"}));
+}
+
+TEST(TestId, ASuiteNameAndATestPathThatJoinToOneIdAreQualified) {
+    std::vector<SuiteSpec> suites{suiteOf("a", "x.xml", {test("b/c.py")}),
+                                  suiteOf("a/b", "y.xml", {test("c.py")})};
+    EXPECT_EQ(makeIdsUniqueAcrossSuites(suites), "");
+    EXPECT_EQ(allIds(suites), (std::vector<std::string>{"a[x.xml]/b/c.py", "a/b[y.xml]/c.py"}));
+}
+
+TEST(TestId, SuitesWhoseIdsDifferKeepTheirNames) {
+    std::vector<SuiteSpec> suites{suiteOf("arm", "left/arm.xml", {test("a.py")}),
+                                  suiteOf("arm", "right/arm.xml", {test("b.py")})};
+    EXPECT_EQ(makeIdsUniqueAcrossSuites(suites), "");
+    EXPECT_EQ(allIds(suites), (std::vector<std::string>{"arm/a.py", "arm/b.py"}));
+}
+
+TEST(TestId, TheCopiesOfOneSuiteFileGivenTwiceAreNumbered) {
+    std::vector<SuiteSpec> suites{
+        suiteOf("arm", "arm.xml", {test("t.py")}), suiteOf("arm", "./arm.xml", {test("t.py")}),
+        suiteOf("arm", "other/arm.xml", {test("t.py")}), suiteOf("arm", "arm.xml", {test("t.py")})};
+    EXPECT_EQ(makeIdsUniqueAcrossSuites(suites), "");
+    EXPECT_EQ(allIds(suites),
+              (std::vector<std::string>{"arm[arm.xml]/t.py", "arm[arm.xml][2]/t.py",
+                                        "arm[other/arm.xml]/t.py", "arm[arm.xml][3]/t.py"}));
+    std::vector<SuiteSpec> copies{suiteOf("robot", "robot/robot.xml", {test("t.py")}),
+                                  suiteOf("robot", "robot/robot.xml", {test("t.py")})};
+    EXPECT_EQ(makeIdsUniqueAcrossSuites(copies), "");
+    EXPECT_EQ(allIds(copies), (std::vector<std::string>{"robot/t.py", "robot[2]/t.py"}));
+}
+
+TEST(TestId, IdsStillSharedAfterQualifyingAreAnErrorNamingBothPlaces) {
+    // Suite "a[x.xml]" (written so) beside the suite "a" of x.xml and "a" of y.xml.
+    std::vector<SuiteSpec> suites{suiteOf("a", "x.xml", {test("t.py")}),
+                                  suiteOf("a", "y.xml", {test("t.py")}),
+                                  suiteOf("a[x.xml]", "z.xml", {test("t.py")})};
+    const std::string error = makeIdsUniqueAcrossSuites(suites);
+    EXPECT_NE(error.find("two tests have the id a[x.xml]/t.py: x.xml:2 and z.xml:2"),
+              std::string::npos)
+        << error;
+}

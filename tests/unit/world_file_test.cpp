@@ -3,6 +3,8 @@
 
 #include <signal.h>
 
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "process_test_helpers.h"
@@ -120,6 +122,42 @@ TEST(WorldFile, LogFolderFromTheFixtureParamWins) {
     EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere");
 }
 
+TEST(WorldFile, SuitesSharingTheWorldFileEachHaveTheirLogFolder) {
+    WorldOptions options;
+    options.instance = "left";
+    Parsed parsed = parse("<world><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left").string());
+    EXPECT_EQ(parsed.world.processes[0].logFile,
+              (std::filesystem::current_path() / "rtf-logs" / "world" / "left" / "a.log").string());
+    options.logFolder = "/tmp/elsewhere";
+    parsed = parse("<world logdir='x'><process name='a' command='true'/></world>", options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.logFolder, "/tmp/elsewhere/left");
+}
+
+TEST(WorldFile, ThePoolItemsOfTheSuiteReplaceResourceVariables) {
+    WorldOptions options;
+    options.variables["resource.port"] = "7,8";
+    Parsed parsed = parse(
+        "<world>\n<variable name='ports'>${resource.port}</variable>\n"
+        "<process name='a' command='serve ${resource.port} ${ports}'/></world>",
+        options);
+    ASSERT_TRUE(parsed.ok) << parsed.error;
+    EXPECT_EQ(parsed.world.processes[0].argv, (std::vector<std::string>{"serve", "7,8", "7,8"}));
+    // A pool the suite does not take, with or without items of others.
+    parsed = parse("<world>\n<process name='a' command='serve ${resource.gpu}'/></world>", options);
+    ASSERT_FALSE(parsed.ok);
+    EXPECT_EQ(parsed.error,
+              "/tmp/rtf-world/world.xml:2: ${resource.gpu} but the suite takes no item of pool "
+              "gpu (add <resource pool=\"gpu\"/> to the suite)");
+    expectError(
+        "<world>\n<process name='a'>\n<command>run ${resource.gpu}</command></process>"
+        "</world>",
+        3, "${resource.gpu} but the suite takes no item of pool gpu");
+}
+
 TEST(WorldFile, ReportsMalformedXmlWithItsLine) {
     expectError("<world>\n  <process name='a' command='true'>\n</world>\n", 3, "malformed XML");
 }
@@ -187,7 +225,17 @@ TEST(WorldFile, ReportsBadValuesOfChecks) {
     expectError(
         "<world>\n<process name='a' command='true'><ready>\n<output>([a-</output>"
         "</ready></process></world>",
-        3, "is not a valid regular expression");
+        3, "is not a regular expression RE2 takes");
+    // RE2 has no back-references or look-around: refused when the file is read, not at
+    // set-up (README: the syntax users may write).
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<output>(a)\\1</output>"
+        "</ready></process></world>",
+        3, "invalid escape sequence");
+    expectError(
+        "<world>\n<process name='a' command='true'><ready>\n<output>(?=ready)</output>"
+        "</ready></process></world>",
+        3, "no back-references or look-around");
     expectError(
         "<world>\n<process name='a' command='true'><ready>\n"
         "<file timeout='forever'>x</file></ready></process></world>",
@@ -296,6 +344,14 @@ TEST(WorldFile, ReadsTheFileFromDiskAndResolvesFoldersAgainstIt) {
 
     EXPECT_FALSE(readWorldFile((folder / "missing.xml").string(), {}, world, error));
     EXPECT_NE(error.find("cannot read the world file"), std::string::npos) << error;
+
+    // A device or a file past 16 MiB is refused, not read until memory runs out (issue 40).
+    EXPECT_FALSE(readWorldFile("/dev/zero", {}, world, error));
+    EXPECT_NE(error.find("/dev/zero: is a character device, not a world file"), std::string::npos)
+        << error;
+    std::filesystem::resize_file(folder / "w.xml", 16 * 1024 * 1024 + 1);  // sparse
+    EXPECT_FALSE(readWorldFile(file.string(), {}, world, error));
+    EXPECT_NE(error.find("the world file is larger than 16 MiB"), std::string::npos) << error;
 }
 
 TEST(CommandLine, SplitsLikeAShell) {

@@ -1,6 +1,8 @@
 // Any executable as a test case. The param string is its argv; the environment string reaches
 // it as RTF_ENVIRONMENT (and its name as RTF_TEST_NAME). TAP on its stdout becomes checks;
 // without TAP, its exit status decides: 0 passes, 77 skips, anything else fails.
+#include <atomic>
+
 #include <robottestingframework/Arguments.h>
 #include <robottestingframework/Asserter.h>
 #include <robottestingframework/TestResult.h>
@@ -11,6 +13,7 @@
 #include "languages/executable_file.h"
 #include "languages/language_loaders.h"
 #include "languages/output_tail.h"
+#include "languages/test_loader.h"
 #include "platform/signal_name.h"
 
 namespace robottestingframework {
@@ -256,7 +259,18 @@ private:
     ExecTestCase test_;
 };
 
+std::atomic<std::string (*)()> execGuard{nullptr};
+
 }  // namespace
+
+void setExecGuard(std::string (*guard)()) {
+    execGuard = guard;
+}
+
+std::string execGuardEntry() {
+    std::string (*guard)() = execGuard;
+    return guard != nullptr ? guard() : std::string();
+}
 
 std::unique_ptr<LoadedTest> loadExecTest(const std::string& path, std::string& error) {
     if (!isExecutableFile(path)) {

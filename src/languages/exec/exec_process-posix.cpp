@@ -100,6 +100,12 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     options.newProcessGroup = true;       // stopping it stops whatever it started too
     options.parentDeathSignal = SIGKILL;  // a runner killed with SIGKILL leaves no test behind
     options.environment = environment;
+    // --isolation none: the runner's watchdog's variable (test_loader.h, setExecGuard).
+    const std::string guard = execGuardEntry();
+    const std::size_t equals = guard.find('=');
+    if (equals != std::string::npos) {
+        options.environment.emplace_back(guard.substr(0, equals), guard.substr(equals + 1));
+    }
 
     pid_t pid = -1;
     {

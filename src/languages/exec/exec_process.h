@@ -25,6 +25,9 @@ struct ExecOutcome {
     int signal = 0;          // when a signal ended it
 };
 
+// What the guard given to setExecGuard (test_loader.h) returns now; empty without one.
+std::string execGuardEntry();
+
 class ExecProcess {
 public:
     using Sink = std::function<void(const char* data, std::size_t size)>;

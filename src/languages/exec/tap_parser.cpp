@@ -89,6 +89,17 @@ std::string directiveReason(const std::string& text) {
     return reason;
 }
 
+// "N..M" starts a plan line (the line may still be a malformed one).
+bool startsAsPlan(const std::string& content) {
+    std::size_t pos = 0;
+    unsigned long ignored = 0;
+    return readNumber(content, pos, ignored) && content.compare(pos, 2, "..") == 0;
+}
+
+// Point numbers told apart (to find one given twice) in a whole stream, over all its levels:
+// 1 MiB of bits. A stream that numbers beyond it has its repeats there untold.
+constexpr std::size_t kMaxTrackedNumbers = 8 * 1024 * 1024;
+
 // Lines held back before the stream is known to be TAP, at most this many bytes.
 constexpr std::size_t kMaxHeld = 64 * 1024;
 // Subtest paths name at most this many levels ("a > b > ... > y > z"), so that deep nesting
@@ -185,7 +196,7 @@ void TapParser::process(const std::string& text) {
             if (startsWith(content, "#")) {
                 emitComment(trim(content.substr(1)));
             } else {
-                emitText(text);
+                nonTap(text);
             }
             return;
         }
@@ -207,7 +218,7 @@ void TapParser::process(const std::string& text) {
         if (startsWith(content, "#")) {
             emitComment(trim(content.substr(1)));
         } else {
-            emitText(text);
+            nonTap(text);
         }
         return;
     }
@@ -219,6 +230,7 @@ void TapParser::process(const std::string& text) {
         Level& parent = levels_.back();
         Level child;
         child.indent = parent.indent + 4;
+        child.strict = parent.strict;
         child.name = std::move(parent.nextSubtest);
         parent.nextSubtest.clear();
         bool namesIt = false;
@@ -239,7 +251,7 @@ void TapParser::process(const std::string& text) {
     }
     Level& level = levels_.back();
     if (lead != level.indent) {
-        emitText(text);
+        nonTap(text);
         return;
     }
     std::string content = text.substr(lead);
@@ -251,15 +263,20 @@ void TapParser::process(const std::string& text) {
         unsigned long version = 0;
         if (!readNumber(content, pos, version) || version < 12 || version > 14) {
             emitProblem(lineNumber_, "unsupported '" + content + "' (versions 12 to 14 are)");
+        } else if (version == 12 && level.strict) {
+            // TAP 12 has no version line (13 brought it): not TAP, which strict refuses.
+            emitProblem(lineNumber_, "'" + content +
+                                         "' is not TAP (TAP 12 has no version line; pragma "
+                                         "+strict)");
         } else if (levels_.size() == 1) {
             version_ = static_cast<int>(version);
         }
         level.sawVersion = true;
-    } else if (startsWith(content, "1..")) {
+    } else if (startsAsPlan(content)) {
         plan(content);
     } else if (startsWith(content, "ok") || startsWith(content, "not ok")) {
         if (!point(content)) {
-            emitText(text);
+            nonTap(text);
         }
     } else if (startsWithWordNoCase(content, "bail out!")) {
         // TAP 14: the words are case-insensitive, and the reason may escape '#' and '\'.
@@ -275,10 +292,42 @@ void TapParser::process(const std::string& text) {
             emitComment(comment);
         }
     } else if (startsWith(content, "pragma ")) {
-        // Parser pragmas change nothing here.
+        // "pragma +strict" and "pragma -strict" (tap-parser's): whether a line that is not
+        // TAP fails the stream, from here on, at this level and in the subtests it starts.
+        // Other pragmas change nothing here.
+        const std::string pragma = trim(content.substr(7));
+        if (pragma == "+strict" || pragma == "-strict") {
+            level.strict = pragma[0] == '+';
+        }
     } else {
-        emitText(text);
+        nonTap(text);
     }
+}
+
+void TapParser::nonTap(const std::string& raw) {
+    emitText(raw);
+    if (levels_.back().strict) {
+        emitProblem(lineNumber_,
+                    "a line that is not TAP, under pragma +strict: '" + trim(raw) + "'");
+    }
+}
+
+bool TapParser::firstTimeNumbered(unsigned long number) {
+    std::vector<bool>& seen = levels_.back().seen;
+    if (number < seen.size()) {
+        const bool first = !seen[number];
+        seen[number] = true;
+        return first;
+    }
+    const std::size_t grown = static_cast<std::size_t>(number) + 1;
+    if (number >= kMaxTrackedNumbers ||
+        trackedNumbers_ + (grown - seen.size()) > kMaxTrackedNumbers) {
+        return true;  // beyond the budget: not told
+    }
+    trackedNumbers_ += grown - seen.size();
+    seen.resize(grown, false);
+    seen[number] = true;
+    return true;
 }
 
 // A line that is TAP of its own (a test point, a plan, a version, a bail out): less indented
@@ -290,19 +339,37 @@ bool TapParser::endsSubtests(const std::string& content) const {
         const std::size_t after = startsWith(content, "ok") ? 2 : 6;
         return after == content.size() || content[after] == ' ' || content[after] == '#';
     }
-    return startsWith(content, "1..") || startsWith(content, "TAP version ") ||
+    return startsAsPlan(content) || startsWith(content, "TAP version ") ||
            startsWithWordNoCase(content, "bail out!");
 }
 
+// "N..M", then nothing or " # comment": the points numbered N to M (usually 1..M); "1..0" is
+// a stream that skips everything. Anything else after the numbers, trailing spaces too, is a
+// malformed plan. A plan whose end is before its start (and is not 1..0) is not TAP.
 void TapParser::plan(const std::string& content) {
     Level& level = levels_.back();
-    std::size_t pos = 3;
-    unsigned long planned = 0;
-    if (!readNumber(content, pos, planned)) {
-        emitProblem(lineNumber_, "malformed plan '" + content + "'");
+    std::size_t pos = 0;
+    unsigned long start = 0;
+    unsigned long end = 0;
+    readNumber(content, pos, start);
+    pos += 2;  // ".."
+    const bool wellFormed =
+        readNumber(content, pos, end) &&
+        (pos == content.size() || (std::isspace(static_cast<unsigned char>(content[pos])) &&
+                                   trim(content.substr(pos)).rfind('#', 0) == 0));
+    if (!wellFormed) {
+        emitProblem(lineNumber_, "malformed plan '" + content +
+                                     "' (a plan is 'N..M', and may be followed by ' # comment')");
         return;
     }
     const bool top = levels_.size() == 1;
+    if (end < start && !(start == 1 && end == 0)) {
+        if (top) {
+            decideTap();
+        }
+        nonTap(content);
+        return;
+    }
     if (top) {
         decideTap();
     }
@@ -310,15 +377,20 @@ void TapParser::plan(const std::string& content) {
         emitProblem(lineNumber_, "more than one plan");
         return;
     }
-    level.planned = static_cast<long>(planned);
+    level.planned = static_cast<long>(end - start + 1);
+    level.planStart = start;
+    level.planEnd = end;
     level.planLine = lineNumber_;
     level.beforePlan = level.count;
     std::string rest = trim(content.substr(pos));
-    if (planned == 0 && top) {
-        skipAll_ = true;
-        if (!rest.empty() && rest[0] == '#') {
-            rest = trim(rest.substr(1));
-            skipReason_ = startsWithWordNoCase(rest, "skip") ? directiveReason(rest) : rest;
+    if (start == 1 && end == 0) {
+        level.planned = 0;
+        if (top) {
+            skipAll_ = true;
+            if (!rest.empty() && rest[0] == '#') {
+                rest = trim(rest.substr(1));
+                skipReason_ = startsWithWordNoCase(rest, "skip") ? directiveReason(rest) : rest;
+            }
         }
     }
 }
@@ -338,10 +410,21 @@ bool TapParser::point(const std::string& content) {
     unsigned long number = 0;
     bool numbered = readNumber(content, pos, number);
     ++level.count;
-    // TAP 14: numbers out of order are valid ("ok 1", "ok 3", "ok 2"); one beyond the plan is
-    // checked when the level ends (only the highest is kept: memory stays bounded).
-    if (numbered && number > level.highestNumber) {
-        level.highestNumber = number;
+    // TAP 14: numbers out of order are valid ("ok 1", "ok 3", "ok 2"); one outside the plan is
+    // checked when the level ends (only the highest and lowest are kept: memory stays bounded),
+    // one given twice at once.
+    if (numbered) {
+        if (!level.numbered || number > level.highestNumber) {
+            level.highestNumber = number;
+        }
+        if (!level.numbered || number < level.lowestNumber) {
+            level.lowestNumber = number;
+        }
+        level.numbered = true;
+        if (!firstTimeNumbered(number)) {
+            emitProblem(lineNumber_,
+                        "test number " + std::to_string(number) + " is given more than once");
+        }
     }
     p.number = numbered ? static_cast<unsigned int>(number) : level.count;
     std::string rest = content.substr(pos);
@@ -416,15 +499,20 @@ void TapParser::closeLevel() {
             emitProblem(level.planLine,
                         "the plan must come before the first test or after the last one");
         }
+        const std::string range =
+            std::to_string(level.planStart) + ".." + std::to_string(level.planEnd);
         if (static_cast<unsigned long>(level.planned) != level.count) {
             emitProblem(level.planLine, "planned " + std::to_string(level.planned) +
                                             " test(s) but ran " + std::to_string(level.count));
-        } else if (level.highestNumber > static_cast<unsigned long>(level.planned)) {
+        } else if (level.numbered && level.highestNumber > level.planEnd) {
             emitProblem(level.planLine, "test number " + std::to_string(level.highestNumber) +
-                                            " is beyond the plan 1.." +
-                                            std::to_string(level.planned));
+                                            " is beyond the plan " + range);
+        } else if (level.numbered && level.lowestNumber < level.planStart) {
+            emitProblem(level.planLine, "test number " + std::to_string(level.lowestNumber) +
+                                            " is before the plan " + range);
         }
     }
+    trackedNumbers_ -= level.seen.size();
     if (levels_.size() > 1) {
         levels_.pop_back();
         levels_.back().nextSubtest.clear();

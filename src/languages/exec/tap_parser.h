@@ -89,12 +89,20 @@ private:
         std::string name;         // the subtest's name; empty at the top
         std::string nextSubtest;  // named by "# Subtest: name" for the next indented stream
         bool sawVersion = false;
-        long planned = -1;
+        bool strict = false;  // "pragma +strict": a line that is not TAP fails the stream
+        long planned = -1;    // how many points the plan says (end - start + 1)
+        unsigned long planStart = 1;
+        unsigned long planEnd = 0;
         unsigned int planLine = 0;
         unsigned int count = 0;
         unsigned int beforePlan = 0;
         unsigned int afterPlan = 0;
+        bool numbered = false;            // a point gave its number
         unsigned long highestNumber = 0;  // of the numbered points
+        unsigned long lowestNumber = 0;
+        // The numbers given so far, to tell one given twice: numbers up to what the budget of
+        // the whole stream allows (kMaxTrackedNumbers); beyond it a repeat is not told.
+        std::vector<bool> seen;
     };
     // A line or an event from before the stream was known to be TAP.
     struct Held {
@@ -105,6 +113,10 @@ private:
     };
 
     void process(const std::string& text);
+    // A line that is not TAP: plain output, and a problem where "pragma +strict" holds.
+    void nonTap(const std::string& raw);
+    // Notes `number` as given at the current level; false when it was given before.
+    bool firstTimeNumbered(unsigned long number);
     bool endsSubtests(const std::string& content) const;
     void plan(const std::string& content);
     bool point(const std::string& content);
@@ -144,6 +156,7 @@ private:
     bool bailedOut_ = false;
     std::string bailOutReason_;
     unsigned int bailOutLine_ = 0;
+    std::size_t trackedNumbers_ = 0;  // the sizes of every level's `seen`
     std::size_t failedPoints_ = 0;
     std::size_t problems_ = 0;
     bool finished_ = false;

@@ -91,6 +91,19 @@ bool number(const std::string& text, double& value) {
     return !text.empty() && end == text.c_str() + text.size();
 }
 
+// Why `text` is no number a measurement can hold, quoting it as it was written: empty when it
+// is one. A finite number too large for a double (1e400) is refused by what was written, not
+// as the infinity strtod makes of it.
+std::string notANumber(const std::string& key, const std::string& text, double& value) {
+    if (!number(text, value)) {
+        return key + " '" + text + "' is not a number";
+    }
+    if (std::isinf(value) && errno == ERANGE) {
+        return key + " '" + text + "' is too large: a measurement holds at most 1.8e308";
+    }
+    return {};
+}
+
 void addMeasurement(const Item& item, std::size_t index, TapRecords& records) {
     const std::string where = "measurements item " + std::to_string(index) + ": ";
     auto field = [&item](const char* key) {
@@ -100,8 +113,9 @@ void addMeasurement(const Item& item, std::size_t index, TapRecords& records) {
     Measurement measurement;
     measurement.name = field("name");
     measurement.unit = isNull(field("unit")) ? std::string() : field("unit");
-    if (!number(field("value"), measurement.value)) {
-        records.problems.push_back(where + "value '" + field("value") + "' is not a number");
+    const std::string problem = notANumber("value", field("value"), measurement.value);
+    if (!problem.empty()) {
+        records.problems.push_back(where + problem);
         return;
     }
     for (const char* key : {"low", "high"}) {
@@ -110,8 +124,9 @@ void addMeasurement(const Item& item, std::size_t index, TapRecords& records) {
             continue;
         }
         double limit = 0;
-        if (!number(text, limit)) {
-            records.problems.push_back(where + key + " '" + text + "' is not a number");
+        const std::string problem = notANumber(key, text, limit);
+        if (!problem.empty()) {
+            records.problems.push_back(where + problem);
             return;
         }
         (key[0] == 'l' ? measurement.low : measurement.high) = limit;

@@ -5,6 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -56,6 +58,49 @@ TestCase* currentTest() {
     return g_caller.test != nullptr ? g_caller.test : TestCase::current();
 }
 
+// A thread a test started carries that test (its id and name, `_rtf_test`, stamped by
+// kThreadOwnerSource): with --isolation none the runner goes on to the next test while the
+// thread may still run. What it reports after its test ended belongs to that test, never to
+// the one running then: it is dropped with a warning naming its test (README: Python). Empty
+// when the calling thread is the call's own, carries no test, or its test is the running one.
+std::string endedOwner() {
+    if (g_caller.test != nullptr && PyThread_get_thread_ident() == g_caller.thread) {
+        return "";
+    }
+    py::object thread = py::module_::import("threading").attr("current_thread")();
+    py::object owner = py::getattr(thread, "_rtf_test", py::none());
+    if (owner.is_none()) {
+        return "";
+    }
+    const py::tuple stamp = owner;
+    const TestCase* running = g_caller.fixture == nullptr ? currentTest() : nullptr;
+    if (running != nullptr && running->getId() == stamp[0].cast<std::uint64_t>()) {
+        return "";
+    }
+    return py::str(stamp[1]);
+}
+
+// The warning of a late call of a thread of `owner` (endedOwner), on stderr as a message with
+// no running test is (Asserter): the event itself is dropped.
+void warnLate(const std::string& owner, const char* call, const TestMessage& message) {
+    const std::string where = message.getSourceLocation();
+    std::fprintf(stderr,
+                 "robottestingframework: warning: a thread of test \"%s\" called %s after that "
+                 "test ended; dropped: %s%s%s%s\n",
+                 owner.c_str(), call, message.toString().c_str(), where.empty() ? "" : " [",
+                 where.c_str(), where.empty() ? "" : "]");
+}
+
+// True (and warned) when the calling thread's test ended: the caller drops the event.
+bool late(const char* call, const TestMessage& message) {
+    const std::string owner = endedOwner();
+    if (owner.empty()) {
+        return false;
+    }
+    warnLate(owner, call, message);
+    return true;
+}
+
 bool truth(const py::handle& value) {
     int result = PyObject_IsTrue(value.ptr());
     if (result < 0) {
@@ -75,8 +120,13 @@ void report(const TestMessage& message) {
 // Raises `type` with (message, file, line): the wrapper turns it into the framework's exception.
 [[noreturn]] void raise(PyObject* type, const py::object& text) {
     TestMessage here = messageHere(py::str(text));
-    g_pendingKind = type == g_failure ? 1 : (type == g_critical ? 3 : 2);
-    g_pendingMessage = here;
+    // Kept for the call's end only when it is raised on the call's thread, or on a thread of
+    // the running test: a thread of an ended test raises it in that thread alone.
+    if (g_caller.test == nullptr || PyThread_get_thread_ident() == g_caller.thread ||
+        endedOwner().empty()) {
+        g_pendingKind = type == g_failure ? 1 : (type == g_critical ? 3 : 2);
+        g_pendingMessage = here;
+    }
     py::tuple args =
         py::make_tuple(here.getMessage(), here.getSourceFileName(), here.getSourceLineNumber());
     PyErr_SetObject(type, args.ptr());
@@ -224,15 +274,26 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
     m.attr("TestCriticalError") = py::reinterpret_borrow<py::object>(g_critical);
 
     m.def("setName", [](const std::string& name) {
+        if (late("setName", TestMessage(name))) {
+            return;
+        }
         if (g_caller.fixture != nullptr) {
             g_caller.fixture->setName(name);
         } else if (TestCase* test = currentTest()) {
             test->setName(name);
         }
     });
-    m.def("testReport", [](const py::object& text) { report(messageHere(py::str(text))); });
+    m.def("testReport", [](const py::object& text) {
+        TestMessage message = messageHere(py::str(text));
+        if (!late("testReport", message)) {
+            report(message);
+        }
+    });
     m.def("testCheck", [](const py::object& condition, const py::object& text) {
         bool passed = truth(condition);
+        if (late(passed ? "testCheck(True)" : "testCheck(False)", messageHere(py::str(text)))) {
+            return;
+        }
         if (g_caller.fixture != nullptr) {
             if (!passed) {
                 report(messageHere(py::str(text), "check failed"));
@@ -244,6 +305,9 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
     // RTF 2.x's meaning, which its tests rely on: the test fails when the condition is false.
     m.def("testFailIf", [](const py::object& condition, const py::object& text) {
         bool passed = truth(condition);
+        if (late("testFailIf", messageHere(py::str(text)))) {
+            return;
+        }
         if (g_caller.fixture != nullptr) {
             if (!passed) {
                 report(messageHere(py::str(text), "failed"));
@@ -268,6 +332,9 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
             if (!high.is_none()) {
                 measurement.high = number(high);
             }
+            if (late("testMeasure", messageHere(describeMeasurement(measurement)))) {
+                return;
+            }
             if (g_caller.fixture != nullptr) {
                 report(messageHere(describeMeasurement(measurement), "measurement"));
                 return;
@@ -283,6 +350,9 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
             const std::string file = py::str(path);
             const std::string text =
                 description.is_none() ? std::string() : std::string(py::str(description));
+            if (late("testAttach", messageHere(file))) {
+                return;
+            }
             if (g_caller.fixture != nullptr) {
                 report(messageHere("attachment " + file + " (a fixture attaches nothing)"));
                 return;
@@ -303,6 +373,15 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
         }
         TestCase* test = currentTest();
         return test != nullptr ? test->getParam() : std::string();
+    });
+    // The test whose call runs, as kThreadOwnerSource stamps a thread it starts: (id, name), or
+    // None outside a test's call.
+    m.def("_running_test", []() -> py::object {
+        if (g_caller.test == nullptr || g_caller.fixture != nullptr) {
+            return py::none();
+        }
+        const std::string& key = g_caller.test->getKey();  // its id in its suite (README)
+        return py::make_tuple(g_caller.test->getId(), key.empty() ? g_caller.test->getName() : key);
     });
     // For fixture managers: the world is gone; the suite stops running its tests.
     m.def("fixtureCollapsed", [](const py::object& text) {
@@ -329,6 +408,30 @@ def _guard(real=os._exit, getpid=os.getpid):
     return _exit
 os._exit = _guard()
 )PY";
+
+// Every thread started while a test's call runs, or by a thread of a test, carries that test
+// (endedOwner reads it).
+const char* const kThreadOwnerSource = R"PY(
+import threading
+import robottestingframework as _rtf
+def _stamped(start=threading.Thread.start, current=threading.current_thread):
+    def start_stamped(self, *args, **kwargs):
+        owner = getattr(current(), "_rtf_test", None)
+        if owner is None:
+            owner = _rtf._running_test()
+        if owner is not None:
+            self._rtf_test = owner
+        return start(self, *args, **kwargs)
+    return start_stamped
+threading.Thread.start = _stamped()
+)PY";
+
+void stampThreads() {
+    py::dict globals;
+    globals["__builtins__"] = py::module_::import("builtins");
+    globals["__name__"] = "_rtf_thread_owner";
+    py::exec(kThreadOwnerSource, globals);
+}
 
 // The signal that wakes a sleeping script (see wakeScript): a real-time one nobody else uses.
 int wakeSignal() {
@@ -427,6 +530,7 @@ void ensureInterpreter() {
             writeLinesAsTheyEnd();
             dumpStackOnCrash();
             guardProcessExit();
+            stampThreads();
             installWakeHandler();
         }
         PyEval_SaveThread();  // every later call takes the GIL with gil_scoped_acquire
@@ -488,6 +592,7 @@ void wakeScript(unsigned long thread) {
 
 CallerScope::CallerScope(Caller caller) : previous_(g_caller) {
     g_caller = caller;
+    g_caller.thread = PyThread_get_thread_ident();
 }
 
 CallerScope::~CallerScope() {

@@ -42,6 +42,7 @@ void wakeScript(unsigned long thread);
 struct Caller {
     TestCase* test = nullptr;
     FixtureManager* fixture = nullptr;
+    unsigned long thread = 0;  // the PyThread ident of the thread of the call (CallerScope sets it)
 };
 
 // Makes `caller` the one scripts report to while it lives (GIL held).

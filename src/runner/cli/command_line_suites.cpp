@@ -129,6 +129,10 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
     for (const auto& file : suiteFiles) {
         suites.push_back(readSuiteFile(file, warnings, variables));
     }
+    const std::string sameIds = makeIdsUniqueAcrossSuites(suites);
+    if (!sameIds.empty()) {
+        throw std::runtime_error(sameIds);
+    }
     return suites;
 }
 

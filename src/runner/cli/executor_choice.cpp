@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <mutex>
+#include <random>
 
+#include "fixtures/process/child_process.h"
+#include "languages/test_loader.h"
 #include "platform/process.h"
 #include "runner/cli/program_name.h"
 #include "runner/execution/in_process_executor.h"
@@ -10,6 +14,53 @@
 
 namespace robottestingframework {
 namespace runner {
+
+namespace {
+
+// With the tests in the runner's process, each exec test's program gets a variable of this run
+// (languages::setExecGuard), and so does everything it starts; should the runner be killed,
+// even by SIGKILL, a watchdog kills every process carrying it, as a world's watchdog does for
+// its processes (docs/process-fixture.md): the parent-death signal reaches the program only.
+// Started with the first exec test (a run without one has no watchdog); it sweeps when the
+// runner's end closes its pipe, or when endExecGuard() lets it go.
+std::mutex guardMutex;
+std::unique_ptr<fixtures::Watchdog> guardWatchdog;
+std::string guardEntry;
+bool guardTried = false;
+
+std::string guardWhatExecTestsStart() {
+    std::lock_guard<std::mutex> lock(guardMutex);
+    if (guardTried) {
+        return guardEntry;
+    }
+    guardTried = true;
+    std::random_device random;
+    char name[64];
+    std::snprintf(name, sizeof name, "RTF_IN_PROCESS_RUN_%08x%08x=1", random(), random());
+    auto watchdog = std::make_unique<fixtures::Watchdog>();
+    std::string error;
+    if (!watchdog->start(name, error)) {
+        std::fprintf(stderr,
+                     "%s: warning: --isolation none: %s; what exec tests start may outlive a "
+                     "killed runner\n",
+                     programName, error.c_str());
+        return guardEntry;
+    }
+    guardWatchdog = std::move(watchdog);
+    guardEntry = name;
+    return guardEntry;
+}
+
+}  // namespace
+
+void endExecGuard() {
+    std::unique_ptr<fixtures::Watchdog> watchdog;
+    {
+        std::lock_guard<std::mutex> lock(guardMutex);
+        watchdog.swap(guardWatchdog);
+    }
+    watchdog.reset();  // it sweeps (the runner does not carry the variable), exits, is reaped
+}
 
 std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
     std::fprintf(stderr,
@@ -19,6 +70,7 @@ std::unique_ptr<TestExecutor> inProcessExecutor(Options& options) {
     // Daemons the tests leave (out of their process groups) are adopted, and end with us
     // (where the platform can: not on Windows).
     platform::becomeSubreaper();
+    languages::setExecGuard(guardWhatExecTestsStart);
     if (options.jobs > 1) {
         std::fprintf(stderr,
                      "%s: warning: --isolation none runs one suite at a time (tests share "

@@ -22,5 +22,11 @@ std::unique_ptr<TestExecutor> chooseExecutor(Options& options, std::size_t suite
 // --isolation none: the warnings, and one suite at a time. chooseExecutor calls it.
 std::unique_ptr<TestExecutor> inProcessExecutor(Options& options);
 
+// --isolation none, once the tests have run: the watchdog of what exec tests started, if one
+// was, kills whatever still carries the run's variable (daemons out of the runner's tree too)
+// and ends. Call it before killing what the tests left among the runner's descendants, which
+// would end the watchdog before its sweep.
+void endExecGuard();
+
 }  // namespace runner
 }  // namespace robottestingframework

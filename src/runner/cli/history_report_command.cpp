@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "reporters/text_safety.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/program_name.h"
 #include "runner/history/history_database.h"
@@ -35,7 +36,8 @@ std::string historyReportText(const std::vector<TestHistory>& histories, std::si
         out += "  none\n";
     }
     for (const FlakyTest& test : flaky) {
-        out += format("  %5.1f %%  ", 100 * test.rate) + test.history->test + "  (" +
+        out += format("  %5.1f %%  ", 100 * test.rate) +
+               reporters::visibleText(test.history->test) + "  (" +
                std::to_string(test.history->runs.size()) + " runs)\n";
     }
     out += "\nMost slowed-down tests (median of the newest third of runs against the older):\n";
@@ -46,7 +48,7 @@ std::string historyReportText(const std::vector<TestHistory>& histories, std::si
     for (const SlowedTest& test : slowed) {
         out += format("  %5.2fx  %.3f s -> %.3f s  ", test.slowdown.ratio(), test.slowdown.before,
                       test.slowdown.recent) +
-               test.history->test + "\n";
+               reporters::visibleText(test.history->test) + "\n";
     }
     return out;
 }

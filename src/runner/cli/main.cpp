@@ -151,6 +151,7 @@ int main(int argc, char** argv) {
     const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);
     listeners.stopCapture();
     if (options.isolation == Isolation::None) {
+        endExecGuard();                         // what exec tests started, daemons included
         platform::killDescendants(::getpid());  // what the tests left behind in our process
     }
 

@@ -478,7 +478,8 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         NameFilter filter;
         std::string error;
         if (!NameFilter::parse(text, filter, error)) {
-            return usageError("--filter " + text + ": " + error);
+            // Maybe a test's id, which wins over pattern syntax: told once the suites are read.
+            filter = NameFilter::exactIdOnly(text, error);
         }
         options.selection.filters.push_back(std::move(filter));
     }

@@ -81,5 +81,22 @@ std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
     return {};
 }
 
+bool createOutputFolders(const std::vector<OutputRequest>& outputs, std::string& error) {
+    for (const auto& output : outputs) {
+        const std::filesystem::path folder = std::filesystem::path(output.file).parent_path();
+        std::error_code failed;
+        if (folder.empty() || std::filesystem::is_directory(folder, failed)) {
+            continue;
+        }
+        std::filesystem::create_directories(folder, failed);
+        if (failed) {
+            error = describe(output) + ": cannot create the folder " + folder.generic_string() +
+                    " (" + failed.message() + ")";
+            return false;
+        }
+    }
+    return true;
+}
+
 }  // namespace runner
 }  // namespace robottestingframework

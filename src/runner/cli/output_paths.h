@@ -18,5 +18,10 @@ namespace runner {
 std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
                              const std::vector<SuiteSpec>& suites);
 
+// Creates the missing folders of each output's path before the run, as pytest's --junitxml
+// does (`-o junit:out/r.xml` makes out/). False with `error` naming the output and the folder
+// when one cannot be made (a file of that name, no permission).
+bool createOutputFolders(const std::vector<OutputRequest>& outputs, std::string& error);
+
 }  // namespace runner
 }  // namespace robottestingframework

@@ -5,6 +5,7 @@
 
 #include "runner/cli/sharded_run_setup.h"
 #include "runner/plan/selection.h"
+#include "runner/plan/world_logs.h"
 #include "runner/reports/rerun_report.h"
 
 namespace robottestingframework {
@@ -47,6 +48,7 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
         plan.reportSettings.sharded = earlier.shard.known;
         plan.reportSettings.shardIndex = earlier.shard.index;
         plan.reportSettings.shardCount = earlier.shard.count;
+        plan.reportSettings.shardPlan = earlier.shard.plan;
     } catch (const std::exception& e) {
         plan.outcome = PlannedRun::Outcome::Error;
         plan.error = e.what();
@@ -74,6 +76,7 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
 // shards' reports merge into the one a single machine would write.
 void keepShard(const Options& options, const std::vector<unsigned int>& shardOf, PlannedRun& plan) {
     const ShardChoice& shard = plan.shard;
+    plan.reportSettings.shardPlan = planIdentity(plan.suites, shard.count);
     std::vector<SuiteSpec> mine;
     for (std::size_t i = 0; i < plan.suites.size(); ++i) {
         if (shardOf[i] != shard.index) {
@@ -103,6 +106,11 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
     PlannedRun plan;
     plan.suites = std::move(suites);
     plan.shard = std::move(shard);
+    plan.error = filterNamingNoTest(plan.suites, options.selection);
+    if (!plan.error.empty()) {
+        plan.outcome = PlannedRun::Outcome::Error;
+        return plan;
+    }
     if (!options.rerunFailed.empty() && !keepFailed(options, plan)) {
         return plan;
     }
@@ -125,6 +133,7 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
             warn(plan, "warning: no test is selected");
         }
     }
+    separateWorldLogs(plan.suites);
     if (!options.durations.empty()) {
         try {
             plan.durations = suiteDurations(options.durations);

@@ -79,6 +79,7 @@ RunHistory::RunHistory(std::string path, HistoryRun run)
     : path_(std::move(path)),
       run_(std::move(run)),
       strips_(std::make_shared<reporters::HistoryStrips>()) {
+    checkHistoryFileKind(path_);  // /dev/null is refused before the run, not after it
     struct stat status {};
     if (::stat(path_.c_str(), &status) == 0 && status.st_size > 0) {
         HistoryDatabase check(path_, HistoryDatabase::Mode::Check);  // throws when not ours

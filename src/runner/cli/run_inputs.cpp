@@ -12,6 +12,7 @@
 #include "runner/cli/output_paths.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/sharded_run_setup.h"
+#include "runner/cli/world_files.h"
 #include "runner/plan/run_gate.h"
 
 namespace robottestingframework {
@@ -99,6 +100,16 @@ bool readRunInputs(Options& options, RunInputs& inputs) {
     }
     if (!poolProblem.empty()) {
         std::fprintf(stderr, "%s: %s\n", programName, poolProblem.c_str());
+        return false;
+    }
+    const std::string worldProblem = checkWorldFiles(inputs.suites, inputs.pools);
+    if (!worldProblem.empty()) {
+        std::fprintf(stderr, "%s: %s\n", programName, worldProblem.c_str());
+        return false;
+    }
+    // Last, once every input is known good: no folder is made for a run that never starts.
+    if (!createOutputFolders(options.outputs, error)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
         return false;
     }
     return true;

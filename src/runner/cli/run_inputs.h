@@ -22,7 +22,8 @@ struct RunInputs {
 
 // Reads the suites (their warnings on stderr), chooses the shard (prepareShard: it may add an
 // output to `options`), warns of --var nothing reads, and checks the dependencies, the output
-// paths and the resource pools. False, the error said on stderr, on a configuration error.
+// paths, the resource pools and the world files of process fixtures (world_files.h). False,
+// the error said on stderr, on a configuration error.
 bool readRunInputs(Options& options, RunInputs& inputs);
 
 }  // namespace runner

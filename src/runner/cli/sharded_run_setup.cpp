@@ -1,11 +1,15 @@
 #include "runner/cli/sharded_run_setup.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <map>
 
 #include "platform/environment.h"
+#include "runner/plan/run_gate.h"
 #include "runner/plan/shard_split.h"
 #include "runner/reports/report_reader.h"
 
@@ -70,7 +74,53 @@ std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigne
         item.milliseconds = found == known.end() ? -1 : found->second;
         items.push_back(std::move(item));
     }
+    // A test that depends on a test of another suite: both suites on one shard, linked as a
+    // shared lock links them (a key no lock name can be: lock names have no spaces).
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        for (const auto& test : suites[s].tests) {
+            for (const auto& dependency : test.depends) {
+                for (std::size_t other = 0; other < suites.size(); ++other) {
+                    const auto& candidates = suites[other].tests;
+                    if (other == s || std::none_of(candidates.begin(), candidates.end(),
+                                                   [&dependency](const TestSpec& candidate) {
+                                                       return dependencyNames(dependency,
+                                                                              candidate);
+                                                   })) {
+                        continue;
+                    }
+                    const std::string link = "depends on suite " + std::to_string(other);
+                    items[s].locks.push_back(link);
+                    items[other].locks.push_back(link);
+                }
+            }
+        }
+    }
     return assignShards(items, count, durations.has_value());
+}
+
+std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int count) {
+    std::uint64_t hash = 14695981039346656037ULL;
+    auto add = [&hash](const std::string& text) {
+        for (const char c : text) {
+            hash = (hash ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+        }
+        hash = (hash ^ 0x1fU) * 1099511628211ULL;  // ends each piece: "ab","c" is not "a","bc"
+    };
+    add(std::to_string(count));
+    for (const auto& suite : suites) {
+        add(suite.name);
+        // The file's name only: machines check the sources out in folders of their own.
+        add(std::filesystem::path(suite.where.file.str()).filename().string());
+        for (const auto& test : suite.tests) {
+            add(test.id);
+        }
+        add("\x1e");
+    }
+    std::string text(16, '0');
+    for (std::size_t i = 16; i-- > 0; hash >>= 4) {
+        text[i] = "0123456789abcdef"[hash & 0xfU];
+    }
+    return text;
 }
 
 }  // namespace runner

@@ -22,10 +22,17 @@ namespace runner {
 // `error` on bad input.
 bool prepareShard(Options& options, ShardChoice& choice, std::string& error);
 
-// The shard of each of `suites` (shard_split.h): by sorted id, suites sharing a lock together, and
-// balanced by the suites' earlier times (--durations) when there are any.
+// The shard of each of `suites` (shard_split.h): by sorted id, suites sharing a lock together (and
+// suites linked by a test's `depends` on a test of another), and balanced by the suites' earlier
+// times (--durations) when there are any.
 std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigned int count,
                                    const std::optional<SuiteSeconds>& durations);
+
+// What makes the shards' reports recognisably those of one run: the whole selection (each
+// suite's name, file name and test ids, in order) and the shard count, hashed (FNV-1a, 64 bits,
+// as 16 hex digits: the same on every machine and platform, wherever the sources are checked
+// out). Each shard report carries it; --merge refuses a report whose plan differs.
+std::string planIdentity(const std::vector<SuiteSpec>& suites, unsigned int count);
 
 }  // namespace runner
 }  // namespace robottestingframework

@@ -1,5 +1,6 @@
 #include "runner/cli/suite_durations.h"
 
+#include <filesystem>
 #include <stdexcept>
 
 #include "runner/history/history_database.h"
@@ -11,7 +12,11 @@ namespace robottestingframework {
 namespace runner {
 
 SuiteSeconds suiteDurations(const std::string& file) {
-    if (looksLikeHistoryFile(file)) {
+    // A history file is looked at by its first bytes only when it can be read again: a pipe
+    // (`--durations <(cat report.xml)`) is read once, as the report it must then be.
+    std::error_code failed;
+    const bool regular = std::filesystem::is_regular_file(file, failed);
+    if (regular && looksLikeHistoryFile(file)) {
         try {
             HistoryDatabase database(file, HistoryDatabase::Mode::Read);
             return latestSuiteSeconds(database);

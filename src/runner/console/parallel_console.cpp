@@ -1,8 +1,11 @@
 #include "runner/console/parallel_console.h"
 
+#include <chrono>
+
 #include <robottestingframework/TestSuite.h>
 
 #include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -12,6 +15,17 @@ namespace {
 using namespace reporters::colour;
 using Kind = ResultEvent::Kind;
 
+// When `event` happened (steady seconds): as the collector times it, so that a test's time on
+// the console is the one the reports give (a kept event arrives up to SuiteEvents::kLookMs
+// after it happened).
+double happenedAt(const RunEvent& event) {
+    if (event.happened > 0) {
+        return event.happened;
+    }
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
 }  // namespace
 
 // Turns one suite's events into lines: a test's line when it ends.
@@ -19,14 +33,20 @@ class ParallelConsole::Live : public TestListener {
 public:
     Live(ParallelConsole& console, const TestSuite& suite) : console_(console), suite_(suite) {}
 
+    // Hands on `event`, timed when it happened.
+    void deliver(const RunEvent& event) {
+        happened_ = happenedAt(event);
+        onEvent(event);
+    }
+
     void startTest(const Test* test) override {
         if (ProgressLine* progress = console_.settings_.progress) {
-            progress->testStarted(test, suite_.getName(), shownAs(test));
+            progress->testStarted(test, suiteName(), shownAs(test));
         }
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts;  // a retry starts again
         open = Open();
-        open.started = std::chrono::steady_clock::now();
+        open.started = happened_;
         open.attempts = attempts;
     }
     void endTest(const Test* test) override {
@@ -38,8 +58,7 @@ public:
             return;
         }
         const Open& open = found->second;
-        const double took =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - open.started).count();
+        const double took = happened_ - open.started;
         // As the -j1 console: an attempt that will run again did not decide the test's state
         // (an interrupted one never runs again), and a pass after a retry is flaky.
         const bool retried = isFailure(open.status) && open.status != TestStatus::Interrupted &&
@@ -58,8 +77,7 @@ public:
         } else {
             text += word;
         }
-        text += " " + suite_.getName() + " :: " + shownAs(test) + "  (" + reporters::seconds(took) +
-                ")";
+        text += " " + suiteName() + " :: " + shownAs(test) + "  (" + reporters::seconds(took) + ")";
         console_.line(text);
         for (const auto& said : open.lines) {
             console_.line(said);
@@ -116,17 +134,18 @@ public:
         if (ProgressLine* progress = console_.settings_.progress) {
             progress->testRetried(test);
         }
-        console_.line("  retry       " + suite_.getName() + " :: " + shownAs(test) + ": " +
-                      reporters::messageText(msg));
+        console_.line("  retry       " + suiteName() + " :: " + shownAs(test) + ": " +
+                      reporters::shownMessage(msg, "          "));
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts + 1;
         open = Open();
-        open.started = std::chrono::steady_clock::now();
+        open.started = happened_;
         open.attempts = attempts;
     }
     void startTestSuite(const TestSuite* suite) override {
         if (ProgressLine* progress = console_.settings_.progress) {
-            progress->suiteStarted(suite != nullptr ? suite->getName() : "");
+            progress->suiteStarted(suite != nullptr ? reporters::visibleText(suite->getName())
+                                                    : "");
         }
     }
     void endTestSuite(const TestSuite* suite) override {
@@ -134,7 +153,7 @@ public:
             return;
         }
         if (ProgressLine* progress = console_.settings_.progress) {
-            progress->suiteEnded(suite->getName());
+            progress->suiteEnded(reporters::visibleText(suite->getName()));
         }
         const bool ok = suite->succeeded();
         std::string text = "  suite ";
@@ -143,12 +162,14 @@ public:
         }
         text += ok ? "passed" : "FAILED";
         text += console_.settings_.colours ? plain : "";
-        text += "  " + suite->getName();
+        text += "  " + reporters::visibleText(suite->getName());
         console_.line(text);
     }
 
 private:
     std::map<const Test*, Open>& open_() { return console_.open_; }
+    // The suite's name as the console shows it (control characters escaped).
+    std::string suiteName() const { return reporters::visibleText(suite_.getName()); }
     // "tests/arith.lua (ArmTest)": its id, and the name it gave itself beside.
     std::string shownAs(const Test* test) {
         if (test == nullptr) {
@@ -165,11 +186,12 @@ private:
         const TestStatus status = stateOf(kind);
         const std::string label = reporters::eventLabel(kind, passed);
         auto found = open_().find(test);
-        const std::string text = "      " + label + ": " + reporters::messageText(msg);
+        const std::string text =
+            "      " + label + ": " + reporters::shownMessage(msg, "          ");
         if (found == open_().end()) {
             // About the suite itself (a fixture that failed): said at once.
-            console_.line("  " + suite_.getName() + ": " + label + ": " +
-                          reporters::messageText(msg));
+            console_.line("  " + suiteName() + ": " + label + ": " +
+                          reporters::shownMessage(msg, "      "));
             return;
         }
         if (status > found->second.status) {
@@ -183,6 +205,7 @@ private:
 
     ParallelConsole& console_;
     const TestSuite& suite_;
+    double happened_ = 0;  // when the event being delivered happened (steady seconds)
 };
 
 ParallelConsole::ParallelConsole(std::FILE* stream, const TestResultCollector& collector,
@@ -204,7 +227,7 @@ void ParallelConsole::events(const TestSuite& suite,
                              const std::vector<SuiteEvents::Event>& events) {
     Live live(*this, suite);
     for (const auto& event : events) {
-        live.onEvent(event);
+        live.deliver(event);
     }
 }
 

@@ -5,7 +5,6 @@
 // the ordered results.
 #pragma once
 
-#include <chrono>
 #include <cstdio>
 #include <map>
 #include <string>
@@ -47,7 +46,7 @@ private:
     struct Open {
         TestStatus status = TestStatus::Passed;
         std::vector<std::string> lines;  // its messages, shown under its line
-        std::chrono::steady_clock::time_point started;
+        double started = 0;         // when it started (steady seconds), as the collector times it
         unsigned int attempts = 0;  // earlier attempts (--retries)
         std::string name;           // the name it gave itself, once it renamed itself
     };

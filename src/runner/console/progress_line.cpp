@@ -7,6 +7,7 @@
 
 #include "platform/terminal_width.h"
 #include "reporters/summary.h"
+#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -281,13 +282,13 @@ void ProgressLine::After::onEvent(const RunEvent& /*event*/) {
 
 void ProgressLine::Before::startTestSuite(const TestSuite* suite) {
     if (suite != nullptr) {
-        suite_ = suite->getName();
+        suite_ = reporters::visibleText(suite->getName());
         line_.suiteStarted(suite_);
     }
 }
 void ProgressLine::Before::endTestSuite(const TestSuite* suite) {
     if (suite != nullptr) {
-        line_.suiteEnded(suite->getName());
+        line_.suiteEnded(reporters::visibleText(suite->getName()));
     }
 }
 void ProgressLine::Before::startTest(const Test* test) {

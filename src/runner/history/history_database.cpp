@@ -3,6 +3,8 @@
 #include <sqlite3.h>
 
 #include <chrono>
+#include <cstdint>
+#include <filesystem>
 #include <thread>
 
 #include "runner/history/history_error.h"
@@ -57,19 +59,58 @@ std::int64_t pragmaNumber(sqlite3* db, const char* pragma, const std::string& fi
     return statement.step() ? statement.integer(0) : 0;
 }
 
+// `path` as an SQLite URI that reads it as it is (immutable: no lock, no -wal or -shm file
+// made beside it), for a file in a folder this process may not write.
+std::string immutableUri(const std::string& path) {
+    static const char* const hex = "0123456789ABCDEF";
+    std::string uri = "file:";
+    for (const char ch : path) {
+        const auto c = static_cast<unsigned char>(ch);
+        if ((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+            c == '/' || c == '.' || c == '-' || c == '_' || c == '~') {
+            uri += ch;
+        } else {
+            uri += '%';
+            uri += hex[c >> 4];
+            uri += hex[c & 0xF];
+        }
+    }
+    return uri + "?immutable=1";
+}
+
+// The folder of `path`, as the messages name it.
+std::string folderOf(const std::string& path) {
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    return folder.empty() ? "." : folder;
+}
+
 }  // namespace
 
 HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(path) {
+    checkHistoryFileKind(path);  // never a device: SQLite would leave PATH-journal beside it
     const int flags =
         mode == Mode::Append ? SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE : SQLITE_OPEN_READONLY;
-    if (sqlite3_open_v2(path.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
-        const std::string why = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
-        sqlite3_close(db_);
-        db_ = nullptr;
-        throw HistoryError("--history " + path + ": cannot open the history file (" + why + ")");
-    }
-    sqlite3_busy_timeout(db_, busyTimeoutMilliseconds);
+    open(path, flags);
     try {
+        if (!readFacts()) {
+            // A WAL file is read beside its -wal and -shm files, which SQLite makes when they
+            // are missing: in a folder this process may not write, it cannot. Read as it is,
+            // the file tells whether it is a history file; then only a write is impossible.
+            sqlite3_close(db_);
+            db_ = nullptr;
+            open(immutableUri(path), SQLITE_OPEN_READONLY | SQLITE_OPEN_URI);
+            if (!readFacts()) {
+                throw HistoryError("--history " + path_ +
+                                   ": not a history file (not an SQLite database, or a damaged "
+                                   "one)");
+            }
+            if (mode != Mode::Read) {
+                throw HistoryError("--history " + path_ + ": the folder " + folderOf(path_) +
+                                   " cannot be written (a run is recorded in the history file "
+                                   "and SQLite's -wal and -shm files beside it); give a history "
+                                   "file in a folder you may write");
+            }
+        }
         checkOrCreateSchema(mode);
     } catch (...) {
         sqlite3_close(db_);
@@ -78,32 +119,44 @@ HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(pat
     }
 }
 
+void HistoryDatabase::open(const std::string& name, int flags) {
+    if (sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
+        const std::string why = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
+        sqlite3_close(db_);
+        db_ = nullptr;
+        throw HistoryError("--history " + path_ + ": cannot open the history file (" + why + ")");
+    }
+    sqlite3_busy_timeout(db_, busyTimeoutMilliseconds);
+}
+
 HistoryDatabase::~HistoryDatabase() {
     sqlite3_close(db_);
 }
 
-void HistoryDatabase::checkOrCreateSchema(Mode mode) {
-    std::int64_t application = 0;
-    std::int64_t tables = 0;
-    std::int64_t version = 0;
+bool HistoryDatabase::readFacts() {
     try {
         // One read transaction, so the three come from one snapshot: another run may commit
         // the schema meanwhile, and tables without the application_id would read as another
         // program's database.
         runSql(db_, "BEGIN", path_);
-        application = pragmaNumber(db_, "application_id", path_);
-        version = pragmaNumber(db_, "user_version", path_);
+        facts_.application = pragmaNumber(db_, "application_id", path_);
+        facts_.version = pragmaNumber(db_, "user_version", path_);
         {
             SqliteStatement count(db_, "SELECT count(*) FROM sqlite_master", path_);
-            tables = count.step() ? count.integer(0) : 0;
+            facts_.tables = count.step() ? count.integer(0) : 0;
         }
         runSql(db_, "COMMIT", path_);
+        return true;
     } catch (const HistoryError&) {
         sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
-        // SQLite says "file is not a database": say what the user gave us instead.
-        throw HistoryError("--history " + path_ +
-                           ": not a history file (not an SQLite database, or a damaged one)");
+        return false;
     }
+}
+
+void HistoryDatabase::checkOrCreateSchema(Mode mode) {
+    const std::int64_t application = facts_.application;
+    const std::int64_t tables = facts_.tables;
+    const std::int64_t version = facts_.version;
     const bool fresh = application == 0 && tables == 0;
     if (!fresh && application != applicationId) {
         throw HistoryError("--history " + path_ +

@@ -12,6 +12,7 @@
 //   measurements(run, test, name, value, unit, low, high)
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 struct sqlite3;
@@ -29,7 +30,9 @@ public:
         Check,
     };
     // Throws HistoryError naming `path` when it cannot be opened, is not an SQLite database,
-    // is another program's database or is of a newer schema.
+    // is another program's database or is of a newer schema. A file in a folder this process
+    // may not write is read as it is (Read); Append and Check say that the folder cannot be
+    // written.
     HistoryDatabase(const std::string& path, Mode mode);
     ~HistoryDatabase();
     HistoryDatabase(const HistoryDatabase&) = delete;
@@ -45,8 +48,18 @@ public:
     static constexpr int busyTimeoutMilliseconds = 30000;
 
 private:
+    // What the file says of itself (PRAGMA application_id, user_version; its table count).
+    struct Facts {
+        std::int64_t application = 0;
+        std::int64_t version = 0;
+        std::int64_t tables = 0;
+    };
+    void open(const std::string& name, int flags);
+    // False when the file cannot be read (not a database, damaged, or its -shm not made).
+    bool readFacts();
     void checkOrCreateSchema(Mode mode);
 
+    Facts facts_;
     sqlite3* db_ = nullptr;
     std::string path_;
 };
@@ -54,6 +67,12 @@ private:
 // True when the file at `path` starts as an SQLite database does ("SQLite format 3"): how
 // --durations tells a history file from a report.
 bool looksLikeHistoryFile(const std::string& path);
+
+// Throws HistoryError "--history PATH: is a character device, not a history file ..." when
+// `path` names something other than a regular file (a folder, a FIFO, a device such as /dev/null
+// or /dev/full, a socket): SQLite would write its journal beside it (/dev/null-journal). A path
+// that names nothing yet is fine (the history file is created there).
+void checkHistoryFileKind(const std::string& path);
 
 }  // namespace runner
 }  // namespace robottestingframework

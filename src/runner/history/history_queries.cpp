@@ -15,6 +15,13 @@ std::size_t countRuns(HistoryDatabase& database) {
     return count.step() ? static_cast<std::size_t>(count.integer(0)) : 0;
 }
 
+bool hasRun(HistoryDatabase& database, const std::string& runKey) {
+    SqliteStatement find(database.handle(), "SELECT 1 FROM runs WHERE run_key = ? LIMIT 1",
+                         database.path());
+    find.bind(1, runKey);
+    return find.step();
+}
+
 namespace {
 
 struct RunRow {

@@ -43,6 +43,9 @@ struct RecentMeasurements {
 // The number of runs the history holds (a run's shards count once).
 std::size_t countRuns(HistoryDatabase& database);
 
+// Whether a run (or a shard of one) with the key `runKey` is in the history already.
+bool hasRun(HistoryDatabase& database, const std::string& runKey);
+
 // Every test of the last `runs` runs, each with its entries oldest first, in the order of the
 // tests' ids. Throws HistoryError.
 std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int runs);

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
+#include <set>
 #include <string_view>
 #include <unordered_map>
 #include <unordered_set>
@@ -144,6 +146,122 @@ void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder) {
         test.id = id;
         taken.insert(test.id);
     }
+}
+
+namespace {
+
+// Whether tests of two suites could share an id: "S/T" is one id for two suites only when they
+// share a name, or one's name is the start of the other's up to a '/' ("a" and "a/b"). Tells
+// without looking at a test: a run of 10 000 tests hashes no id here.
+bool suitesMayCollide(const std::vector<SuiteSpec>& suites) {
+    std::unordered_set<std::string_view> names;
+    for (const auto& suite : suites) {
+        if (!names.insert(suite.name).second) {
+            return true;
+        }
+    }
+    for (const auto& suite : suites) {
+        const std::string_view name = suite.name;
+        for (std::size_t slash = name.find('/'); slash != std::string_view::npos;
+             slash = name.find('/', slash + 1)) {
+            if (names.count(name.substr(0, slash)) > 0) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+// The suites that share an id with another one; `error`, when given, names the first two tests
+// of one id.
+std::set<std::size_t> collidingSuites(const std::vector<SuiteSpec>& suites, std::string* error) {
+    std::unordered_map<std::string, std::pair<std::size_t, std::size_t>> first;
+    std::set<std::size_t> colliding;
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        for (std::size_t t = 0; t < suites[s].tests.size(); ++t) {
+            const std::string id = testId(suites[s], suites[s].tests[t]);
+            const auto found = first.emplace(id, std::make_pair(s, t));
+            if (found.second || found.first->second.first == s) {
+                continue;
+            }
+            colliding.insert(found.first->second.first);
+            colliding.insert(s);
+            if (error != nullptr && error->empty()) {
+                const TestSpec& earlier =
+                    suites[found.first->second.first].tests[found.first->second.second];
+                const auto place = [](const SourceLocation& where) {
+                    return where.file.empty() ? std::string("the command line") : where.toString();
+                };
+                *error = "two tests have the id " + id + ": " + place(earlier.where) + " and " +
+                         place(suites[s].tests[t].where) +
+                         " (test ids are unique within a run: give one of their suites another "
+                         "name=)";
+            }
+        }
+    }
+    return colliding;
+}
+
+// The folder every path of `files` is below.
+fs::path commonFolder(const std::vector<fs::path>& files) {
+    fs::path common = files.front().parent_path();
+    for (const fs::path& file : files) {
+        // One path to iterate over: each parent_path() call makes a new one.
+        const fs::path folder = file.parent_path();
+        fs::path shared;
+        auto a = common.begin();
+        auto b = folder.begin();
+        for (; a != common.end() && b != folder.end() && *a == *b; ++a, ++b) {
+            shared /= *a;
+        }
+        common = shared;
+    }
+    return common;
+}
+
+}  // namespace
+
+std::string makeIdsUniqueAcrossSuites(std::vector<SuiteSpec>& suites) {
+    if (!suitesMayCollide(suites)) {
+        return {};
+    }
+    const std::set<std::size_t> colliding = collidingSuites(suites, nullptr);
+    if (colliding.empty()) {
+        return {};
+    }
+    std::vector<std::size_t> withFile;
+    std::vector<fs::path> files;
+    for (const std::size_t s : colliding) {
+        if (suites[s].where.file.empty()) {
+            continue;  // the tests of the command line ("tests"): the suite files give way
+        }
+        std::error_code failed;
+        fs::path file = fs::absolute(suites[s].where.file.str(), failed);
+        if (failed) {
+            file = suites[s].where.file.str();
+        }
+        withFile.push_back(s);
+        files.push_back(file.lexically_normal());
+    }
+    // Several files: each says which it is. One file given several times (two copies of a
+    // suite side by side, README: Running suites in parallel): its copies are numbered.
+    const std::set<fs::path> distinct(files.begin(), files.end());
+    const fs::path common = distinct.size() > 1 ? commonFolder(files) : fs::path();
+    std::map<fs::path, unsigned int> copies;
+    for (std::size_t i = 0; i < withFile.size(); ++i) {
+        SuiteSpec& suite = suites[withFile[i]];
+        if (distinct.size() > 1) {
+            const std::string relative = files[i].lexically_relative(common).generic_string();
+            suite.name += "[" + (relative.empty() ? files[i].generic_string() : relative) + "]";
+        }
+        const unsigned int copy = ++copies[files[i]];
+        if (copy > 1) {
+            suite.name += "[" + std::to_string(copy) + "]";
+        }
+    }
+    std::string error;
+    collidingSuites(suites, &error);
+    return error;
 }
 
 std::string testId(const SuiteSpec& suite, const TestSpec& test) {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "runner/model/suite_model.h"
 
@@ -25,6 +26,15 @@ void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder);
 
 // "SUITE/LOCAL".
 std::string testId(const SuiteSpec& suite, const TestSpec& test);
+
+// Makes the ids of a run's tests unique across its suites. Where tests of two suite files would
+// share an id (two files both <suite name="arm"> with the test t.py; suite "a" with the test
+// "b/c" beside suite "a/b" with the test "c"), each of those suites' names is qualified by its
+// file's path relative to the folder the colliding files share: "arm[left/arm.xml]/t.py" and
+// "arm[right/arm.xml]/t.py". One suite file given several times (two copies side by side) has its
+// later copies numbered: "robot/JointStatesTest", "robot[2]/JointStatesTest". Returns "" when
+// every id is then unique; else an error naming the id and both tests' files and lines.
+std::string makeIdsUniqueAcrossSuites(std::vector<SuiteSpec>& suites);
 
 }  // namespace runner
 }  // namespace robottestingframework

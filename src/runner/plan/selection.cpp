@@ -201,8 +201,28 @@ bool TagExpression::matches(const std::vector<std::string>& tags) const {
 
 namespace {
 
+// The bytes of the character at `at`: a UTF-8 sequence whole (2 to 4 bytes), else one byte (ASCII,
+// or a byte that starts no well-formed sequence).
+std::size_t characterLength(const std::string& text, std::size_t at) {
+    const auto lead = static_cast<unsigned char>(text[at]);
+    const std::size_t length = lead >= 0xF0 && lead <= 0xF4   ? 4
+                               : lead >= 0xE0 && lead <= 0xEF ? 3
+                               : lead >= 0xC2 && lead <= 0xDF ? 2
+                                                              : 1;
+    if (length == 1 || at + length > text.size()) {
+        return 1;
+    }
+    for (std::size_t i = 1; i < length; ++i) {
+        if ((static_cast<unsigned char>(text[at + i]) & 0xC0) != 0x80) {
+            return 1;
+        }
+    }
+    return length;
+}
+
 // "*", "?" glob over the whole text; with `escapes`, "\\x" in `pattern` stands for a literal x.
-// Iterative, with one backtrack point: linear enough for names and tags.
+// '?' is one character, not one byte ("u/?" matches "u/ü"), and '*' gives back whole
+// characters. Iterative, with one backtrack point: linear enough for names and tags.
 bool matchGlob(const std::string& pattern, const std::string& text, bool escapes) {
     std::size_t p = 0;
     std::size_t t = 0;
@@ -218,10 +238,11 @@ bool matchGlob(const std::string& pattern, const std::string& text, bool escapes
         const bool one = p < pattern.size() && !escaped && pattern[p] == '?';
         if (p < pattern.size() && (one || pattern[p + (escaped ? 1 : 0)] == text[t])) {
             p += escaped ? 2 : 1;
-            ++t;
+            t += one ? characterLength(text, t) : 1;
         } else if (star != std::string::npos) {
             p = star + 1;
-            t = ++mark;
+            mark += characterLength(text, mark);
+            t = mark;
         } else {
             return false;
         }
@@ -303,6 +324,13 @@ bool NameFilter::parse(const std::string& text, NameFilter& filter, std::string&
     return true;
 }
 
+NameFilter NameFilter::exactIdOnly(const std::string& text, const std::string& notAPattern) {
+    NameFilter filter;
+    filter.text_ = text;
+    filter.notAPattern_ = notAPattern;
+    return filter;  // no pattern: matches() is false, the id alone selects (selected())
+}
+
 bool NameFilter::matches(const std::string& id) const {
     auto any = [&id](const std::vector<std::string>& patterns) {
         return std::any_of(patterns.begin(), patterns.end(), [&id](const std::string& pattern) {
@@ -310,6 +338,24 @@ bool NameFilter::matches(const std::string& id) const {
         });
     };
     return any(positive_) && !any(negative_);
+}
+
+std::string filterNamingNoTest(const std::vector<SuiteSpec>& suites, const Selection& selection) {
+    for (const auto& filter : selection.filters) {
+        if (filter.notAPattern().empty()) {
+            continue;
+        }
+        const bool named = std::any_of(suites.begin(), suites.end(), [&](const SuiteSpec& suite) {
+            return std::any_of(suite.tests.begin(), suite.tests.end(), [&](const TestSpec& test) {
+                return testId(suite, test) == filter.text();
+            });
+        });
+        if (!named) {
+            return "--filter " + filter.text() + ": " + filter.notAPattern() +
+                   "; nor is it the id of a test of this run";
+        }
+    }
+    return {};
 }
 
 namespace {

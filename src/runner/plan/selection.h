@@ -40,11 +40,18 @@ class NameFilter {
 public:
     // False with `error` for an empty filter or pattern, or a '\' at the end.
     static bool parse(const std::string& text, NameFilter& filter, std::string& error);
+    // A filter that does not parse ("arm::left/grip": an empty pattern at column 5) but may be a
+    // test's id as --list shows it ("::", ":-", a '-' at the end): it selects that test alone,
+    // and `notAPattern` is the usage error when no test of the run has that id
+    // (filterNamingNoTest).
+    static NameFilter exactIdOnly(const std::string& text, const std::string& notAPattern);
     bool matches(const std::string& id) const;
     const std::string& text() const { return text_; }
+    const std::string& notAPattern() const { return notAPattern_; }
 
 private:
     std::string text_;
+    std::string notAPattern_;            // why text_ is no pattern; "" when it is one
     std::vector<std::string> positive_;  // with their '\' escapes
     std::vector<std::string> negative_;
 };
@@ -58,6 +65,10 @@ struct Selection {
 
 // "*", "?" glob, the whole text.
 bool globMatches(const std::string& pattern, const std::string& text);
+
+// "--filter TEXT: ..." for the first filter that is no pattern and no test's id either (an exact
+// id wins over pattern syntax); "" when there is none.
+std::string filterNamingNoTest(const std::vector<SuiteSpec>& suites, const Selection& selection);
 
 // Takes out of `suites` the tests `selection` does not select, and the suites left without a
 // test (their fixtures are then never set up). A selected test that depends on a test not

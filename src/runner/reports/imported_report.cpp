@@ -1,6 +1,8 @@
 #include "runner/reports/imported_report.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <fstream>
@@ -8,6 +10,8 @@
 #include <map>
 #include <sstream>
 #include <stdexcept>
+
+#include "platform/bounded_file.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -161,17 +165,30 @@ void readForeignCtrf(ImportedReport& report, const std::string& text, const std:
     }
 }
 
+// FNV-1a over 64 bits, in hex: enough to know a report imported before (not a defence against
+// a report made to collide).
+std::string digestOf(const std::string& text) {
+    std::uint64_t hash = 14695981039346656037ULL;
+    for (const char c : text) {
+        hash ^= static_cast<unsigned char>(c);
+        hash *= 1099511628211ULL;
+    }
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(hash));
+    return hex;
+}
+
 }  // namespace
 
 ImportedReport readImportedReport(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw std::runtime_error(std::string(option) + " " + path + ": cannot read the report");
+    std::string text;
+    std::string error;
+    if (!platform::readBoundedFile(path, "report", maxReportBytes, platform::Pipes::Read, text,
+                                   error)) {
+        throw std::runtime_error(std::string(option) + " " + error);
     }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    const std::string text = buffer.str();
     ImportedReport imported;
+    imported.digest = digestOf(text);
     try {
         Report report = parseReport(option, text, path);
         imported.ours = true;

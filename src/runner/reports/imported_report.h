@@ -17,6 +17,9 @@ struct ImportedReport {
     std::vector<ReportedSuite> suites;
     double started = -1;  // seconds since the Unix epoch when the report says; else -1
     bool ours = false;    // written by this runner
+    // The report's bytes digested (FNV-1a, 16 hex digits): the same report imported again, by
+    // any path, is known by it.
+    std::string digest;
 };
 
 // Throws std::runtime_error "--history-import FILE[:LINE]: ..." when the file cannot be read or

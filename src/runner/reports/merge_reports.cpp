@@ -27,6 +27,43 @@ std::string shardName(const ReportedShard& shard) {
     return "shard " + std::to_string(shard.index) + " of " + std::to_string(shard.count);
 }
 
+// The shards' reports (and their reruns) are of one run: each says its run's plan
+// (planIdentity), and they all say the same. The plan most of them say is the run's (the first
+// report's on a tie); a report saying another, or none beside ones that say it, is of another
+// run.
+void checkOneRun(const std::vector<Report>& reports) {
+    std::map<std::string, std::size_t> votes;
+    for (const Report& report : reports) {
+        if (report.shard.known && !report.shard.plan.empty()) {
+            ++votes[report.shard.plan];
+        }
+    }
+    if (votes.empty()) {
+        return;  // reports of earlier versions, or of runs that were not sharded
+    }
+    std::string plan;
+    std::size_t most = 0;
+    for (const Report& report : reports) {
+        const auto found = votes.find(report.shard.plan);
+        if (found != votes.end() && found->second > most) {
+            plan = found->first;
+            most = found->second;
+        }
+    }
+    for (const Report& report : reports) {
+        if (report.shard.plan != plan) {
+            throw problem(report.path + ": a report of another run (" +
+                          (!report.shard.known         ? "it is not a shard's"
+                           : report.shard.plan.empty() ? "it says no plan"
+                                                       : "its plan is " + report.shard.plan) +
+                          "; the shards of " + std::to_string(most) +
+                          " other report(s) are of plan " + plan +
+                          "): merge the shards of one run, each run with the same suites, "
+                          "selection and --shard-count");
+        }
+    }
+}
+
 // Every report of the requested format; with --expect-shards, each shard once and of that count.
 // The shards' own reports come first, then the reruns, each in the order given.
 std::vector<Report> checkAll(const MergeRequest& request, std::vector<Report> given) {
@@ -42,6 +79,9 @@ std::vector<Report> checkAll(const MergeRequest& request, std::vector<Report> gi
                           (format == ReportFormat::JUnit ? "JUnit" : "JSON") +
                           " like the output (" + request.type + ":" + request.file + ")");
         }
+    }
+    checkOneRun(given);
+    for (Report& report : given) {
         (report.shard.rerun ? reruns : base).push_back(std::move(report));
     }
     if (request.expectShards > 0) {
@@ -134,8 +174,8 @@ void resetProperties(pugi::xml_node suite) {
     for (pugi::xml_node property = properties.first_child(); property;) {
         const pugi::xml_node next = property.next_sibling();
         const std::string name = property.attribute("name").value();
-        if (name == shardIndexProperty || name == shardCountProperty || name == rerunProperty ||
-            name.rfind("rtf.state.", 0) == 0) {
+        if (name == shardIndexProperty || name == shardCountProperty || name == shardPlanProperty ||
+            name == rerunProperty || name.rfind("rtf.state.", 0) == 0) {
             properties.remove_child(property);
         }
         property = next;

@@ -6,11 +6,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "platform/bounded_file.h"
+
 namespace robottestingframework {
 namespace runner {
 
 const char* const shardIndexProperty = "rtf.shard.index";
 const char* const shardCountProperty = "rtf.shard.count";
+const char* const shardPlanProperty = "rtf.shard.plan";
 const char* const rerunProperty = "rtf.rerun";
 const char* const ctrfExtensionKey = "robotology.rtf";
 
@@ -116,6 +119,9 @@ void readJUnitShard(Report& report, const pugi::xml_node root, const Place& plac
             }
             holderIndex = holderIndex || name == shardIndexProperty;
             holderCount = holderCount || name == shardCountProperty;
+            if (name == shardPlanProperty && report.shard.plan.empty()) {
+                report.shard.plan = value;
+            }
             if (name == rerunProperty) {
                 report.shard.rerun = report.shard.rerun || value == "true";
             }
@@ -363,6 +369,12 @@ void readJsonShape(Report& report, const Place& place) {
         report.shard.known = true;
         report.shard.index = shard["index"].get<unsigned int>();
         report.shard.count = shard["count"].get<unsigned int>();
+        if (shard.contains("plan")) {
+            if (!shard["plan"].is_string()) {
+                throw place.error(-1, "results.extra.robotology.rtf.shard.plan: expected a string");
+            }
+            report.shard.plan = shard["plan"].get<std::string>();
+        }
     }
     if (extra.contains("rerun") && !extra["rerun"].is_boolean()) {
         throw place.error(-1, "results.extra.robotology.rtf.rerun: expected true or false");
@@ -438,13 +450,13 @@ void readJsonShape(Report& report, const Place& place) {
 }  // namespace
 
 Report readReport(const std::string& option, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw std::runtime_error(option + " " + path + ": cannot read the report");
+    std::string text;
+    std::string error;
+    if (!platform::readBoundedFile(path, "report", maxReportBytes, platform::Pipes::Read, text,
+                                   error)) {
+        throw std::runtime_error(option + " " + error);
     }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    return parseReport(option, buffer.str(), path);
+    return parseReport(option, text, path);
 }
 
 Report parseReport(const std::string& option, const std::string& text, const std::string& path) {

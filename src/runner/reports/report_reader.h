@@ -4,6 +4,7 @@
 // file, the line when known, and what was expected.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <vector>
@@ -34,6 +35,7 @@ struct ReportedShard {
     bool known = false;
     unsigned int index = 0;
     unsigned int count = 0;
+    std::string plan;    // the whole run's plan identity; empty in reports of earlier versions
     bool rerun = false;  // written by --rerun-failed: it replaces tests of an earlier report
 };
 
@@ -53,6 +55,10 @@ struct Report {
 // this runner, or out of shape.
 Report readReport(const std::string& option, const std::string& path);
 
+// The largest report readReport and readImportedReport read (a regular file or a pipe, such as
+// the shell's `<(...)`): a run's outputs are capped far below it (README: output limits).
+constexpr std::size_t maxReportBytes = 256 * 1024 * 1024;
+
 // The same from text already read; `path` names it in messages.
 Report parseReport(const std::string& option, const std::string& text, const std::string& path);
 
@@ -67,6 +73,7 @@ bool isJUnitRunSuite(pugi::xml_node suite);
 // The JUnit <property> names and CTRF keys of the shard a report comes from.
 extern const char* const shardIndexProperty;  // "rtf.shard.index"
 extern const char* const shardCountProperty;  // "rtf.shard.count"
+extern const char* const shardPlanProperty;   // "rtf.shard.plan"
 extern const char* const rerunProperty;       // "rtf.rerun"
 // The key of the runner's extensions in each CTRF "extra" object (json_reporter.cpp writes it),
 // namespaced as the CTRF specification recommends (an owner's prefix and a delimiter). Reports

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "platform/bounded_file.h"
+
 namespace robottestingframework {
 namespace runner {
 
@@ -34,13 +36,14 @@ bool isPoolName(const std::string& name) {
 }  // namespace
 
 ResourcePools readResourceFile(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        fail(path, "cannot read the resource file");
+    // A resource file is a few lines of JSON: 16 MiB is far beyond any.
+    std::string text;
+    std::string error;
+    if (!platform::readBoundedFile(path, "resource file", 16 * 1024 * 1024, platform::Pipes::Read,
+                                   text, error)) {
+        throw std::runtime_error(error);
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parseResourceFile(text.str(), path);
+    return parseResourceFile(text, path);
 }
 
 ResourcePools parseResourceFile(const std::string& text, const std::string& path) {

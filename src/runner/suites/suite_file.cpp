@@ -16,6 +16,7 @@
 
 #include <pugixml.hpp>
 
+#include "platform/bounded_file.h"
 #include "runner/model/test_id.h"
 #include "runner/model/value_limits.h"
 
@@ -96,53 +97,11 @@ bool isOneOf(const std::string& value, const char* const (&names)[N]) {
 
 // A regular file of at most maxSuiteFileBytes; `what` names it in messages ("suite file").
 std::string readBoundedFile(const std::string& path, const std::string& what) {
-    // A FIFO would block the run forever and a device (/dev/zero) would be read until memory
-    // runs out: only a regular file of a bounded size is read.
-    // std::filesystem rather than stat(): the same answers on POSIX and Windows.
-    using std::filesystem::file_type;
-    std::error_code failed;
-    const file_type type = std::filesystem::status(path, failed).type();
-    if (failed || type == file_type::not_found) {
-        const std::string reason = failed ? failed.message() : std::string(std::strerror(ENOENT));
-        throw SuiteFileError(path + ": cannot read the " + what + " (" + reason + ")");
-    }
-    if (type == file_type::directory) {
-        throw SuiteFileError(path + ": is a folder, not a " + what + "");
-    }
-    if (type != file_type::regular) {
-        const char* kind = type == file_type::fifo        ? "a FIFO (named pipe)"
-                           : type == file_type::character ? "a character device"
-                           : type == file_type::block     ? "a block device"
-                           : type == file_type::socket    ? "a socket"
-                                                          : "not a regular file";
-        throw SuiteFileError(path + ": is " + std::string(kind) + ", not a " + what + " (a " +
-                             what + " is a regular file)");
-    }
-    const std::string tooLarge = path + ": the " + what + " is larger than " +
-                                 std::to_string(maxSuiteFileBytes / (1024 * 1024)) +
-                                 " MiB, the limit of a " + what;
-    const std::uintmax_t size = std::filesystem::file_size(path, failed);
-    if (!failed && size > maxSuiteFileBytes) {
-        throw SuiteFileError(tooLarge);
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        throw SuiteFileError(path + ": cannot read the " + what + " (" + std::strerror(errno) +
-                             ")");
-    }
-    // Up to one byte past the limit: a file can grow after its size was read.
     std::string content;
-    content.reserve(failed ? 0 : static_cast<std::size_t>(size));
-    char chunk[65536];
-    while (in && content.size() <= maxSuiteFileBytes) {
-        in.read(chunk, sizeof chunk);
-        content.append(chunk, static_cast<std::size_t>(in.gcount()));
-    }
-    if (in.bad()) {
-        throw SuiteFileError(path + ": cannot read the " + what + "");
-    }
-    if (content.size() > maxSuiteFileBytes) {
-        throw SuiteFileError(tooLarge);
+    std::string error;
+    if (!platform::readBoundedFile(path, what, maxSuiteFileBytes, platform::Pipes::Refused, content,
+                                   error)) {
+        throw SuiteFileError(error);
     }
     return content;
 }
@@ -381,6 +340,7 @@ public:
                 suite.fixtures.push_back(readFixture(node));
             } else if (name == "resource") {
                 suite.resources.push_back(readResource(node));
+                checkPoolOnce(suite.resources);
             } else if (name == "test") {
                 suite.tests.push_back(node.attribute("file")
                                           ? readTestFile(node)
@@ -398,6 +358,7 @@ public:
             }
         }
         checkResourceUses(suite);
+        giveResourcesToWorlds(suite);
         for (const auto& variable : table_.all()) {
             suite.variables.push_back(
                 {variable.first, valueOf(root, variable.first), variable.second.origin});
@@ -566,6 +527,12 @@ private:
                     fail(node, "default=\"...\": item \"" + id +
                                    "\" is not an id (letters, digits, _, - and .)");
                 }
+                if (std::find(resource.defaults.begin(), resource.defaults.end(), id) !=
+                    resource.defaults.end()) {
+                    fail(node, "default=\"...\": item \"" + id +
+                                   "\" is given twice (each item of a pool once: two suites "
+                                   "would hold it at once)");
+                }
                 resource.defaults.push_back(id);
             }
             if (resource.defaults.empty()) {
@@ -573,6 +540,23 @@ private:
             }
         }
         return resource;
+    }
+
+    // A pool named twice in one suite could never be served (its items are taken all at once,
+    // each <resource> checked alone): one <resource> with count="N" says it.
+    void checkPoolOnce(const std::vector<ResourceSpec>& resources) const {
+        const ResourceSpec& added = resources.back();
+        for (std::size_t i = 0; !added.pool.empty() && i + 1 < resources.size(); ++i) {
+            const ResourceSpec& earlier = resources[i];
+            if (earlier.pool == added.pool) {
+                throw SuiteFileError(added.where.toString() + ": pool \"" + added.pool +
+                                     "\" is taken a second time (first at line " +
+                                     std::to_string(earlier.where.line) +
+                                     "); write one <resource pool=\"" + added.pool + "\" count=\"" +
+                                     std::to_string(earlier.count + added.count) + "\"/> for " +
+                                     std::to_string(earlier.count + added.count) + " items");
+            }
+        }
     }
 
     // ${resource.NAME} gets an item of the pool NAME: the suite must take one.
@@ -595,6 +579,23 @@ private:
         }
         for (const auto& fixture : suite.fixtures) {
             check(fixture.param, fixture.where);
+        }
+    }
+
+    // A process fixture's world file may use ${resource.POOL} of each pool the suite takes:
+    // the items reach it as --var resource.POOL=ITEMS (the scheduler fills the marker in).
+    static void giveResourcesToWorlds(SuiteSpec& suite) {
+        std::string words;
+        for (const auto& resource : suite.resources) {
+            if (!resource.pool.empty()) {
+                words += " --var " + quoted("resource." + resource.pool + "=" +
+                                            variables::resourceMarker(resource.pool));
+            }
+        }
+        for (auto& fixture : suite.fixtures) {
+            if (fixture.type == "process" && !words.empty()) {
+                fixture.param += fixture.param.empty() ? words.substr(1) : words;
+            }
         }
     }
 

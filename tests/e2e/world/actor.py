@@ -5,6 +5,7 @@ options ask, then serves until it is stopped:
   --listen PORT    listen on 127.0.0.1:PORT (accepts and closes connections)
   --touch FILE     create FILE
   --say TEXT       print TEXT on a line of its own (repeatable; flushed)
+  --print TEXT     then print TEXT with no newline after it (flushed)
   --spew MB        before that, print a line of MB megabytes of "x" (no newline until its end)
   --orphan         leave a grandchild behind in a new session (a daemon that double-forks)
   --die-after S    exit after S more seconds with --status N (default 3), saying why first
@@ -33,6 +34,7 @@ def main():
     parser.add_argument("--listen", type=int)
     parser.add_argument("--touch")
     parser.add_argument("--say", action="append", default=[])
+    parser.add_argument("--print")
     parser.add_argument("--spew", type=int, default=0)
     parser.add_argument("--orphan", action="store_true")
     parser.add_argument("--die-after", type=float)
@@ -57,6 +59,8 @@ def main():
         sys.stdout.write("\n")
     for text in args.say:
         print(text, flush=True)
+    if args.print is not None:
+        print(args.print, end="", flush=True)
     if args.orphan and os.fork() == 0:
         os.setsid()
         if os.fork() == 0:

@@ -1,0 +1,59 @@
+#include "runner/plan/world_logs.h"
+
+#include <map>
+#include <set>
+#include <string>
+
+namespace robottestingframework {
+namespace runner {
+
+namespace {
+
+// One word of a param, as a shell would quote it.
+std::string quoted(const std::string& word) {
+    std::string text = "'";
+    for (char c : word) {
+        text += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    return text + "'";
+}
+
+// The world file a process fixture starts: its resolved path, else as written.
+std::string worldOf(const FixtureSpec& fixture) {
+    return fixture.path.empty() ? fixture.plugin.str() : fixture.path.str();
+}
+
+}  // namespace
+
+void separateWorldLogs(std::vector<SuiteSpec>& suites) {
+    std::map<std::string, std::set<std::size_t>> startedBy;  // world file -> suites
+    for (std::size_t s = 0; s < suites.size(); ++s) {
+        for (const auto& fixture : suites[s].fixtures) {
+            if (fixture.type == "process") {
+                startedBy[worldOf(fixture)].insert(s);
+            }
+        }
+    }
+    for (const auto& world : startedBy) {
+        if (world.second.size() < 2) {
+            continue;
+        }
+        std::set<std::string> taken;
+        for (std::size_t s : world.second) {
+            SuiteSpec& suite = suites[s];
+            std::string instance = suite.name;
+            for (unsigned int n = 2; !taken.insert(instance).second; ++n) {
+                instance = suite.name + "-" + std::to_string(n);
+            }
+            for (auto& fixture : suite.fixtures) {
+                if (fixture.type == "process" && worldOf(fixture) == world.first) {
+                    fixture.param += (fixture.param.empty() ? "" : " ") +
+                                     std::string("--instance ") + quoted(instance);
+                }
+            }
+        }
+    }
+}
+
+}  // namespace runner
+}  // namespace robottestingframework

@@ -1,0 +1,20 @@
+// Suites of one run that start the same world file (process fixtures naming one file) would
+// write their processes' logs into one folder, each suite's attachment mixing both worlds'
+// lines. Each such suite's world gets its own instance name, and with it its own log folder.
+#pragma once
+
+#include <vector>
+
+#include "runner/model/suite_model.h"
+
+namespace robottestingframework {
+namespace runner {
+
+// Adds `--instance NAME` to the param of each process fixture whose world file another suite of
+// `suites` starts too: NAME is the suite's name, with "-2", "-3", ... on the second and later
+// suites of one name. The fixture then writes its logs to <logdir>/<NAME>/. A world file that
+// one suite alone starts keeps <logdir>/ as it is.
+void separateWorldLogs(std::vector<SuiteSpec>& suites);
+
+}  // namespace runner
+}  // namespace robottestingframework
