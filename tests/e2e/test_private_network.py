@@ -3,6 +3,8 @@ installed runner, from the suites' own folder: four copies of a suite whose worl
 fixed port on 127.0.0.1 run side by side green in private networks, in both isolation modes,
 while this machine's loopback holds that very port; without private networks they clash. Bad
 values stop the run before it starts (exit 2). Loopback only; nothing is left behind."""
+import os
+import shutil
 import socket
 import subprocess
 import sys
@@ -131,4 +133,52 @@ def test_where_no_private_network_can_be_had_the_run_stops_before_it_starts(tmp_
             "No space left on device") in proc.stderr
     assert "user.max_net_namespaces = 0" in proc.stderr
     assert "passed" not in proc.stdout and "web" not in proc.stdout
+    assert not leftover_processes(marker)
+
+
+def as_nobody(tmp_path):
+    """For a run as the user "nobody" (uid 65534), as a CI job that is not root runs: the test's
+    folder, and the folders above it up to pytest's base folder, open to it; its files its."""
+    folder = tmp_path
+    while folder != folder.parent:
+        mode = folder.stat().st_mode
+        if folder.stat().st_uid == os.getuid() and not mode & 0o001:
+            folder.chmod(mode | 0o011)
+        if folder.name.startswith("test_private_network"):
+            break
+        folder = folder.parent
+    for entry in tmp_path.iterdir():
+        os.chown(entry, 65534, 65534)
+    os.chown(tmp_path, 65534, 65534)
+
+
+def run_as_nobody(tmp_path, marker, *args):
+    command = ["setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", RUNNER, *args]
+    return subprocess.run(command, cwd=tmp_path,
+                          env=runner_environment(list(args), marked(marker, HOME=str(tmp_path)),
+                                                 cwd=tmp_path),
+                          stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.skipif(os.getuid() != 0 or shutil.which("setpriv") is None,
+                    reason="becoming another user needs root (as another user, every test "
+                           "above already runs through a user namespace)")
+def test_another_user_has_private_networks_through_user_namespaces(tmp_path, marker):
+    port = free_port()
+    suites = write_suites(tmp_path, port)
+    as_nobody(tmp_path)
+    with holding(port):
+        result = run_as_nobody(tmp_path, marker, *suites, "-j", "4", "--network", "private",
+                               "-v", "--no-output")
+        # A thread of the runner cannot join a user namespace: --isolation none is refused.
+        refused = run_as_nobody(tmp_path, marker, *suites, "--network", "private",
+                                "--isolation", "none", "--no-output")
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "a user and a network namespace" in result.stdout
+    assert "4 passed, 0 failed" in result.stdout
+    assert result.stdout.count("HTTP/1.0 200 OK") == 4, result.stdout
+    assert refused.returncode == 2, refused.stdout + refused.stderr
+    assert ("--network private with --isolation none: the runner's thread must join each "
+            "suite's network, which only root can") in refused.stderr
+    assert "passed" not in refused.stdout
     assert not leftover_processes(marker)
