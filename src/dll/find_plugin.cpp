@@ -7,6 +7,7 @@
 
 #include "dll/library_naming.h"
 #include "dll/shared_library.h"
+#include "platform/file_kind.h"
 
 namespace robottestingframework {
 namespace plugin {
@@ -28,13 +29,7 @@ std::string whatElse(const std::string& path) {
     if (error || type == file_type::not_found || type == file_type::regular) {
         return {};
     }
-    const char* kind = type == file_type::directory   ? "a folder"
-                       : type == file_type::fifo      ? "a FIFO (named pipe)"
-                       : type == file_type::character ? "a character device"
-                       : type == file_type::block     ? "a block device"
-                       : type == file_type::socket    ? "a socket"
-                                                      : "not a regular file";
-    return std::string("is ") + kind + ", not a plug-in file: " + path;
+    return std::string("is ") + platform::fileKindText(type) + ", not a plug-in file: " + path;
 }
 
 // "/x", and on Windows "C:\x", "\x" and "\\server\x" too.

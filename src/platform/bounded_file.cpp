@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "platform/file_kind.h"
+
 namespace robottestingframework {
 namespace platform {
 
@@ -41,13 +43,8 @@ bool readBoundedFile(const std::string& path, const std::string& what, std::size
     }
     const bool pipe = type == file_type::fifo && pipes == Pipes::Read;
     if (type != file_type::regular && !pipe) {
-        const char* kind = type == file_type::fifo        ? "a FIFO (named pipe)"
-                           : type == file_type::character ? "a character device"
-                           : type == file_type::block     ? "a block device"
-                           : type == file_type::socket    ? "a socket"
-                                                          : "not a regular file";
-        error = path + ": is " + std::string(kind) + ", not a " + what + " (a " + what +
-                " is a regular file" + (pipes == Pipes::Read ? " or a pipe)" : ")");
+        error = path + ": is " + std::string(fileKindText(type)) + ", not a " + what + " (a " +
+                what + " is a regular file" + (pipes == Pipes::Read ? " or a pipe)" : ")");
         return false;
     }
     const std::string tooLarge =

@@ -49,10 +49,14 @@ void InterruptWatcher::watch(std::FILE* console) {
             std::fprintf(console, "%s: interrupted again; writing what is known and quitting\n",
                          programName);
             std::fflush(console);
-            // Whatever the run started goes with us: the fork server kills its workers when
-            // we are gone; what the runner itself started (in-process tests) is killed here.
-            platform::killDescendants(::getpid());
+            // The outputs first, with the run as it stands: the collector leaves the run
+            // before anything is killed, so a fixture or test killed now is not recorded as
+            // having died (a hung tearDown read "died in tearDown: killed by SIGKILL" instead of
+            // "the runner quit" when its worker's end came first). Then whatever the run
+            // started goes with us: the fork server kills its workers when we are gone; what
+            // the runner itself started (in-process tests) is killed here.
             quit_();
+            platform::killDescendants(::getpid());
             platform::flushCoverage();
             ::_exit(interruptedBy(received_));
         }

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "platform/file_kind.h"
 #include "runner/history/history_database.h"
 #include "runner/history/history_error.h"
 
@@ -16,13 +17,7 @@ void checkHistoryFileKind(const std::string& path) {
     if (failed || type == file_type::not_found || type == file_type::regular) {
         return;  // what cannot be looked at is told by SQLite's own error when opened
     }
-    const char* kind = type == file_type::directory   ? "a folder"
-                       : type == file_type::fifo      ? "a FIFO (named pipe)"
-                       : type == file_type::character ? "a character device"
-                       : type == file_type::block     ? "a block device"
-                       : type == file_type::socket    ? "a socket"
-                                                      : "not a regular file";
-    throw HistoryError("--history " + path + ": is " + kind +
+    throw HistoryError("--history " + path + ": is " + platform::fileKindText(type) +
                        ", not a history file (a history file is a regular file, an SQLite "
                        "database, created when missing)");
 }
