@@ -72,7 +72,10 @@ bool isNull(const std::string& value) {
 }
 
 // A YAML number, .inf and .nan included (so that they are refused as not finite, by name).
-bool number(const std::string& text, double& value) {
+// `tooLarge`: a finite number written beyond a double's range (1e400), which strtod makes
+// infinite.
+bool number(const std::string& text, double& value, bool& tooLarge) {
+    tooLarge = false;
     if (text == ".inf" || text == "+.inf" || text == ".Inf") {
         value = std::numeric_limits<double>::infinity();
         return true;
@@ -88,6 +91,7 @@ bool number(const std::string& text, double& value) {
     char* end = nullptr;
     errno = 0;
     value = std::strtod(text.c_str(), &end);
+    tooLarge = errno == ERANGE && std::isinf(value);
     return !text.empty() && end == text.c_str() + text.size();
 }
 
@@ -95,10 +99,11 @@ bool number(const std::string& text, double& value) {
 // is one. A finite number too large for a double (1e400) is refused by what was written, not
 // as the infinity strtod makes of it.
 std::string notANumber(const std::string& key, const std::string& text, double& value) {
-    if (!number(text, value)) {
+    bool tooLarge = false;
+    if (!number(text, value, tooLarge)) {
         return key + " '" + text + "' is not a number";
     }
-    if (std::isinf(value) && errno == ERANGE) {
+    if (tooLarge) {
         return key + " '" + text + "' is too large: a measurement holds at most 1.8e308";
     }
     return {};
