@@ -1,5 +1,5 @@
-// Portable POSIX (macOS; Linux built with RTF_PORTABLE_POSIX): no network namespaces, so no
-// private network: create() says so, and the run stops before it starts.
+// Windows, macOS and the portable POSIX build (Linux built with RTF_PORTABLE_POSIX): no network
+// namespaces, so no private network: create() says so, and the run stops before it starts.
 #include "platform/private_network.h"
 
 namespace robottestingframework {
@@ -7,8 +7,8 @@ namespace platform {
 
 std::unique_ptr<PrivateNetwork> PrivateNetwork::create(std::string& error) {
     error =
-        "a private network cannot be made: this build (portable POSIX, as on macOS) has no network "
-        "namespaces: a private network needs the Linux build";
+        "a private network cannot be made: this build has no network namespaces (Windows, "
+        "macOS and the portable POSIX build have none): a private network needs the Linux build";
     return nullptr;
 }
 
