@@ -243,6 +243,9 @@
     const build = () => {
       if (!box.dataset.built) { box.dataset.built = "1"; fillTest(box, t, suite); }
     };
+    // Built as the click opens it (the toggle event comes a task later: until then the row
+    // would show nothing); the toggle event still builds what opens otherwise.
+    head.addEventListener("click", build);
     box.addEventListener("toggle", () => { if (box.open) build(); });
     if (failing(t.state) && t.state !== "flaky") { build(); box.open = true; }
     return box;
@@ -331,9 +334,9 @@
           fixtureTimes(suite)));
       box.appendChild(head);
       box.appendChild(el("div", "tests"));
-      box.addEventListener("toggle", () => {
-        if (box.open && !box.dataset.built) fillSuite(box, suite);
-      });
+      const buildSuite = () => { if (!box.dataset.built) fillSuite(box, suite); };
+      head.addEventListener("click", buildSuite);  // at once, as a test's row (above)
+      box.addEventListener("toggle", () => { if (box.open) buildSuite(); });
       suitesBox.appendChild(box);
       // Failures open; so is everything a search or a filter found. Their rows are built
       // now, not on the toggle event, which comes later: what is shown is there at once.
