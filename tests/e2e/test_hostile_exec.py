@@ -257,16 +257,21 @@ def test_a_missing_interpreter_is_named(tmp_path, isolation):
 
 # --- item 12: what an exec test starts does not outlive the run ------------------------------
 
-@pytest.mark.parametrize("isolation", ISOLATIONS)
-def test_an_exec_test_dies_with_a_runner_killed_by_sigkill(tmp_path, marker, isolation):
-    path = shell(tmp_path, "touch \"$0.ready\"\nexec sleep 60\n")
+def run_until_ready(folder, path, isolation, marker):
+    """The runner started on the exec test `path`, once the test has touched PATH.ready."""
     proc = start_runner("--isolation", isolation, "--no-output", "--test", path.name,
-                        env=marked(marker), cwd=tmp_path)
-    ready = tmp_path / "check.ready"
+                        env=marked(marker), cwd=folder)
+    ready = folder / (path.name + ".ready")
     deadline = time.monotonic() + 30
     while not ready.exists():
         assert time.monotonic() < deadline and proc.poll() is None, proc.communicate()
         time.sleep(0.05)
+    return proc
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_an_exec_test_dies_with_a_runner_killed_by_sigkill(tmp_path, marker, isolation):
+    path = shell(tmp_path, "touch \"$0.ready\"\nexec sleep 60\n")
+    proc = run_until_ready(tmp_path, path, isolation, marker)
     proc.kill()  # the runner alone, not its group
     proc.communicate(timeout=30)
     assert leftover_processes(marker, grace=5.0) == []
@@ -278,13 +283,7 @@ def test_what_an_exec_test_runs_dies_with_a_runner_killed_by_sigkill(tmp_path, m
     # Issue 39, 15: `sleep` is the shell's child, not the test itself: the parent-death signal
     # reaches the shell only. With --isolation none the run's watchdog kills it.
     path = shell(tmp_path, "touch \"$0.ready\"\nsleep 60\nexit 0\n")
-    proc = start_runner("--isolation", isolation, "--no-output", "--test", path.name,
-                        env=marked(marker), cwd=tmp_path)
-    ready = tmp_path / "check.ready"
-    deadline = time.monotonic() + 30
-    while not ready.exists():
-        assert time.monotonic() < deadline and proc.poll() is None, proc.communicate()
-        time.sleep(0.05)
+    proc = run_until_ready(tmp_path, path, isolation, marker)
     time.sleep(0.2)   # the shell has started sleep
     proc.kill()  # the runner alone, not its group
     proc.communicate(timeout=30)
