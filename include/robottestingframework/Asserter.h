@@ -55,6 +55,10 @@ public:
     // false then.
     static bool attach(const std::string& path, const std::string& description,
                        FixtureManager* fixture);
+    // The same, and `stored` is the attachment the suite got (to attach it to a record of the
+    // fixture's own too: FixtureEvents::fixtureCheckFailed).
+    static bool attach(const std::string& path, const std::string& description,
+                       FixtureManager* fixture, Attachment& stored);
 };
 
 }  // namespace robottestingframework

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <memory>
 #include <mutex>
 #include <string>
 #include <vector>
@@ -37,6 +38,9 @@ public:
     void interrupt() override;
     bool succeeded() const override;
     void fixtureCollapsed(TestMessage reason) override;
+    // Kept until the fixture's tearDown returns, then reported as a failed record of its own.
+    bool fixtureCheckFailed(const std::string& name, const TestMessage& failure,
+                            const Attachment* attachment) override;
 
     // The tests after the current one are skipped with `reason` (a critical error).
     void skipRemaining(const TestMessage& reason);
@@ -52,6 +56,7 @@ private:
     bool setupFixtures(TestResult& result);
     void tearDownFixtures(TestResult& result, std::size_t count);
     bool checkFixtures(TestResult& result);
+    void reportFixtureChecks(TestResult& result);
     void reportRemaining(TestResult& result, std::size_t from, const TestMessage& reason,
                          bool interrupted);
 
@@ -66,6 +71,16 @@ private:
     TestMessage failure_;
     TestMessage skipReason_;
     bool skipRest_ = false;
+    // Failed checks of a fixture's tear-down (fixtureCheckFailed), waiting to be reported, and
+    // the records they became (alive as long as the run's listeners may name them).
+    struct FixtureCheck {
+        std::string name;
+        TestMessage failure;
+        bool attached = false;
+        Attachment attachment;
+    };
+    std::vector<FixtureCheck> pendingChecks_;
+    std::vector<std::unique_ptr<Test>> checkRecords_;
 };
 
 }  // namespace robottestingframework

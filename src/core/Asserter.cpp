@@ -180,6 +180,12 @@ void Asserter::testAttach(const std::string& path, const std::string& descriptio
 
 bool Asserter::attach(const std::string& path, const std::string& description,
                       FixtureManager* fixture) {
+    Attachment stored;
+    return attach(path, description, fixture, stored);
+}
+
+bool Asserter::attach(const std::string& path, const std::string& description,
+                      FixtureManager* fixture, Attachment& stored) {
     TestResult* result = fixture ? fixture->getResult() : nullptr;
     if (result == nullptr) {
         printOrphan("fixture attachment", TestMessage(path));
@@ -192,6 +198,7 @@ bool Asserter::attach(const std::string& path, const std::string& description,
         return false;
     }
     result->addAttachment(fixture->getOwner(), attachment);
+    stored = attachment;
     return true;
 }
 

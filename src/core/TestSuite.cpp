@@ -58,6 +58,15 @@ private:
     std::string last_;
 };
 
+// A failed check of a fixture's tear-down (a process that did not stop cleanly), reported as a
+// test of its own: every report shows it as a record of its own.
+class FixtureCheckRecord : public Test {
+public:
+    explicit FixtureCheckRecord(const std::string& name) : Test(name) {}
+    void run(TestResult& /*result*/) override {}
+    bool succeeded() const override { return false; }
+};
+
 }  // namespace
 
 TestSuite::TestSuite(std::string name) : Test(std::move(name)) {}
@@ -156,11 +165,46 @@ bool TestSuite::setupFixtures(TestResult& result) {
     return true;
 }
 
+bool TestSuite::fixtureCheckFailed(const std::string& name, const TestMessage& failure,
+                                   const Attachment* attachment) {
+    FixtureCheck check;
+    check.name = name;
+    check.failure = failure;
+    if (attachment != nullptr) {
+        check.attached = true;
+        check.attachment = *attachment;
+    }
+    std::lock_guard<std::mutex> lock(mutex_);
+    pendingChecks_.push_back(std::move(check));
+    return true;
+}
+
+void TestSuite::reportFixtureChecks(TestResult& result) {
+    std::vector<FixtureCheck> checks;
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        checks.swap(pendingChecks_);
+    }
+    for (const FixtureCheck& check : checks) {
+        successful_ = false;
+        checkRecords_.push_back(std::make_unique<FixtureCheckRecord>(check.name));
+        const Test* record = checkRecords_.back().get();
+        result.startTest(record);
+        result.addFailure(record, check.failure);
+        if (check.attached) {
+            result.addAttachment(record, check.attachment);
+        }
+        result.endTest(record);
+    }
+}
+
 void TestSuite::tearDownFixtures(TestResult& result, std::size_t count) {
     for (std::size_t k = count; k > 0; --k) {
         FixtureManager* fixture = fixtures_[k - 1];
         std::string why;
-        if (!guardedFixtureCall([fixture] { fixture->tearDown(); }, why)) {
+        const bool done = guardedFixtureCall([fixture] { fixture->tearDown(); }, why);
+        reportFixtureChecks(result);
+        if (!done) {
             successful_ = false;
             result.addError(this, TestMessage("fixture " + fixtureName(fixture, k - 1) +
                                               " tearDown failed: " + why));
@@ -218,6 +262,7 @@ void TestSuite::run(TestResult& result) {
         skipReason_.clear();
         skipRest_ = false;
         collapsed_ = false;
+        pendingChecks_.clear();
     }
     result.startTestSuite(this);
 

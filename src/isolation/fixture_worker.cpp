@@ -1,4 +1,5 @@
 #include <exception>
+#include <memory>
 #include <stdexcept>
 
 #include <robottestingframework/Arguments.h>
@@ -33,6 +34,19 @@ public:
         record.kind = WireKind::FixtureCollapsed;
         record.message = reason;
         writer_.send(record);
+    }
+    // Sent before tearDown's reply: the runner's side hands it to its suite.
+    bool fixtureCheckFailed(const std::string& name, const TestMessage& failure,
+                            const Attachment* attachment) override {
+        WireRecord record;
+        record.kind = WireKind::FixtureCheckFailed;
+        record.name = name;
+        record.message = failure;
+        if (attachment != nullptr) {
+            record.attachment = std::make_shared<const Attachment>(*attachment);
+        }
+        writer_.send(record);
+        return true;
     }
 
 private:

@@ -8,7 +8,7 @@ namespace isolation {
 
 namespace {
 
-constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::Described);
+constexpr std::uint8_t kLastKind = static_cast<std::uint8_t>(WireKind::FixtureCheckFailed);
 constexpr std::uint8_t kLastEvent = static_cast<std::uint8_t>(ResultEvent::lastKind);
 
 void putU32(std::string& out, std::uint32_t value) {

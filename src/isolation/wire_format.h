@@ -26,16 +26,18 @@ namespace robottestingframework {
 namespace isolation {
 
 enum class WireKind : std::uint8_t {
-    Event = 1,         // worker → runner: a ResultEvent of any kind (eventRecord, eventOf)
-    CriticalError,     // worker → runner: the test raised a critical error (`message`)
-    FixtureCollapsed,  // fixture worker → runner: the fixture's world is gone (`message`)
-    Reply,             // fixture worker → runner: a call returned `flag` (`message`: why not)
-    Finished,          // worker → runner: the test ended normally; the worker exits now
-    Started,           // fork server → runner: the worker's pid is `number`
-    Exited,            // fork server → runner: the worker ended; `number` is its wait status
-    Call,              // runner → fixture worker: `name` is setup/check/tearDown; `message`
-                       // holds setup's argv joined by '\0'
-    Described,         // worker → runner: the loaded test's `name` and description (`message`)
+    Event = 1,           // worker → runner: a ResultEvent of any kind (eventRecord, eventOf)
+    CriticalError,       // worker → runner: the test raised a critical error (`message`)
+    FixtureCollapsed,    // fixture worker → runner: the fixture's world is gone (`message`)
+    Reply,               // fixture worker → runner: a call returned `flag` (`message`: why not)
+    Finished,            // worker → runner: the test ended normally; the worker exits now
+    Started,             // fork server → runner: the worker's pid is `number`
+    Exited,              // fork server → runner: the worker ended; `number` is its wait status
+    Call,                // runner → fixture worker: `name` is setup/check/tearDown; `message`
+                         // holds setup's argv joined by '\0'
+    Described,           // worker → runner: the loaded test's `name` and description (`message`)
+    FixtureCheckFailed,  // fixture worker → runner: a record of the fixture's own failed at its
+                         // tear-down (`name`, `message`, its log as `attachment`)
 };
 
 struct WireRecord {

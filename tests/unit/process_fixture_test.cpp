@@ -177,3 +177,118 @@ TEST(ProcessFixture, InASuiteASetupFailureSkipsEveryTestWithTheWholeStory) {
     EXPECT_TRUE(contains(events, "| binding")) << events;
     EXPECT_TRUE(contains(events, "last seen: Connection refused")) << events;
 }
+
+// --- Checked shutdowns: each process that does not stop cleanly is a record of its own. -------
+
+namespace {
+
+const TestRecord* recordNamed(const TestResultCollector& collector, const std::string& name) {
+    for (const SuiteRecord& suite : collector.suites()) {
+        for (const TestRecord& test : suite.tests) {
+            if (test.name == name) {
+                return &test;
+            }
+        }
+    }
+    return nullptr;
+}
+
+std::string messages(const TestRecord& record) {
+    std::string out;
+    for (const ResultEvent& event : record.events) {
+        out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(ProcessFixture, InASuiteAProcessThatDoesNotStopCleanlyIsARecordOfItsOwn) {
+    const auto folder = freshFolder();
+    const auto world = writeFile(
+        folder / "world.xml",
+        "<world name='lab' logdir='logs'>\n"
+        "<process name='server' command=\"/bin/sh -c 'trap &quot;echo saving state; exit "
+        "1&quot; INT; echo ready; while :; do sleep 0.02; done'\">\n"
+        "<ready><output>ready</output></ready>\n<stop signal='SIGINT' grace='3s'/></process>\n"
+        "<process name='clean' command=\"/bin/sh -c 'echo ready; exec sleep 30'\">"
+        "<ready><output>ready</output></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    TestSuite suite("with a world");
+    suite.addFixtureManager(&fixture);
+    rtf_test::LambdaTest only("only");
+    suite.addTest(&only);
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    suite.run(result);
+    EXPECT_FALSE(suite.succeeded());
+    const std::string events = allEvents(collector);
+    const TestRecord* test = recordNamed(collector, "only");
+    ASSERT_NE(test, nullptr) << events;
+    EXPECT_EQ(test->status, TestStatus::Passed);
+    // The server's stop, and only its: the clean one has no record.
+    const TestRecord* stop = recordNamed(collector, "world 'lab': stop of 'server'");
+    ASSERT_NE(stop, nullptr) << events;
+    EXPECT_EQ(stop->status, TestStatus::Failed);
+    EXPECT_EQ(recordNamed(collector, "world 'lab': stop of 'clean'"), nullptr) << events;
+    const std::string said = messages(*stop);
+    EXPECT_TRUE(contains(said,
+                         "'server' exited with status 1 after SIGINT; a clean stop is: "
+                         "status 0 or SIGINT, within 3 s"))
+        << said;
+    EXPECT_TRUE(contains(said, "| saving state")) << said;  // the last lines of its log
+    EXPECT_TRUE(contains(said, "server.log (log of process server)")) << said;  // attached
+    // The clean stop is said, as --verbose shows it.
+    EXPECT_TRUE(contains(events, "'clean' stopped after")) << events;
+    EXPECT_TRUE(contains(events, "(clean)")) << events;
+    // Not also a tear-down error of the suite.
+    EXPECT_FALSE(contains(events, "tearDown failed")) << events;
+}
+
+TEST(ProcessFixture, AProcessThatCollapsedIsNotRecordedAgainWhenTheWorldStops) {
+    const auto folder = freshFolder();
+    const auto world =
+        writeFile(folder / "world.xml",
+                  "<world name='lab' logdir='logs'>\n<process name='sim' command=\"/bin/sh -c "
+                  "'echo ready; sleep 0.2; exit 1'\">\n"
+                  "<ready><output>ready</output></ready></process></world>");
+    ProcessFixture fixture(world.string());
+    TestSuite suite("with a world");
+    suite.addFixtureManager(&fixture);
+    rtf_test::LambdaTest first("first",
+                               [] { std::this_thread::sleep_for(std::chrono::seconds(2)); });
+    suite.addTest(&first);
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    suite.run(result);
+    EXPECT_FALSE(suite.succeeded());
+    const std::string events = allEvents(collector);
+    EXPECT_TRUE(contains(events, "process 'sim' exited with status 1")) << events;
+    EXPECT_EQ(recordNamed(collector, "world 'lab': stop of 'sim'"), nullptr) << events;
+}
+
+TEST(ProcessFixture, WithoutASuiteToTakeTheRecordTheTearDownFailsWithIt) {
+    const auto folder = freshFolder();
+    const auto world = writeFile(
+        folder / "world.xml",
+        "<world name='lab' logdir='logs'>\n<process name='stubborn' command=\"/bin/sh -c 'trap "
+        "&quot;&quot; TERM; echo ready; while :; do sleep 0.02; done'\">\n"
+        "<ready><output>ready</output></ready><stop grace='200ms'/></process></world>");
+    ProcessFixture fixture(world.string());
+    CollapseRecorder recorder;  // takes collapses only
+    fixture.setDispatcher(&recorder);
+    ASSERT_TRUE(fixture.setup(0, nullptr));
+    try {
+        fixture.tearDown();
+        FAIL() << "the tear-down should have failed";
+    } catch (const TestErrorException& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(contains(what,
+                             "'stubborn' did not stop within 200 ms of SIGTERM: killed "
+                             "with SIGKILL; a clean stop is: status 0 or SIGTERM, within "
+                             "200 ms"))
+            << what;
+    }
+}

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <thread>
 
@@ -436,4 +437,64 @@ TEST(ProcessSupervisor, ProcessesDieWithTheProcessThatSupervisesThem) {
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
     EXPECT_TRUE(gone) << "pid " << pid << " outlived the process that supervised it";
+}
+
+// --- Checked shutdowns ----------------------------------------------------------------------
+
+TEST(ProcessSupervisor, AStopThatEndsAsTheWorldFileSaysIsClean) {
+    World world = worldOf(
+        "<process name='default' command=\"/bin/sh -c 'echo ready; exec sleep 30'\">"
+        "<ready><output>ready</output></ready></process>\n"
+        "<process name='one' command=\"/bin/sh -c 'trap &quot;exit 1&quot; INT; echo ready; "
+        "while :; do sleep 0.02; done'\"><ready><output>ready</output></ready>"
+        "<stop signal='SIGINT' grace='3s' exit='1'/></process>\n"
+        "<process name='at once' command=\"/bin/sh -c 'echo ready; exec sleep 30'\">"
+        "<ready><output>ready</output></ready><stop grace='0s' exit='0'/></process>");
+    ProcessSupervisor supervisor(world);
+    Reports reports;
+    std::string failure;
+    ASSERT_TRUE(supervisor.start(reports.reporter(), failure)) << failure;
+    supervisor.stop(reports.reporter());
+    EXPECT_TRUE(supervisor.stopFailures().empty()) << reports.all();
+    EXPECT_TRUE(reports.any("it was killed by signal SIGTERM (clean)")) << reports.all();
+    EXPECT_TRUE(reports.any("it exited with status 1 (clean)")) << reports.all();
+    EXPECT_TRUE(reports.any("'at once' was killed at once (grace 0)")) << reports.all();
+}
+
+TEST(ProcessSupervisor, AStopThatCrashesOrExitsOtherwiseIsAFailureWithItsLastLines) {
+    World world = worldOf(
+        "<process name='exits 1' command=\"/bin/sh -c 'trap &quot;echo bye; exit 1&quot; INT; "
+        "echo ready; while :; do sleep 0.02; done'\"><ready><output>ready</output></ready>"
+        "<stop signal='SIGINT' grace='3s'/></process>\n"
+        "<process name='aborts' command=\"/bin/sh -c 'ulimit -c 0; trap &quot;echo aborting; "
+        "kill -ABRT $$&quot; TERM; echo ready; while :; do sleep 0.02; done'\">"
+        "<ready><output>ready</output></ready></process>\n"
+        "<process name='stubborn' command=\"/bin/sh -c 'trap &quot;&quot; TERM; echo ready; "
+        "while :; do sleep 0.02; done'\"><ready><output>ready</output></ready>"
+        "<stop grace='200ms'/></process>");
+    ProcessSupervisor supervisor(world);
+    Reports reports;
+    std::string failure;
+    ASSERT_TRUE(supervisor.start(reports.reporter(), failure)) << failure;
+    supervisor.stop(reports.reporter());
+    const auto failures = supervisor.stopFailures();
+    ASSERT_EQ(failures.size(), 3u) << reports.all();
+    // Stopped last started first; each says what happened and what was expected.
+    std::map<std::string, ProcessSupervisor::StopFailure> byName;
+    for (const auto& f : failures) {
+        byName[f.process->name] = f;
+    }
+    EXPECT_EQ(byName["exits 1"].what,
+              "exited with status 1 after SIGINT; a clean stop is: status 0 or SIGINT, within 3 s");
+    EXPECT_TRUE(contains(byName["exits 1"].story, "| bye")) << byName["exits 1"].story;
+    EXPECT_TRUE(contains(byName["aborts"].what,
+                         "(SIGABRT) after SIGTERM; a clean stop is: "
+                         "status 0 or SIGTERM, within 5 s") ||
+                contains(byName["aborts"].what, "was killed by signal SIGABRT after SIGTERM"))
+        << byName["aborts"].what;
+    EXPECT_TRUE(contains(byName["aborts"].story, "| aborting")) << byName["aborts"].story;
+    EXPECT_EQ(byName["stubborn"].what,
+              "did not stop within 200 ms of SIGTERM: killed with SIGKILL; a clean stop is: "
+              "status 0 or SIGTERM, within 200 ms");
+    EXPECT_TRUE(reports.any("(not a clean stop)")) << reports.all();
 }

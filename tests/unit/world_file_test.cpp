@@ -390,3 +390,76 @@ TEST(Signals, ReadsNamesAndNumbers) {
     ASSERT_TRUE(parseSignal("winch", signal));  // every name platform::signalName knows
     EXPECT_EQ(signal, SIGWINCH);
 }
+
+// --- <stop exit="...">: what a clean stop is (docs/process-fixture.md, "Checked shutdowns") ---
+
+namespace {
+
+CleanStop cleanStopOf(const std::string& stop) {
+    Parsed parsed =
+        parse("<world>\n<process name='a' command='true'>\n" + stop + "\n</process>\n</world>");
+    EXPECT_TRUE(parsed.ok) << parsed.error;
+    return parsed.ok ? parsed.world.processes[0].cleanStop : CleanStop();
+}
+
+}  // namespace
+
+TEST(CleanStop, DefaultsToStatusZeroOrTheStopSignal) {
+    const CleanStop plain = cleanStopOf("");
+    EXPECT_FALSE(plain.any);
+    EXPECT_FALSE(plain.given);
+    EXPECT_EQ(plain.statuses, std::vector<int>{0});
+    EXPECT_EQ(plain.signals, std::vector<int>{SIGTERM});
+    EXPECT_EQ(plain.describe(), "status 0 or SIGTERM");
+
+    const CleanStop interrupt = cleanStopOf("<stop signal='SIGINT' grace='3s'/>");
+    EXPECT_EQ(interrupt.statuses, std::vector<int>{0});
+    EXPECT_EQ(interrupt.signals, std::vector<int>{SIGINT});
+    EXPECT_TRUE(interrupt.acceptsStatus(0));
+    EXPECT_TRUE(interrupt.acceptsSignal(SIGINT));
+    EXPECT_FALSE(interrupt.acceptsStatus(1));
+    EXPECT_FALSE(interrupt.acceptsSignal(SIGTERM));
+    EXPECT_FALSE(interrupt.acceptsSignal(SIGABRT));
+}
+
+TEST(CleanStop, ReadsStatusesAndSignalNames) {
+    const CleanStop stop = cleanStopOf("<stop signal='SIGINT' exit='0, 130, SIGINT, term, HUP'/>");
+    EXPECT_TRUE(stop.given);
+    EXPECT_EQ(stop.statuses, (std::vector<int>{0, 130}));
+    EXPECT_EQ(stop.signals, (std::vector<int>{SIGINT, SIGTERM, SIGHUP}));
+    EXPECT_EQ(stop.describe(), "statuses 0, 130, SIGINT, SIGTERM or SIGHUP");
+    // The list replaces the default: status 1 alone, and the stop signal is no longer clean.
+    const CleanStop one = cleanStopOf("<stop signal='SIGINT' exit='1'/>");
+    EXPECT_EQ(one.statuses, std::vector<int>{1});
+    EXPECT_TRUE(one.signals.empty());
+    EXPECT_FALSE(one.acceptsStatus(0));
+    EXPECT_FALSE(one.acceptsSignal(SIGINT));
+    EXPECT_EQ(one.describe(), "status 1");
+    // Bare integers are statuses, never signals: 15 is the status 15.
+    const CleanStop fifteen = cleanStopOf("<stop exit='15'/>");
+    EXPECT_EQ(fifteen.statuses, std::vector<int>{15});
+    EXPECT_FALSE(fifteen.acceptsSignal(SIGTERM));
+}
+
+TEST(CleanStop, AnyAcceptsEveryEnding) {
+    const CleanStop stop = cleanStopOf("<stop exit=' ANY '/>");
+    EXPECT_TRUE(stop.any);
+    EXPECT_TRUE(stop.acceptsStatus(3));
+    EXPECT_TRUE(stop.acceptsSignal(SIGSEGV));
+    EXPECT_EQ(stop.describe(), "any ending");
+}
+
+TEST(CleanStop, ReportsAnUnreadableExpectationWithFileAndLine) {
+    const std::string head = "<world>\n<process name='a' command='true'>\n";
+    expectError(head + "<stop exit='zero'/></process></world>", 3,
+                "<stop exit=\"zero\">: expected a comma-separated list of exit statuses (0-255) "
+                "and signal names (SIGINT, TERM), or 'any'; 'zero' is neither");
+    expectError(head + "<stop exit='256'/></process></world>", 3, "'256' is over 255");
+    expectError(head + "<stop exit='0,,1'/></process></world>", 3, "an empty item");
+    expectError(head + "<stop exit=''/></process></world>", 3, "the list is empty");
+    expectError(head + "<stop exit='-1'/></process></world>", 3, "'-1' is neither");
+    expectError(head + "<stop exit='SIGNOPE'/></process></world>", 3, "'SIGNOPE' is neither");
+    expectError(head + "<stop exit='any, 0'/></process></world>", 3, "'any' alone");
+    expectError(head + "\n<stop signal='INT'\n exit='0 1'/></process></world>", 4,
+                "'0 1' is neither");
+}

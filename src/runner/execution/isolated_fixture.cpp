@@ -69,8 +69,9 @@ void IsolatedFixture::watch() {
                     replied_ = true;
                 } else if (record.kind == WireKind::FixtureCollapsed) {
                     collapses.push_back(record.message);
-                } else if (record.kind == WireKind::Event) {
-                    events_.push_back(std::move(record));
+                } else if (record.kind == WireKind::Event ||
+                           record.kind == WireKind::FixtureCheckFailed) {
+                    events_.push_back(std::move(record));  // in order, on the caller's thread
                 }
             }
             std::string text = worker_->output().take();
@@ -113,11 +114,22 @@ void IsolatedFixture::flush() {
         output.swap(output_);
     }
     TestResult* result = getResult();
+    FixtureEvents* dispatcher = getDispatcher();
+    for (const WireRecord& record : events) {
+        if (record.kind == WireKind::FixtureCheckFailed) {
+            // A record of its own in the suite; said with tearDown's failure when not taken.
+            if (dispatcher == nullptr ||
+                !dispatcher->fixtureCheckFailed(record.name, record.message,
+                                                record.attachment.get())) {
+                untakenChecks_ += (untakenChecks_.empty() ? "" : "\n") + record.name + ": " +
+                                  record.message.toString();
+            }
+        } else if (result != nullptr) {
+            relayEvent(record, getOwner(), *result);
+        }
+    }
     if (result == nullptr) {
         return;
-    }
-    for (const WireRecord& record : events) {
-        relayEvent(record, getOwner(), *result);
     }
     if (!output.empty()) {
         result->addOutput(getOwner(), output);
@@ -289,6 +301,11 @@ void IsolatedFixture::tearDown() {
     flush();
     if (failed) {
         std::rethrow_exception(failed);
+    }
+    if (!untakenChecks_.empty()) {
+        std::string checks;
+        checks.swap(untakenChecks_);
+        throw TestErrorException(TestMessage(checks));
     }
 }
 

@@ -81,6 +81,9 @@ private:
     bool interrupted_ = false;  // interruptCall() during it
     bool quitting_ = false;
     std::string failure_;
+    // Failed checks of its tear-down the suite did not take (FixtureEvents::fixtureCheckFailed
+    // returned false): tearDown throws them (caller's thread only).
+    std::string untakenChecks_;
 };
 
 }  // namespace isolation
