@@ -159,3 +159,12 @@ TEST(RerunReport, ATestOfAnotherSuiteWithTheSameNameIsNotKept) {
     keepFailedTests(suites, {{"hand", "grip"}, {"", "grip"}});
     EXPECT_TRUE(suites.empty());
 }
+
+TEST(RerunReport, AFailedStopOfItsWorldRunsTheWholeSuiteAgain) {
+    std::vector<SuiteSpec> suites{suite("arm", {test("reach"), test("grip")}),
+                                  suite("leg", {test("walk")})};
+    keepFailedTests(suites, {{"arm", "world 'lab': stop of 'server'"}});
+    EXPECT_EQ(namesOf(suites), (std::vector<std::string>{"arm/reach", "arm/grip"}));
+    EXPECT_TRUE(isStopRecord("world 'lab': stop of 'server'"));
+    EXPECT_FALSE(isStopRecord("world lab"));
+}

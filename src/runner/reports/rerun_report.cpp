@@ -34,13 +34,26 @@ std::vector<FailedTest> parseFailedTests(const std::string& text, const std::str
     return failedTests(parseReport("--rerun-failed", text, path));
 }
 
+bool isStopRecord(const std::string& name) {
+    return name.rfind("world '", 0) == 0 && name.find("': stop of '") != std::string::npos &&
+           name.back() == '\'';
+}
+
 void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed) {
     std::vector<SuiteSpec> chosen;
     for (auto& suite : suites) {
+        // A process of its world that did not stop cleanly: the whole suite runs again, and
+        // its world with it.
+        const bool whole =
+            !suite.tests.empty() &&
+            std::any_of(failed.begin(), failed.end(), [&](const FailedTest& other) {
+                return isStopRecord(other.test) &&
+                       testId(suite, suite.tests.front()).rfind(other.suite + "/", 0) == 0;
+            });
         std::vector<TestSpec> tests;
         for (auto& test : suite.tests) {
             const bool named =
-                std::any_of(failed.begin(), failed.end(), [&](const FailedTest& other) {
+                whole || std::any_of(failed.begin(), failed.end(), [&](const FailedTest& other) {
                     // Reports name a test by its id (model/test_id.h), never by the name it
                     // gives itself, so a renamed, repeated or moved test is found again.
                     return testId(suite, test) == other.suite + "/" + other.test;

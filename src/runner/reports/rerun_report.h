@@ -26,8 +26,13 @@ std::vector<FailedTest> readFailedTests(const std::string& path);
 std::vector<FailedTest> parseFailedTests(const std::string& text, const std::string& path);
 
 // Keeps in `suites` only the tests `failed` names (by their id, model/test_id.h),
-// and only the suites left with a test, whose fixtures then run as usual.
+// and only the suites left with a test, whose fixtures then run as usual. A failed stop record
+// of a suite's world ("world 'lab': stop of 'server'", isStopRecord) keeps the whole suite.
 void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed);
+
+// The name of the record of a world process that did not stop cleanly (the process fixture's
+// "world 'NAME': stop of 'PROCESS'", docs/process-fixture.md).
+bool isStopRecord(const std::string& name);
 
 }  // namespace runner
 }  // namespace robottestingframework
