@@ -75,8 +75,8 @@ def lab(folder, server_args, stop):
 
 def run(folder, mark, isolation, *more):
     return run_runner("--isolation", isolation, "-s", "suite.xml", "-o", "junit:r.xml",
-                      "-o", "tap:r.tap", "-o", "json:r.json", "-o", "text:r.txt", *more,
-                      cwd=folder, env={MARK: mark}, timeout=90)
+                      "-o", "tap:r.tap", "-o", "json:r.json", "-o", "text:r.txt",
+                      "-o", "html:r.html", *more, cwd=folder, env={MARK: mark}, timeout=90)
 
 
 def junit_cases(folder):
@@ -118,6 +118,9 @@ def expect_stop_record(folder, r, words):
         assert w in tests[RECORD]["message"], tests[RECORD]
     attachments = json.dumps(tests[RECORD].get("attachments", []))
     assert "server.log" in attachments, tests[RECORD]
+    # HTML: a row of its own, failed.
+    html = (folder / "r.html").read_text()
+    assert f'"name":"{RECORD}","state":"failed"' in html, html[:2000]
     # Text output and console.
     txt = (folder / "r.txt").read_text()
     assert RECORD in txt and words[0] in txt, txt
