@@ -391,3 +391,53 @@ TEST(TestSuite, Rtf2ListenerOverridingTheTestFormsHearsTheSuite) {
     suite.run(result);
     EXPECT_EQ(listener.heard, (Lines{"start s", "end s"}));
 }
+
+namespace {
+
+// A fixture whose tear-down finds something wrong with its world and says it as a record.
+class CheckingFixture : public FixtureManager {
+public:
+    void tearDown() override {
+        Attachment log;
+        log.path = "rtf-attachments/1-server.log";
+        log.description = "log of process server";
+        taken = getDispatcher()->fixtureCheckFailed(
+            "world 'lab': stop of 'server'", TestMessage("'server' exited with status 1"), &log);
+    }
+    bool taken = false;
+};
+
+}  // namespace
+
+TEST(TestSuite, AFailedCheckOfAFixtureTearDownIsARecordOfItsOwnAfterTheTests) {
+    TestSuite suite("lab");
+    CheckingFixture fixture;
+    suite.addFixtureManager(&fixture);
+    LambdaTest only("only");
+    suite.addTest(&only);
+    SuiteRun run;
+    suite.run(run.result);
+    EXPECT_TRUE(fixture.taken);
+    EXPECT_FALSE(suite.succeeded());
+    ASSERT_EQ(run.suite().tests.size(), 2u);
+    EXPECT_EQ(run.test(0).name, "only");
+    EXPECT_EQ(run.test(0).status, TestStatus::Passed);
+    const TestRecord& record = run.test(1);
+    EXPECT_EQ(record.name, "world 'lab': stop of 'server'");
+    EXPECT_EQ(record.status, TestStatus::Failed);
+    ASSERT_EQ(record.events.size(), 2u);
+    EXPECT_EQ(record.events[0].message.getMessage(), "'server' exited with status 1");
+    ASSERT_TRUE(record.events[1].attachment);
+    EXPECT_EQ(record.events[1].attachment->path, "rtf-attachments/1-server.log");
+    // Not also an error of the suite itself.
+    EXPECT_TRUE(run.suite().events.empty());
+}
+
+TEST(TestSuite, ADispatcherOfItsOwnMayRefuseAFixtureCheck) {
+    // FixtureEvents' default: not taken, so the fixture says it otherwise.
+    class Collapses : public FixtureEvents {
+    public:
+        void fixtureCollapsed(TestMessage) override {}
+    } collapses;
+    EXPECT_FALSE(collapses.fixtureCheckFailed("x", TestMessage("y"), nullptr));
+}

@@ -269,3 +269,28 @@ TEST(WireFormat, AnUnknownPayloadIsCorrupt) {
     WireRecord record;
     EXPECT_EQ(decoder.next(record), WireDecoder::Status::Corrupt);
 }
+
+TEST(WireFormat, AFixtureCheckTravelsWithItsNameMessageAndLog) {
+    WireRecord record;
+    record.kind = WireKind::FixtureCheckFailed;
+    record.name = "world 'lab': stop of 'server'";
+    record.message = TestMessage("'server' exited with status 1", "", "/lab/world.xml", 7);
+    robottestingframework::Attachment log;
+    log.path = "rtf-attachments/2-server.log";
+    log.absolutePath = "/lab/rtf-attachments/2-server.log";
+    log.description = "log of process server";
+    log.originalName = "server.log";
+    log.size = 76;
+    record.attachment = std::make_shared<const robottestingframework::Attachment>(log);
+    WireDecoder decoder;
+    decoder.feed(encode(record));
+    WireRecord back;
+    ASSERT_EQ(decoder.next(back), WireDecoder::Status::Record);
+    EXPECT_EQ(back.kind, WireKind::FixtureCheckFailed);
+    EXPECT_EQ(back.name, record.name);
+    EXPECT_EQ(back.message.getMessage(), "'server' exited with status 1");
+    EXPECT_EQ(back.message.getSourceLineNumber(), 7u);
+    ASSERT_TRUE(back.attachment);
+    EXPECT_EQ(back.attachment->absolutePath, log.absolutePath);
+    EXPECT_EQ(back.attachment->size, 76u);
+}

@@ -4,6 +4,7 @@ then serves until it is stopped. What it does on SIGINT or SIGTERM is its argume
   abort     says so, then aborts (dies by SIGABRT; no core file)
   ignore    ignores both (it outlives any grace and is killed with SIGKILL)
   default   nothing of its own: the signal's default action (Python dies by SIGINT on SIGINT)
+  die S N   (before any stop) exits with status N after S seconds, saying so first
 """
 import os
 import resource
@@ -30,6 +31,10 @@ def main():
         elif mode == "ignore":
             signal.signal(number, signal.SIG_IGN)
     print("ready", flush=True)
+    if mode == "die":
+        time.sleep(float(sys.argv[2]))
+        print(f"giving up: exiting with status {sys.argv[3]}", flush=True)
+        sys.exit(int(sys.argv[3]))
     while True:
         time.sleep(1)
 
