@@ -166,3 +166,13 @@ TEST(ProgressLine, OnTheOrderedStreamTheConsolesLinesComeBetweenErasingAndDrawin
               "\r\033[Kstart grasp\n[2/2] arm :: grasp (T), 1 failed"
               "\r\033[K");  // endTestRunner: erased, not drawn again
 }
+
+TEST(ProgressLine, ARecordThePlanDidNotKnowNeverShowsMoreStartedThanPlanned) {
+    // A world process that did not stop cleanly is a record of its own after the suite's tests.
+    Drawn line(planned(1));
+    rtf_test::LambdaTest reach("reach"), stop("world 'lab': stop of 'server'");
+    line->testStarted(&reach, "arm", "reach");
+    line->testEnded(&reach);
+    line->testStarted(&stop, "arm", "world 'lab': stop of 'server'");
+    EXPECT_EQ(timeless(line->text()), "[2/2] arm :: world 'lab': stop of 'server' (T)");
+}

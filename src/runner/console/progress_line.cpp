@@ -226,7 +226,9 @@ std::string ProgressLine::eta(Clock::time_point now) const {
 std::string ProgressLine::text() {
     std::lock_guard<std::recursive_mutex> lock(mutex_);
     const Clock::time_point now = Clock::now();
-    std::string line = "[" + std::to_string(started_) + "/" + std::to_string(settings_.tests) + "]";
+    // A record the plan did not know (a world process's failed stop) counts in N too.
+    const std::size_t total = std::max<std::size_t>(started_, settings_.tests);
+    std::string line = "[" + std::to_string(started_) + "/" + std::to_string(total) + "]";
     if (!order_.empty()) {
         const Running& latest = running_.at(order_.back());
         line += " " + latest.suite + " :: " + latest.name + " (" +
