@@ -113,6 +113,25 @@ def test_in_the_machines_network_the_check_sees_the_other_world_and_fails(tmp_pa
     assert not leftover_processes(marker)
 
 
+def test_in_private_networks_cyclone_dds_needs_no_configuration(tmp_path, marker):
+    # The suite and its world without any Cyclone DDS configuration (no CYCLONEDDS_URI, no
+    # --config): a private network's loopback has multicast on, Cyclone DDS finds its peer there.
+    suites = write_suites(tmp_path)
+    world = (tmp_path / "world.xml").read_text()
+    (tmp_path / "world.xml").write_text(world.replace(
+        "<env name=\"CYCLONEDDS_URI\">${cyclonedds}</env>", ""))
+    for copy in COPIES:
+        suite = (tmp_path / copy).read_text()
+        (tmp_path / copy).write_text(suite.replace(" --config ${cyclonedds}", ""))
+    assert "CYCLONEDDS_URI" not in (tmp_path / "world.xml").read_text()
+    assert "--config" not in (tmp_path / COPIES[0]).read_text()
+    env = {key: value for key, value in os.environ.items() if key != "CYCLONEDDS_URI"}
+    result = run_runner(*suites, "-j", "3", "--network", "private", "-v", "-o", "json:r.json",
+                        cwd=tmp_path, env={**env, **marked(marker)}, inherit=False)
+    check_isolated_run(result, tmp_path)
+    assert not leftover_processes(marker)
+
+
 def as_nobody(folder):
     """The test's folder, and the folders above it up to pytest's base folder, open to the
     user nobody (uid 65534); its files nobody's."""
