@@ -19,6 +19,7 @@ packages=(
     python3-yaml libsqlite3-dev libelf-dev libre2-dev
     gcovr tini ccache
     clang libclang-rt-14-dev
+    cyclonedds-dev cyclonedds-tools libddsc0debian
 )
 # Optional: the Windows job cross-builds with MinGW-w64 (the posix flavour: C++ threads), runs
 # under Wine and fetches pugixml's, Lua's and SQLite's sources with `apt-get source`
