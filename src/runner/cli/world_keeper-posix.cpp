@@ -154,7 +154,9 @@ public:
          std::shared_ptr<const platform::PrivateNetwork> network)
         : Test("world"), state_(state), suite_(suite), network_(std::move(network)) {}
 
-    void run(TestResult&) override {
+    void run(TestResult& result) override {
+        // In the suite's events, after its set-up's: what --world-down prints starts here.
+        result.startTest(this);
         state_.up(network_);
         bool collapsed = false;
         while (!state_.stopping()) {
@@ -173,6 +175,7 @@ public:
                 }
             }
         }
+        result.endTest(this);
     }
     // Called under the suite's lock: only flags.
     void interrupt() override {
@@ -189,7 +192,7 @@ private:
 };
 
 // What a run would print about the world: its errors and its fixtures' reports, from the
-// suite's set-up on (`since`) or from its tear-down on.
+// suite's set-up on, or once it is up (the Hold test started) for its tear-down.
 class WorldErrors : public TestListener {
 public:
     void addError(const Test*, TestMessage message) override { add("error", message); }
@@ -198,6 +201,17 @@ public:
         std::lock_guard<std::mutex> lock(mutex_);
         all_ += "  " + message.toString() + "\n";
         std::fprintf(stderr, "%s\n", message.toString().c_str());
+    }
+    explicit WorldErrors(KeeperState& state) : state_(state) {}
+    // The world is up (Hold started): what the set-up said is not the tear-down's. (A set-up
+    // that failed reports Hold skipped, with a startTest too.)
+    void startTest(const Test*) override {
+        if (!state_.wasUp()) {
+            return;
+        }
+        std::lock_guard<std::mutex> lock(mutex_);
+        all_.clear();
+        failed_ = false;
     }
     void addOutput(const Test*, const std::string& text) override {
         std::fprintf(stderr, "%s", text.c_str());
@@ -223,6 +237,7 @@ private:
         std::fflush(stderr);
     }
 
+    KeeperState& state_;
     std::mutex mutex_;
     std::string all_;
     bool failed_ = false;
@@ -304,7 +319,7 @@ int keep(Options& options, SuiteSpec suite, const Overrides& overrides, Resource
     settings.inlineSuites = options.isolation == Isolation::None;
     settings.network = network;
     Scheduler scheduler(plan, std::move(pools), settings);
-    WorldErrors errors;
+    WorldErrors errors(state);
     TestResult result;
     result.addListener(&errors);
 
