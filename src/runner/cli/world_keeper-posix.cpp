@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -68,10 +69,20 @@ public:
             reason_ = reason;
         }
     }
-    // Asks the world down (--world-down, ctest gone, a signal); `why` for the keeper's log.
+    // What cuts a set-up in progress short (RunPlan::interruptFixtures).
+    void setInterruptSetup(std::function<void()> interrupt) {
+        std::lock_guard<std::mutex> lock(mutex_);
+        interruptSetup_ = std::move(interrupt);
+    }
+    // Asks the world down (--world-down, ctest gone, a signal); `why` for the keeper's log. A
+    // set-up in progress is cut short.
     void stop(const std::string& why) {
+        std::function<void()> interrupt;
         {
             std::lock_guard<std::mutex> lock(mutex_);
+            if (!stopping_ && state_ == WorldStatus::State::Starting) {
+                interrupt = interruptSetup_;
+            }
             if (!stopping_) {
                 std::fprintf(stderr, "%s: tearing the world down: %s\n", programName, why.c_str());
                 std::fflush(stderr);
@@ -83,6 +94,9 @@ public:
             }
         }
         changed_.notify_all();
+        if (interrupt) {
+            interrupt();
+        }
     }
     // Whoever asked --world-down: told the outcome once the world is down.
     void addDownClient(platform::FileDescriptor client) {
@@ -143,6 +157,7 @@ private:
     std::string reason_;
     std::shared_ptr<const platform::PrivateNetwork> network_;
     std::vector<platform::FileDescriptor> downClients_;
+    std::function<void()> interruptSetup_;
 };
 
 // The suite's one "test" in the keeper: runs once the fixtures are up, and holds the world
@@ -157,7 +172,7 @@ public:
     void run(TestResult& result) override {
         // In the suite's events, after its set-up's: what --world-down prints starts here.
         result.startTest(this);
-        state_.up(network_);
+        state_.up(network_);  // also when already asked down: the starter hears of it
         bool collapsed = false;
         while (!state_.stopping()) {
             state_.waitForStop(woken_);
@@ -312,6 +327,7 @@ int keep(Options& options, SuiteSpec suite, const Overrides& overrides, Resource
     applyOverrides(suite, overrides);
     suite.tests.clear();
     plan.addSuite(std::move(suite));
+    state.setInterruptSetup([&plan] { plan.interruptFixtures(); });
     Hold hold(state, plan.suite(0), network);
     plan.suite(0).addTest(&hold);
 
@@ -422,6 +438,8 @@ int worldUpCommand(Options& options, PlannedRun& planned, RunInputs& inputs) {
         // A session of its own: ctest's signals to the test's process group, and the end of
         // its pipes, are not the keeper's. Its output goes to the log in the folder.
         ::setsid();
+        // A starter gone (ctest's timeout killed it) must not kill the keeper when told.
+        ::signal(SIGPIPE, SIG_IGN);
         readEnd.reset();
         const int null = ::open("/dev/null", O_RDONLY | O_CLOEXEC);
         const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
