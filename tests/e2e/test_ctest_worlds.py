@@ -47,10 +47,16 @@ def private_networks_work():
 
 
 @pytest.fixture(scope="module")
-def project(tmp_path_factory):
+def prefix(tmp_path_factory):
+    """A fresh install of the build tree."""
+    folder = tmp_path_factory.mktemp("prefix")
+    check(["cmake", "--install", BUILD_DIR, "--prefix", folder])
+    return folder
+
+
+@pytest.fixture(scope="module")
+def project(tmp_path_factory, prefix):
     """The build folder of ctest_worlds_project built against a fresh install."""
-    prefix = tmp_path_factory.mktemp("prefix")
-    check(["cmake", "--install", BUILD_DIR, "--prefix", prefix])
     source = tmp_path_factory.mktemp("worlds") / "source"
     shutil.copytree(PROJECT, source)
     shutil.copytree(ROBOT, source / "robot", ignore=shutil.ignore_patterns(
@@ -194,3 +200,33 @@ def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project):
                 os.kill(pid, signal.SIGKILL)
             except OSError:
                 pass
+
+
+def test_the_world_options_say_what_is_wrong(project, prefix):
+    runner = prefix / "bin" / "robottestingframework-testrunner"
+    suites = project.parent / "source"
+    nowhere = project / "no_keeper_here"
+    for option in (["--filter", "fixed/one", "--world"], ["--world-down"]):
+        missing = run([runner, "--suite", "fixed/fixed.xml", "--no-output", *option, nowhere],
+                      cwd=suites)
+        assert missing.returncode == 2, missing
+        assert "no world keeper answers" in missing.stderr and str(nowhere) in missing.stderr
+    world = project / "fixed_by_hand"
+    up = run([runner, "--suite", "fixed/fixed.xml", "--no-output", "--var", f"port={free_port()}",
+              "--world-up", world], cwd=suites)
+    try:
+        assert up.returncode == 0, up
+        assert "the world of suite fixed is up" in up.stdout, up.stdout
+        again = run([runner, "--suite", "fixed/fixed.xml", "--world-up", world], cwd=suites)
+        assert again.returncode == 2 and "already runs there" in again.stderr, again
+        other = run([runner, "--suite", "broken/broken.xml", "--no-output", "--world", world],
+                    cwd=suites)
+        assert other.returncode == 2, other
+        assert "keeps the world of suite fixed, not of suite broken" in other.stderr, other
+    finally:
+        down = run([runner, "--suite", "fixed/fixed.xml", "--world-down", world], cwd=suites)
+    assert down.returncode == 0, down
+    assert "is down" in down.stdout, down.stdout
+    both = run([runner, "--suite", "fixed/fixed.xml", "--world", world, "--world-down", world],
+               cwd=suites)
+    assert both.returncode == 2 and "one at a time" in both.stderr, both

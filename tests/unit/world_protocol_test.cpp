@@ -24,11 +24,13 @@ TEST(WorldProtocol, AStatusComesBackAsItWasSent) {
         sent.state = state;
         sent.networkDescriptors = 2;
         sent.reason = "process 'sim' died\n  last lines of its log:\n  | boom";
+        sent.suite = "arm reach";
         WorldStatus read;
         ASSERT_TRUE(parseWorldStatus(worldStatusText(sent), read));
         EXPECT_EQ(read.state, state);
         EXPECT_EQ(read.networkDescriptors, 2u);
         EXPECT_EQ(read.reason, sent.reason);
+        EXPECT_EQ(read.suite, "arm reach");
     }
 }
 

@@ -143,10 +143,16 @@ private:
 
 }  // namespace
 
-bool joinKeptWorld(const std::string& folder, KeptWorld& world, std::string& error) {
+bool joinKeptWorld(const std::string& folder, const std::string& suite, KeptWorld& world,
+                   std::string& error) {
     WorldStatus status;
     std::vector<platform::FileDescriptor> fds;
     if (!askStatus(folder, status, fds, error)) {
+        return false;
+    }
+    if (status.suite != suite) {
+        error = "the world keeper at " + folder + " keeps the world of suite " + status.suite +
+                ", not of suite " + suite + " (give --world-up and --world the same suite)";
         return false;
     }
     if (fds.size() == 2) {

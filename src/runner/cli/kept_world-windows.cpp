@@ -5,7 +5,7 @@
 namespace robottestingframework {
 namespace runner {
 
-bool joinKeptWorld(const std::string&, KeptWorld&, std::string& error) {
+bool joinKeptWorld(const std::string&, const std::string&, KeptWorld&, std::string& error) {
     error = "--world is not supported on Windows (no world keeper: one world per test)";
     return false;
 }

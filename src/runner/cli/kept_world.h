@@ -24,8 +24,10 @@ struct KeptWorld {
     std::unique_ptr<FixtureManager> fixture;
 };
 
-// Asks the keeper at `folder`. False with `error` when none answers there.
-bool joinKeptWorld(const std::string& folder, KeptWorld& world, std::string& error);
+// Asks the keeper at `folder` for the world of suite `suite`. False with `error` when none
+// answers there, or when it keeps another suite's world.
+bool joinKeptWorld(const std::string& folder, const std::string& suite, KeptWorld& world,
+                   std::string& error);
 
 }  // namespace runner
 }  // namespace robottestingframework

@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
                          programName, options.world.c_str(), planned.suites.size());
             return configurationError;
         }
-        if (!joinKeptWorld(options.world, kept, error)) {
+        if (!joinKeptWorld(options.world, planned.suites.front().name, kept, error)) {
             std::fprintf(stderr, "%s: --world %s: %s\n", programName, options.world.c_str(),
                          error.c_str());
             return configurationError;

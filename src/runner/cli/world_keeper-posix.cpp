@@ -46,7 +46,8 @@ constexpr int kLookMs = 200;  // how often the keeper looks whether ctest is sti
 // thread and the keeper's main thread.
 class KeeperState {
 public:
-    explicit KeeperState(platform::FileDescriptor toStarter) : toStarter_(std::move(toStarter)) {}
+    KeeperState(platform::FileDescriptor toStarter, std::string suite)
+        : toStarter_(std::move(toStarter)), suite_(std::move(suite)) {}
 
     // The world is up (the suite's set-up passed): the --world-up runner may return.
     void up(std::shared_ptr<const platform::PrivateNetwork> network) {
@@ -124,6 +125,7 @@ public:
         WorldStatus status;
         status.state = state_;
         status.reason = reason_;
+        status.suite = suite_;
         if (network_ && state_ == WorldStatus::State::Up) {
             fds = network_->descriptors();
         }
@@ -150,6 +152,7 @@ private:
     std::mutex mutex_;
     std::condition_variable changed_;
     platform::FileDescriptor toStarter_;
+    const std::string suite_;
     bool toldStarter_ = false;
     bool startPassed_ = false;
     bool stopping_ = false;
@@ -300,7 +303,7 @@ void serve(int listener, KeeperState& state, pid_t owner, std::atomic<bool>& don
 // The keeper's life, in the detached child: sets the world up, holds it, tears it down.
 int keep(Options& options, SuiteSpec suite, const Overrides& overrides, ResourcePools pools,
          const std::string& folder, pid_t owner, platform::FileDescriptor toStarter) {
-    KeeperState state(std::move(toStarter));
+    KeeperState state(std::move(toStarter), suite.name);
     std::string error;
     platform::FileDescriptor listener = platform::listenLocal(folder, "keeper.sock", error);
     if (!listener.valid()) {

@@ -51,8 +51,12 @@ std::string worldRequestText(WorldRequest request) {
 }
 
 std::string worldStatusText(const WorldStatus& status) {
+    std::string suite = status.suite;
+    for (char& c : suite) {
+        c = c == '\n' || c == '\r' ? ' ' : c;
+    }
     return std::string("rtf-world ") + stateWord(status.state) + " " +
-           std::to_string(status.networkDescriptors) + "\n" + status.reason;
+           std::to_string(status.networkDescriptors) + " " + suite + "\n" + status.reason;
 }
 
 bool parseWorldStatus(const std::string& packet, WorldStatus& status) {
@@ -68,7 +72,8 @@ bool parseWorldStatus(const std::string& packet, WorldStatus& status) {
         return false;
     }
     const std::string state = words.substr(0, space);
-    const std::string count = words.substr(space + 1);
+    const std::size_t afterCount = words.find(' ', space + 1);
+    const std::string count = words.substr(space + 1, afterCount - space - 1);
     if (count != "0" && count != "1" && count != "2") {
         return false;
     }
@@ -86,6 +91,7 @@ bool parseWorldStatus(const std::string& packet, WorldStatus& status) {
     }
     parsed.networkDescriptors = static_cast<unsigned int>(count[0] - '0');
     parsed.reason = rest;
+    parsed.suite = afterCount == std::string::npos ? std::string() : words.substr(afterCount + 1);
     status = parsed;
     return true;
 }

@@ -26,6 +26,7 @@ struct WorldStatus {
     // network), 1 (a network namespace) or 2 (a user namespace, then a network namespace).
     unsigned int networkDescriptors = 0;
     std::string reason;  // Collapsed: the world's reason (may span lines)
+    std::string suite;   // whose world it is (the suite's name, one line)
 };
 std::string worldStatusText(const WorldStatus& status);
 // False when `packet` is not an answer to "status" (a keeper of another version).
