@@ -230,3 +230,14 @@ def test_the_world_options_say_what_is_wrong(project, prefix):
     both = run([runner, "--suite", "fixed/fixed.xml", "--world", world, "--world-down", world],
                cwd=suites)
     assert both.returncode == 2 and "one at a time" in both.stderr, both
+
+
+def test_a_world_that_collapses_fails_the_running_test_and_its_world_down(project):
+    result = ctest(project, "-R", r"^crash\.")
+    assert result.returncode != 0, result.stdout
+    assert re.search(r"crash\.crash/world:up \.+ +Passed", result.stdout), result.stdout
+    for test in ("kills_the_world", "world:down"):
+        assert re.search(rf"crash\.crash/{test} \.+\*+Failed", result.stdout), result.stdout
+    assert "the world collapsed" in result.stdout, result.stdout
+    assert "process 'fragile server' exited with status 3" in result.stdout, result.stdout
+    assert "its tear-down failed" in result.stdout, result.stdout

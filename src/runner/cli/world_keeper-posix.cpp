@@ -173,16 +173,18 @@ public:
         : Test("world"), state_(state), suite_(suite), network_(std::move(network)) {}
 
     void run(TestResult& result) override {
-        // In the suite's events, after its set-up's: what --world-down prints starts here.
-        result.startTest(this);
         state_.up(network_);  // also when already asked down: the starter hears of it
+        // In the suite's events, after its set-up's: what --world-down prints starts here
+        // (WorldErrors, which hears of it once the world is up).
+        result.startTest(this);
         bool collapsed = false;
         while (!state_.stopping()) {
             state_.waitForStop(woken_);
-            if (woken_.exchange(false) && !collapsed) {
+            if (woken_.exchange(false)) {
                 const TestMessage failure = suite_.fixtureFailure();
-                if (failure.getMessage().empty()) {
-                    state_.stop("interrupted");  // a signal: TestSuite::interrupt
+                if (collapsed || failure.getMessage().empty()) {
+                    // A signal (TestSuite::interrupt), or more of a world already collapsed.
+                    state_.stop("interrupted");
                 } else {
                     collapsed = true;
                     const std::string reason = failure.toString();
@@ -213,6 +215,8 @@ private:
 // suite's set-up on, or once it is up (the Hold test started) for its tear-down.
 class WorldErrors : public TestListener {
 public:
+    explicit WorldErrors(KeeperState& state) : state_(state) {}
+
     void addError(const Test*, TestMessage message) override { add("error", message); }
     void addFailure(const Test*, TestMessage message) override { add("failure", message); }
     void addReport(const Test*, TestMessage message) override {
@@ -220,7 +224,6 @@ public:
         all_ += "  " + message.toString() + "\n";
         std::fprintf(stderr, "%s\n", message.toString().c_str());
     }
-    explicit WorldErrors(KeeperState& state) : state_(state) {}
     // The world is up (Hold started): what the set-up said is not the tear-down's. (A set-up
     // that failed reports Hold skipped, with a startTest too.)
     void startTest(const Test*) override {
