@@ -167,13 +167,16 @@ def marked(mark):
 
 
 @pytest.mark.skipif(not private_networks_work(), reason="no user namespaces here")
-def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project):
+@pytest.mark.parametrize("how", ["SIGKILL", "Ctrl-C"])
+def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project, how):
     mark = uuid.uuid4().hex
     running = project / "running"
     running.unlink(missing_ok=True)
+    # In a session of its own, as a terminal's foreground job: Ctrl-C signals its group.
     ctest_run = subprocess.Popen(["ctest", "--test-dir", str(project), "-j", "2", "-R", r"^hang\."],
                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                 env={**os.environ, "RTF_E2E_MARK": mark})
+                                 env={**os.environ, "RTF_E2E_MARK": mark},
+                                 start_new_session=True)
     try:
         deadline = time.monotonic() + 60
         while not running.exists() and time.monotonic() < deadline:
@@ -183,8 +186,11 @@ def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project):
         keepers = [pid for pid, (command, _) in alive.items() if "--world-up" in command]
         assert len(keepers) == 1, alive
         assert any(world for _, world in alive.values()), alive  # the world's server
-        os.kill(ctest_run.pid, signal.SIGKILL)
-        ctest_run.wait(timeout=10)
+        if how == "SIGKILL":
+            os.kill(ctest_run.pid, signal.SIGKILL)
+        else:
+            os.killpg(ctest_run.pid, signal.SIGINT)
+        ctest_run.wait(timeout=20)
         deadline = time.monotonic() + 10
         left = marked(mark)
         while left and time.monotonic() < deadline:
