@@ -211,6 +211,9 @@ def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project, how):
 def test_the_world_options_say_what_is_wrong(project, prefix):
     runner = prefix / "bin" / "robottestingframework-testrunner"
     suites = project.parent / "source"
+    shown = run([runner, "--help"])
+    for option in ("--world-up DIR", "--world DIR", "--world-down DIR"):
+        assert option in shown.stdout, shown.stdout
     nowhere = project / "no_keeper_here"
     for option in (["--filter", "fixed/one", "--world"], ["--world-down"]):
         missing = run([runner, "--suite", "fixed/fixed.xml", "--no-output", *option, nowhere],
