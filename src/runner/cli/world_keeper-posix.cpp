@@ -494,8 +494,12 @@ int worldDownCommand(const Options& options) {
     std::string error;
     platform::FileDescriptor socket = platform::connectLocal(folder, "keeper.sock", error);
     if (!socket.valid()) {
-        std::fprintf(stderr, "%s: --world-down %s: no world keeper answers there (%s)\n",
-                     programName, folder.c_str(), error.c_str());
+        const std::string log = worldLogPath(folder);
+        const std::string hint = ::access(log.c_str(), F_OK) == 0
+                                     ? "; its world failed to start or its keeper ended: see " + log
+                                     : "";
+        std::fprintf(stderr, "%s: --world-down %s: no world keeper answers there (%s)%s\n",
+                     programName, folder.c_str(), error.c_str(), hint.c_str());
         return configurationError;
     }
     std::string packet;
