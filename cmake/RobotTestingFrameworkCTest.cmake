@@ -17,7 +17,8 @@
 #                                        [RUNNER_ARGS ...] [PLUGIN_PATH dir...]
 #                                        [TEST_ENVIRONMENT ...] [WORKING_DIRECTORY dir]
 #                                        [LABELS ...] [TIMEOUT seconds]
-#                                        [DISCOVERY_TIMEOUT seconds])
+#                                        [DISCOVERY_TIMEOUT seconds]
+#                                        [WORLD PER_SUITE|PER_TEST])
 #   robottestingframework_add_suite(NAME name                              (RTF 2.x's form)
 #       [RobotTestingFramework_FIXTURE target_or_file [param words...]]...
 #       RobotTestingFramework_TEST target_or_file TYPE type [ARGS param...]...
@@ -59,6 +60,13 @@
 # changed suite file needs no new configure; each test gets the LABELS and its tags as labels.
 # A suite that cannot be listed gives one failing test, NAME_PREFIX followed by the suite
 # file's name and "/list", whose output is the runner's error. Needs CMake 3.19 at test time.
+# The tests of one suite never run at once (a RESOURCE_LOCK of the suite file). WORLD PER_SUITE
+# (the default): a suite with fixtures sets them up once for all its tests, in two more tests,
+# NAME_PREFIX followed by the suite's name and "/world:up" (a CTest FIXTURES_SETUP: the runner's
+# --world-up keeps the world in a process of its own) and "/world:down" (FIXTURES_CLEANUP); its
+# tests run in that world (--world); `ctest -R` adds the two to the tests it picks. WORLD
+# PER_TEST: each test sets the suite's fixtures up and tears them down itself (what Windows
+# always does: no world keeper there). docs/ctest-worlds.md.
 
 include_guard(GLOBAL)
 
@@ -452,11 +460,19 @@ endfunction()
 # One CTest test per test of a suite file, listed when ctest starts (see the top of this file).
 function(robottestingframework_discover_tests)
     set(caller robottestingframework_discover_tests)
-    set(one SUITE NAME_PREFIX WORKING_DIRECTORY TIMEOUT DISCOVERY_TIMEOUT)
+    set(one SUITE NAME_PREFIX WORKING_DIRECTORY TIMEOUT DISCOVERY_TIMEOUT WORLD)
     set(multi RUNNER_ARGS PLUGIN_PATH TEST_ENVIRONMENT LABELS)
     cmake_parse_arguments(PARSE_ARGV 0 arg "" "${one}" "${multi}")
     if(arg_UNPARSED_ARGUMENTS)
         message(FATAL_ERROR "${caller}: unknown arguments: ${arg_UNPARSED_ARGUMENTS}")
+    endif()
+    if(NOT arg_WORLD)
+        set(arg_WORLD PER_SUITE)
+    elseif(NOT arg_WORLD STREQUAL "PER_SUITE" AND NOT arg_WORLD STREQUAL "PER_TEST")
+        message(FATAL_ERROR "${caller}: WORLD ${arg_WORLD}: expected PER_SUITE or PER_TEST")
+    endif()
+    if(WIN32)
+        set(arg_WORLD PER_TEST)  # no world keeper on Windows
     endif()
     if(NOT arg_SUITE)
         message(FATAL_ERROR "${caller}: SUITE is required (SUITE file.xml)")
@@ -495,7 +511,7 @@ function(robottestingframework_discover_tests)
         string(APPEND content "set(rtf_${variable} ${value})\n")
     endforeach()
     foreach(variable NAME_PREFIX WORKING_DIRECTORY TIMEOUT DISCOVERY_TIMEOUT TEST_ENVIRONMENT
-                     LABELS)
+                     LABELS WORLD)
         _robottestingframework_bracket("${arg_${variable}}" value)
         string(TOLOWER "${variable}" name)
         string(APPEND content "set(rtf_${name} ${value})\n")

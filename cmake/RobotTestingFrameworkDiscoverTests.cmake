@@ -2,8 +2,15 @@
 # RobotTestingFrameworkCTest.cmake): lists the suite's tests with the runner and registers one
 # CTest test per test id. The calling file sets rtf_runner, rtf_suite, rtf_args (each test's),
 # rtf_list_args (the listing's), rtf_plugin_path, rtf_name_prefix, rtf_working_directory,
-# rtf_timeout, rtf_discovery_timeout, rtf_test_environment, rtf_labels and rtf_base (where this
-# script writes its files).
+# rtf_timeout, rtf_discovery_timeout, rtf_test_environment, rtf_labels, rtf_world (PER_SUITE or
+# PER_TEST) and rtf_base (where this script writes its files).
+#
+# WORLD PER_SUITE (the default where the runner has a world keeper, not on Windows): a suite
+# with fixtures gets a test <prefix><suite>/world:up (FIXTURES_SETUP: --world-up DIR sets its
+# fixtures up once, in a keeper process) and <prefix><suite>/world:down (FIXTURES_CLEANUP:
+# --world-down DIR), and each of its tests runs with --world DIR (FIXTURES_REQUIRED) in that
+# world. Every test of a suite, world tests included, takes the suite's RESOURCE_LOCK, so that
+# they never run at once, as in one run of the suite. docs/ctest-worlds.md.
 if(CMAKE_VERSION VERSION_LESS 3.19)
     message(FATAL_ERROR "robottestingframework_discover_tests needs ctest 3.19 or later "
                         "(string(JSON)); this is ${CMAKE_VERSION}")
@@ -39,6 +46,13 @@ function(_rtf_test_text name command out)
         _robottestingframework_bracket("${ARGN}" labels)
         string(APPEND text " LABELS ${labels}")
     endif()
+    # The suite's lock and world fixture (_rtf_world_properties), when set.
+    foreach(property RESOURCE_LOCK FIXTURES_SETUP FIXTURES_CLEANUP FIXTURES_REQUIRED)
+        if(rtf_${property})
+            _robottestingframework_bracket("${rtf_${property}}" value)
+            string(APPEND text " ${property} ${value}")
+        endif()
+    endforeach()
     set(${out} "${text})\n" PARENT_SCOPE)
 endfunction()
 
@@ -69,6 +83,37 @@ else()
             if(tests EQUAL 0)
                 continue()
             endif()
+            # The suite's tests never run at once; a suite with fixtures starts them once.
+            string(JSON suite_name GET "${listing}" suites ${s} name)
+            set(rtf_RESOURCE_LOCK "rtf_suite:${rtf_suite}")
+            set(rtf_FIXTURES_SETUP "")
+            set(rtf_FIXTURES_CLEANUP "")
+            set(rtf_FIXTURES_REQUIRED "")
+            set(world_args "")
+            string(JSON fixture_count LENGTH "${listing}" suites ${s} fixtures)
+            if(rtf_world STREQUAL "PER_SUITE" AND fixture_count GREATER 0 AND suites EQUAL 1)
+                # A CTest fixture name is global: the discovery's folder and number make it unique.
+                string(MD5 world_hash "${rtf_base}")
+                string(SUBSTRING "${world_hash}" 0 12 world_hash)
+                set(world_fixture "rtf_world_${world_hash}")
+                set(world_dir "${rtf_base}_world")
+                set(rtf_FIXTURES_SETUP "${world_fixture}")
+                set(command "${rtf_runner}" --suite "${rtf_suite}" --world-up "${world_dir}"
+                            ${rtf_plugin_path} ${rtf_args})
+                _rtf_test_text("${rtf_name_prefix}${suite_name}/world:up" "${command}" text
+                               ${rtf_labels})
+                string(APPEND generated "${text}")
+                set(rtf_FIXTURES_SETUP "")
+                set(rtf_FIXTURES_CLEANUP "${world_fixture}")
+                set(command "${rtf_runner}" --suite "${rtf_suite}" --world-down "${world_dir}"
+                            ${rtf_plugin_path} ${rtf_args})
+                _rtf_test_text("${rtf_name_prefix}${suite_name}/world:down" "${command}" text
+                               ${rtf_labels})
+                string(APPEND generated "${text}")
+                set(rtf_FIXTURES_CLEANUP "")
+                set(rtf_FIXTURES_REQUIRED "${world_fixture}")
+                set(world_args --world "${world_dir}")
+            endif()
             math(EXPR last_test "${tests} - 1")
             foreach(t RANGE ${last_test})
                 string(JSON id GET "${listing}" suites ${s} tests ${t} id)
@@ -83,7 +128,7 @@ else()
                 endif()
                 _rtf_filter_pattern("${id}" pattern)
                 set(command "${rtf_runner}" --suite "${rtf_suite}" --filter "${pattern}"
-                            ${rtf_plugin_path} ${rtf_args})
+                            ${world_args} ${rtf_plugin_path} ${rtf_args})
                 _rtf_test_text("${rtf_name_prefix}${id}" "${command}" text ${labels})
                 string(APPEND generated "${text}")
             endforeach()

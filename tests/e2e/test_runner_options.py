@@ -151,6 +151,7 @@ REFUSES_EMPTY = {
     "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
     "--filter", "--shard-index", "--shard-count", "--durations", "--merge", "--expect-shards",
     "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
+    "--world-up", "--world", "--world-down",
 }
 
 

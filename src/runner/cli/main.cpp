@@ -16,6 +16,7 @@
 #include "runner/cli/exit_status.h"
 #include "runner/cli/history_import_command.h"
 #include "runner/cli/history_report_command.h"
+#include "runner/cli/kept_world.h"
 #include "runner/cli/list_command.h"
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/merge_command.h"
@@ -29,6 +30,7 @@
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
+#include "runner/cli/world_keeper.h"
 #include "runner/history/history_error.h"
 #include "runner/plan/run_plan.h"
 
@@ -54,6 +56,9 @@ int main(int argc, char** argv) {
     if (options.historyReport) {
         return historyReportCommand(options);
     }
+    if (!options.worldDown.empty()) {
+        return worldDownCommand(options);
+    }
 
     RunInputs inputs;
     if (!readRunInputs(options, inputs)) {
@@ -77,6 +82,27 @@ int main(int argc, char** argv) {
     }
     if (options.list || options.listVariables) {
         return listCommand(options, planned, inputs.overrides);
+    }
+    if (!options.worldUp.empty()) {
+        return worldUpCommand(options, planned, inputs);
+    }
+    // --world DIR: the suite's fixtures are the keeper's world, already up; its tests join it.
+    KeptWorld kept;
+    if (!options.world.empty()) {
+        std::string error;
+        if (planned.suites.size() != 1) {
+            std::fprintf(stderr, "%s: --world %s: expected one suite (--suite FILE), got %zu\n",
+                         programName, options.world.c_str(), planned.suites.size());
+            return configurationError;
+        }
+        if (!joinKeptWorld(options.world, planned.suites.front().name, kept, error)) {
+            std::fprintf(stderr, "%s: --world %s: %s\n", programName, options.world.c_str(),
+                         error.c_str());
+            return configurationError;
+        }
+        planned.suites.front().fixtures.clear();
+        planned.suites.front().network =
+            kept.network ? SuiteSpec::Network::Private : SuiteSpec::Network::Host;
     }
     {
         std::string error, cost;
@@ -134,6 +160,9 @@ int main(int argc, char** argv) {
         }
         plan.addSuite(std::move(suite));
     }
+    if (kept.fixture) {
+        plan.suite(0).addFixtureManager(kept.fixture.get());
+    }
     planned.suites.clear();
 
     std::unique_ptr<WebProgressListener> web;
@@ -148,7 +177,8 @@ int main(int argc, char** argv) {
     ProgressSettings progress = progressOf(plan, planned.durations);
     RunListeners listeners(options, planned.reportSettings, web.get(), std::move(progress));
     planned.reportSettings.testFacts.clear();  // the HTML output has its own copy
-    const int interrupted = runRounds(options, plan, std::move(inputs.pools), listeners);
+    const int interrupted =
+        runRounds(options, plan, std::move(inputs.pools), listeners, kept.network);
     listeners.stopCapture();
     if (options.isolation == Isolation::None) {
         endExecGuard();                         // what exec tests started, daemons included

@@ -252,6 +252,20 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
                    "unless a suite says network=\"private\" (the default)")
         ->type_name("NETWORK")
         ->check(CLI::IsMember({"private", "host"}));
+    app.add_option("--world-up", options.worldUp,
+                   "Set up the suite's fixtures (its world, and its private network) in a keeper "
+                   "process that outlives this one, with its control socket in DIR; exit 0 when "
+                   "the world is up, 1 with the reason when it failed. The keeper stops its world "
+                   "when the process that started the runner (ctest) ends (docs/ctest-worlds.md)")
+        ->type_name("DIR");
+    app.add_option("--world", options.world,
+                   "Run the suite's tests in the world a --world-up DIR keeper holds, without "
+                   "setting up the suite's fixtures; exit 2 when no keeper is there")
+        ->type_name("DIR");
+    app.add_option("--world-down", options.worldDown,
+                   "Stop the world the --world-up DIR keeper holds and print its tear-down; "
+                   "exit 1 when the tear-down failed")
+        ->type_name("DIR");
     app.add_option("--timeout", options.timeout,
                    "Time limit of each test, set-up and tear-down included; a suite's <timeout> "
                    "and a test's timeout=\"...\" win (default: none)")
@@ -411,6 +425,11 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
 
     options.isolation = isolation == "none" ? Isolation::None : Isolation::Process;
     options.privateNetworks = network == "private";
+    if ((options.worldUp.empty() ? 0 : 1) + (options.world.empty() ? 0 : 1) +
+            (options.worldDown.empty() ? 0 : 1) >
+        1) {
+        return usageError("--world-up, --world and --world-down: one at a time");
+    }
 
     if (!jobs.empty()) {
         const std::string problem = checkJobs(jobs, options.jobs);

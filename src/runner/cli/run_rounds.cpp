@@ -11,12 +11,14 @@
 namespace robottestingframework {
 namespace runner {
 
-int runRounds(const Options& options, RunPlan& plan, ResourcePools pools, RunListeners& listeners) {
+int runRounds(const Options& options, RunPlan& plan, ResourcePools pools, RunListeners& listeners,
+              std::shared_ptr<const platform::PrivateNetwork> network) {
     SchedulerSettings schedulerSettings;
     schedulerSettings.jobs = options.jobs;
     schedulerSettings.inlineSuites = options.isolation == Isolation::None;
     schedulerSettings.verbose = options.verbose;
     schedulerSettings.view = &listeners.schedulerView();
+    schedulerSettings.network = std::move(network);
     Scheduler scheduler(plan, std::move(pools), schedulerSettings);
 
     std::FILE* console = listeners.console();

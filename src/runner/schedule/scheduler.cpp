@@ -190,7 +190,8 @@ void Scheduler::start(Job& job) {
         // Checked before the run (cli/private_networks.h); one that fails now (the kernel's
         // limit of namespaces) stops the suite rather than run it in the machine's network.
         std::string error;
-        job.network = platform::PrivateNetwork::create(error);
+        job.network =
+            settings_.network ? settings_.network : platform::PrivateNetwork::create(error);
         if (!job.network) {
             table_.release(job.held);
             job.held = ResourceTable::Held();

@@ -47,6 +47,9 @@ struct SchedulerSettings {
     // caught from the process's own descriptors as it comes.
     bool inlineSuites = false;
     bool verbose = false;  // say which suite holds a lock another waits for
+    // Set: suites with a private network run in this one instead of a new one each (a world
+    // keeper's, --world DIR: the tests join the network their world lives in).
+    std::shared_ptr<const platform::PrivateNetwork> network;
     SchedulerView* view = nullptr;
 };
 

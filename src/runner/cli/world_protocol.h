@@ -1,0 +1,45 @@
+// What a world keeper (--world-up DIR) and the runners that use its world (--world DIR,
+// --world-down DIR) say to each other over its control socket: one packet each way. Plain text,
+// so that the keeper's log and a test can read it; the private network's descriptors travel
+// beside the answer (SCM_RIGHTS). Pure logic: world_keeper-posix.cpp does the talking.
+#pragma once
+
+#include <string>
+
+namespace robottestingframework {
+namespace runner {
+
+// The control socket and the keeper's log in a keeper's folder.
+std::string worldSocketPath(const std::string& folder);
+std::string worldLogPath(const std::string& folder);
+
+// A request: "status" (is the world up? its network) or "down" (tear it down and say how).
+enum class WorldRequest { Status, Down, Unknown };
+WorldRequest parseWorldRequest(const std::string& packet);
+std::string worldRequestText(WorldRequest request);
+
+// The keeper's answer to "status".
+struct WorldStatus {
+    enum class State { Starting, Up, Collapsed, Stopping };
+    State state = State::Starting;
+    // How many descriptors of a private network come with the answer: 0 (the machine's
+    // network), 1 (a network namespace) or 2 (a user namespace, then a network namespace).
+    unsigned int networkDescriptors = 0;
+    std::string reason;  // Collapsed: the world's reason (may span lines)
+    std::string suite;   // whose world it is (the suite's name, one line)
+};
+std::string worldStatusText(const WorldStatus& status);
+// False when `packet` is not an answer to "status" (a keeper of another version).
+bool parseWorldStatus(const std::string& packet, WorldStatus& status);
+
+// The keeper's answer to "down", and what it tells the --world-up runner when its set-up
+// ended: passed or not, and what a run prints about the world (its errors, one a line).
+struct WorldOutcome {
+    bool passed = false;
+    std::string text;
+};
+std::string worldOutcomeText(const WorldOutcome& outcome);
+bool parseWorldOutcome(const std::string& packet, WorldOutcome& outcome);
+
+}  // namespace runner
+}  // namespace robottestingframework
