@@ -3,7 +3,10 @@
 #include <filesystem>
 #include <map>
 
+#include <pugixml.hpp>
+
 #include "fixtures/process/process_fixture.h"
+#include "runner/plan/shared_world.h"
 #include "variables/variables.h"
 
 namespace robottestingframework {
@@ -26,6 +29,53 @@ std::map<std::string, std::string> sampleItems(const SuiteSpec& suite, const Res
         items[resource.pool] = text;
     }
     return items;
+}
+
+// The name a world file gives its world: <world name="..."> or the file's stem.
+std::string worldName(const std::string& file) {
+    pugi::xml_document document;
+    if (document.load_file(file.c_str())) {
+        const std::string name = document.document_element().attribute("name").value();
+        if (!name.empty()) {
+            return name;
+        }
+    }
+    return std::filesystem::path(file).stem().string();
+}
+
+// Two shared worlds of one name that are not the same world (another file, another param).
+std::string checkSharedWorlds(const std::vector<SuiteSpec>& suites) {
+    struct First {
+        std::string identity;
+        const FixtureSpec* fixture;
+    };
+    std::map<std::string, First> byName;
+    for (const SuiteSpec& suite : suites) {
+        for (const FixtureSpec& fixture : suite.fixtures) {
+            if (fixture.scope != FixtureSpec::Scope::Run || fixture.path.empty()) {
+                continue;
+            }
+            const std::string identity = sharedWorldIdentity(fixture);
+            const std::string name = worldName(fixture.path);
+            auto found = byName.emplace(name, First{identity, &fixture}).first;
+            if (found->second.identity == identity) {
+                continue;
+            }
+            const FixtureSpec& first = *found->second.fixture;
+            const std::string what =
+                first.path.str() != fixture.path.str()
+                    ? "world file " + first.path.str() + " there, " + fixture.path.str() + " here"
+                    : "param '" + first.param + "' there, '" + fixture.param + "' here";
+            return fixture.where.toString() +
+                   ": a shared world declared twice with different "
+                   "contents: world '" +
+                   name + "' (scope=\"run\") is also declared at " + first.where.toString() + " (" +
+                   what +
+                   "); suites share a world when they name the same world file with the same "
+                   "param and variables, or give their worlds different names";
+        }
+    }
+    return {};
 }
 
 }  // namespace
@@ -64,7 +114,7 @@ std::string checkWorldFiles(const std::vector<SuiteSpec>& suites, const Resource
             }
         }
     }
-    return {};
+    return checkSharedWorlds(suites);
 }
 
 }  // namespace runner

@@ -48,6 +48,11 @@ struct FixtureSpec {
     SharedString path;
     std::string type;  // "dll", "python", "process"; empty: from the file
     std::string param;
+    // scope="run" (process fixtures only): one instance of the world for every suite of the
+    // run that names the same world file with the same param (plan/shared_world.h); "suite"
+    // (the default): the suite's own.
+    enum class Scope { Suite, Run };
+    Scope scope = Scope::Suite;
     SourceLocation where;
 };
 

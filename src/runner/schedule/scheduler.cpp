@@ -135,6 +135,43 @@ void Scheduler::interrupt() {
 void Scheduler::notRun(Job& job, const TestMessage& reason, bool interrupted) {
     plan_.suite(job.index).reportNotRun(job.result, reason, interrupted);
     job.state = Job::State::Finished;
+    releaseWorlds(job);
+}
+
+void Scheduler::releaseWorlds(Job& job) {
+    for (SharedWorldFixture* place : plan_.sharedWorlds(job.index)) {
+        const std::string problem = place->releaseIfHeld();
+        if (!problem.empty() && settings_.view != nullptr) {
+            settings_.view->note("error: " + problem);
+        }
+    }
+}
+
+void Scheduler::noteWorlds() {
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        for (const std::string& line : plan_.world(w).notes()) {
+            if (settings_.view != nullptr) {
+                settings_.view->note(line);
+            }
+        }
+    }
+}
+
+void Scheduler::stopWorlds() {
+    std::vector<SharedWorld*> up;
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        up.push_back(&plan_.world(w));
+    }
+    std::stable_sort(up.begin(), up.end(), [](const SharedWorld* a, const SharedWorld* b) {
+        return a->startedAt() > b->startedAt();
+    });
+    for (SharedWorld* world : up) {
+        const std::string problem = world->stop();
+        if (!problem.empty() && settings_.view != nullptr) {
+            settings_.view->note("error: " + problem);
+        }
+    }
+    noteWorlds();
 }
 
 bool Scheduler::mayStart(Job& job) {
@@ -186,11 +223,24 @@ void Scheduler::start(Job& job) {
     for (const auto& pool : job.held.items) {
         environment.push_back(resourceVariable(pool.first) + "=" + value(pool.first));
     }
-    if (spec.network == SuiteSpec::Network::Private) {
+    const std::vector<SharedWorldFixture*> shared = plan_.sharedWorlds(i);
+    const std::size_t group = groups_[i];
+    if (shared.empty() ? spec.network == SuiteSpec::Network::Private : groupPrivate_[group]) {
         // Checked before the run (cli/private_networks.h); one that fails now (the kernel's
         // limit of namespaces) stops the suite rather than run it in the machine's network.
+        // Suites that share worlds share one network, the worlds' (made for the first).
         std::string error;
-        job.network = platform::PrivateNetwork::create(error);
+        if (shared.empty()) {
+            job.network = platform::PrivateNetwork::create(error);
+        } else {
+            if (!groupNetworks_[group]) {
+                groupNetworks_[group] = platform::PrivateNetwork::create(error);
+            }
+            job.network = groupNetworks_[group];
+            for (SharedWorldFixture* place : shared) {
+                place->world().setNetwork(job.network);
+            }
+        }
         if (!job.network) {
             table_.release(job.held);
             job.held = ResourceTable::Held();
@@ -260,6 +310,7 @@ void Scheduler::finish(Job& job) {
         job.thread.join();
     }
     plan_.lane(job.index).close();
+    releaseWorlds(job);
     job.network.reset();
     table_.release(job.held);
     job.held = ResourceTable::Held();
@@ -354,6 +405,21 @@ void Scheduler::run(TestResult& result) {
     if (settings_.inlineSuites) {
         settings_.jobs = 1;
     }
+    groups_ = plan_.worldGroups();
+    groupPrivate_.assign(plan_.suiteCount(), false);
+    groupNetworks_.assign(plan_.suiteCount(), nullptr);
+    for (std::size_t i = 0; i < plan_.suiteCount(); ++i) {
+        if (plan_.spec(i).network == SuiteSpec::Network::Private) {
+            groupPrivate_[groups_[i]] = true;
+        }
+        for (SharedWorldFixture* place : plan_.sharedWorlds(i)) {
+            place->reset();
+        }
+    }
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        plan_.world(w).reset();
+        plan_.world(w).onChange([this] { wake(); });
+    }
     result.startTestRunner();
     std::size_t head = 0;  // the first suite not yet handed on whole
     std::string shown;
@@ -366,6 +432,7 @@ void Scheduler::run(TestResult& result) {
         }
         bool changed = false;
         collect(changed);
+        noteWorlds();
         for (; head < jobs_.size(); ++head) {
             Job& job = *jobs_[head];
             for (const auto& event : job.pending) {
@@ -401,6 +468,11 @@ void Scheduler::run(TestResult& result) {
                                    ready);
         }
     }
+    stopWorlds();
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        plan_.world(w).onChange(nullptr);
+    }
+    groupNetworks_.clear();
     result.endTestRunner();
     result_ = nullptr;
 }
