@@ -21,6 +21,7 @@ import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soak_bench  # noqa: E402  (its suite writer and its measured run)
+import shared_world_bench  # noqa: E402  (8 suites sharing one world)
 
 # RTF 2.0.1 (robotology/robot-testing-framework v2.0.1, built in Release), measured in 2026 on
 # a 2-core machine of this project's kind, whole processes, median of 5-7 runs, the same trivial
@@ -247,6 +248,8 @@ def main():
             table.line(f"{files} Python one-check files, isolated", fmt_time(seconds),
                        f"pytest, {files} files {fmt_time(ref)}", seconds / ref, "<= 0.50x",
                        seconds <= 0.5 * ref)
+
+        shared_world_bench.figures(table, runner, folder, rounds)
 
         if args.soak_count > 0:
             soak_folder = os.path.join(folder, "soak")
