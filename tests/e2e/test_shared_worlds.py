@@ -184,3 +184,38 @@ raise SystemExit(0 if answer.startswith("HTTP/1.0 200") else 1)
     assert result.stdout.count("HTTP/1.0 200 OK") == 3, result.stdout
     assert result.output.count("world 'web' (shared by 3 suites) starting") == 1
     assert not leftover_processes(marker)
+
+
+def test_the_html_report_shows_each_shared_world_as_a_lane(tmp_path, marker):
+    from browser import chromium
+    from selenium.webdriver.common.by import By
+
+    world(tmp_path, "lab")
+    (tmp_path / "broken.xml").write_text("""<world name="broken" logdir="logs">
+  <process name="broken" command="sh -c 'exit 3'">
+    <ready timeout="20s"><output>ready</output></ready>
+  </process>
+</world>
+""")
+    args = suites(tmp_path, ["arm", "base"], ["lab"])
+    args += suites(tmp_path, ["head"], ["broken"])
+    result = run_runner(*args, "-j", "2", "-o", "html:report.html", cwd=tmp_path,
+                        env=marked(marker))
+    assert result.returncode == 1, result.output
+    with chromium(tmp_path) as driver:
+        driver.get((tmp_path / "report.html").as_uri())
+        lanes = {bar.get_attribute("data-world"): bar for bar in
+                 driver.find_elements(By.CSS_SELECTOR, "#timeline g.world-bar")}
+        assert sorted(lanes) == ["broken", "lab"]
+        titles = {name: [t.get_attribute("textContent")
+                         for t in bar.find_elements(By.TAG_NAME, "title")]
+                  for name, bar in lanes.items()}
+        driver.find_element(By.ID, "timeline-box").location_once_scrolled_into_view
+        driver.save_screenshot(str(tmp_path / "timeline.png"))
+    lab = " ".join(titles["lab"])
+    assert "world lab (shared by 2 suites): started +" in lab, lab
+    assert ", ready after " in lab and ", stopped +" in lab, lab
+    broken = " ".join(titles["broken"])
+    assert "world broken (shared by 1 suite): failed to start +" in broken, broken
+    assert "exited with status 3 before it was ready" in broken, broken
+    assert not leftover_processes(marker)

@@ -119,19 +119,20 @@ void SharedWorld::setNetwork(std::shared_ptr<const platform::PrivateNetwork> net
     }
 }
 
-void SharedWorld::note(const std::string& line) {
+void SharedWorld::note(const std::string& line, const std::string& phase, const std::string& detail,
+                       double at) {
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        notes_.push_back(line);
+        notes_.push_back({line, phase, detail, at});
     }
     if (changed_) {
         changed_();
     }
 }
 
-std::vector<std::string> SharedWorld::notes() {
+std::vector<SharedWorld::Note> SharedWorld::notes() {
     std::lock_guard<std::mutex> lock(mutex_);
-    std::vector<std::string> taken;
+    std::vector<Note> taken;
     taken.swap(notes_);
     return taken;
 }
@@ -153,8 +154,8 @@ void SharedWorld::start() {
         std::lock_guard<std::mutex> lock(mutex_);
         startedAt_ = began;
     }
-    note("world '" + name_ + "' (shared by " + std::to_string(users_) +
-         (users_ == 1 ? " suite" : " suites") + ") starting");
+    const std::string shared = std::to_string(users_) + (users_ == 1 ? " suite" : " suites");
+    note("world '" + name_ + "' (shared by " + shared + ") starting", "start", shared, began);
     std::string error;
     std::unique_ptr<FixtureManager> manager = make_(error);
     std::string why;
@@ -196,9 +197,9 @@ void SharedWorld::start() {
     }
     cv_.notify_all();
     if (up) {
-        note("world '" + name_ + "' ready after " + seconds(ready - began));
+        note("world '" + name_ + "' ready after " + seconds(ready - began), "ready", "", ready);
     } else {
-        note("world '" + name_ + "' failed to start: " + why);
+        note("world '" + name_ + "' failed to start: " + why, "failed", why, ready);
     }
 }
 
@@ -297,8 +298,10 @@ std::string SharedWorld::stopNow() {
         upFor = began - startedAt_;
     }
     cv_.notify_all();
-    note("world '" + name_ + "' stopped after " + seconds(steadySeconds() - began) + " (up " +
-         seconds(upFor) + ")" + (why.empty() ? "" : ": its stop failed: " + why));
+    const double stopped = steadySeconds();
+    note("world '" + name_ + "' stopped after " + seconds(stopped - began) + " (up " +
+             seconds(upFor) + ")" + (why.empty() ? "" : ": its stop failed: " + why),
+         "stop", why.empty() ? why : "its stop failed: " + why, stopped);
     return why.empty() ? why : "shared world '" + name_ + "': " + why;
 }
 
@@ -383,7 +386,8 @@ void SharedWorld::fixtureCollapsed(TestMessage reason) {
         reason = reason_;
         told = active_;
     }
-    note("world '" + name_ + "' collapsed: " + reason.getMessage());
+    note("world '" + name_ + "' collapsed: " + reason.getMessage(), "collapsed",
+         reason.getMessage(), steadySeconds());
     for (FixtureEvents* suite : told) {
         suite->fixtureCollapsed(reason);
     }

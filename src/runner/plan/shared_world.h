@@ -83,8 +83,14 @@ public:
     State state() const;
     // When it was started; 0 before (steady seconds, for the order of stops at the end).
     double startedAt() const;
-    // Lines for the console since the last call ("world 'lab' (shared by 3 suites) started").
-    std::vector<std::string> notes();
+    // What happened to it since the last call: for the console, its line ("world 'lab' (shared
+    // by 3 suites) starting"); for the reports, its phase ("start", "ready", "failed",
+    // "collapsed", "stop"), a detail and when (steady seconds): ResultEvent::Kind::World.
+    struct Note {
+        std::string line, phase, detail;
+        double at = 0;
+    };
+    std::vector<Note> notes();
 
     void fixtureCollapsed(TestMessage reason) override;
 
@@ -93,7 +99,8 @@ private:
     void start();
     std::string stopNow();
     void replay(std::size_t from, std::size_t to, TestResult& result, const Test* owner);
-    void note(const std::string& line);
+    void note(const std::string& line, const std::string& phase, const std::string& detail,
+              double at);
 
     std::string name_;
     Factory make_;
@@ -115,7 +122,7 @@ private:
     std::size_t startEvents_ = 0;      // events of its start, handed to every user
     double startedAt_ = 0, readyAt_ = 0;
     bool interrupted_ = false;
-    std::vector<std::string> notes_;
+    std::vector<Note> notes_;
 };
 
 // A suite's place for a shared world among its fixtures.

@@ -149,9 +149,18 @@ void Scheduler::releaseWorlds(Job& job) {
 
 void Scheduler::noteWorlds() {
     for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
-        for (const std::string& line : plan_.world(w).notes()) {
+        for (const SharedWorld::Note& note : plan_.world(w).notes()) {
             if (settings_.view != nullptr) {
-                settings_.view->note(line);
+                settings_.view->note(note.line);
+            }
+            // Its lane in the reports' timelines (TestResultCollector::worlds()).
+            if (result_ != nullptr) {
+                RunEvent event;
+                event.data.kind = ResultEvent::Kind::World;
+                event.data.testName = plan_.world(w).name();
+                event.data.message = TestMessage(note.phase, note.detail);
+                event.happened = note.at;
+                result_->publish(event);
             }
         }
     }
