@@ -219,3 +219,41 @@ def test_the_html_report_shows_each_shared_world_as_a_lane(tmp_path, marker):
     assert "world broken (shared by 1 suite): failed to start +" in broken, broken
     assert "exited with status 3 before it was ready" in broken, broken
     assert not leftover_processes(marker)
+
+
+def test_the_live_page_shows_each_shared_world_as_a_lane(tmp_path, marker):
+    import signal
+
+    from browser import chromium
+    from selenium.webdriver.common.by import By
+    from selenium.webdriver.support.ui import WebDriverWait
+    from web_run import WebRun
+
+    world(tmp_path, "lab", ready_after="2")
+    args = suites(tmp_path, ["arm", "base"], ["lab"])
+    run = WebRun(*args, "-j", "2", "--web-linger", "120", cwd=tmp_path, env=marked(marker))
+
+    def lane(driver):
+        return driver.execute_script(
+            "const lane = document.querySelector('#worlds .world[data-world=\"lab\"]');"
+            "return lane ? [lane.className, lane.textContent] : null;")
+
+    try:
+        with chromium(tmp_path, window="1100,760", page_load_timeout=30) as driver:
+            run.wait_for_line("world 'lab' (shared by 2 suites) starting")
+            driver.get(run.url)
+            wait = WebDriverWait(driver, 30, poll_frequency=0.05)
+            first = wait.until(lane)
+            assert "world lab" in first[1] and "shared by 2 suites" in first[1], first
+            ready = wait.until(lambda d: (lane(d) or [""])[0].endswith("world-ready") and lane(d))
+            assert "ready after" in ready[1], ready
+            stopped = wait.until(
+                lambda d: (lane(d) or [""])[0].endswith("world-stopped") and lane(d))
+            assert "stopped, up" in stopped[1], stopped
+            driver.save_screenshot(str(tmp_path / "live.png"))
+    finally:
+        if run.proc.poll() is None:
+            run.proc.send_signal(signal.SIGINT)
+        status = run.wait(timeout=20)
+    assert status == 0, run.output()
+    assert not leftover_processes(marker)
