@@ -7,6 +7,7 @@ this machine holds that port. Loopback only; nothing is left behind."""
 import json
 import socket
 import sys
+import xml.etree.ElementTree as ET
 
 import pytest
 
@@ -139,6 +140,14 @@ def test_bad_scopes_are_exit_2_naming_file_and_line(tmp_path):
     assert result.returncode == 2, result.output
     assert ('suite.xml:2: <fixture scope="run"> is for type="process" fixtures (world files) '
             'only') in result.stderr
+    (tmp_path / "suite.xml").write_text(
+        '<suite name="s">\n  <resource pool="ports" default="a b"/>\n'
+        '  <fixture type="process" scope="run" param="--var p=${resource.ports}">lab.xml'
+        '</fixture>\n  <test type="exec">/bin/true</test>\n</suite>\n')
+    result = run_runner("-s", "suite.xml", "--no-output", cwd=tmp_path)
+    assert result.returncode == 2, result.output
+    assert ('suite.xml:3: <fixture scope="run"> with ${resource.NAME}: a shared world is the '
+            "run's, not one suite's") in result.stderr
 
 
 def free_port():
@@ -256,4 +265,58 @@ def test_the_live_page_shows_each_shared_world_as_a_lane(tmp_path, marker):
             run.proc.send_signal(signal.SIGINT)
         status = run.wait(timeout=20)
     assert status == 0, run.output()
+    assert not leftover_processes(marker)
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_collapse_interrupts_the_running_suites_and_fails_the_pending_ones(tmp_path, marker,
+                                                                             isolation):
+    (tmp_path / "dies.xml").write_text("""<world name="dies" logdir="logs">
+  <process name="dies" command="sh -c 'echo ready; sleep 1.5; exit 4'">
+    <ready timeout="20s"><output>ready</output></ready>
+  </process>
+</world>
+""")
+    slow = tmp_path / "slow.py"
+    slow.write_text(f"#!{sys.executable}\nimport time\ntime.sleep(1)\n")
+    slow.chmod(0o755)
+    args = []
+    for suite in ["arm", "base", "head"]:
+        (tmp_path / f"{suite}.xml").write_text(
+            f'<suite name="{suite}">\n  <fixture type="process" scope="run">dies.xml</fixture>\n'
+            '  <test type="exec">slow.py</test>\n  <test type="exec">slow.py</test>\n</suite>\n')
+        args += ["-s", f"{suite}.xml"]
+    result = run_runner(*args, "-j", "2", "--isolation", isolation, "--no-output", cwd=tmp_path,
+                        env=marked(marker))
+    assert result.returncode == 1, result.output
+    assert "suites: 3 (0 passed, 3 failed)" in result.stdout
+    assert "fixture collapsed: shared world 'dies' collapsed: process 'dies' exited with " \
+           "status 4" in result.output
+    # head waited for a place (-j 2; one at a time in the runner's process) and came after
+    # the collapse.
+    assert "error: fixture dies (shared world) failed: collapsed before this suite: " \
+           "shared world 'dies' collapsed" in result.output
+    assert not leftover_processes(marker)
+
+
+def test_a_failed_stop_is_an_error_of_the_last_suite_that_needed_the_world(tmp_path, marker):
+    (tmp_path / "stubborn.xml").write_text("""<world name="stubborn" logdir="logs">
+  <process name="stubborn" command="sh -c 'trap &quot;&quot; INT TERM; echo ready; while :; do sleep 0.05; done'">
+    <ready timeout="20s"><output>ready</output></ready>
+    <stop signal="SIGTERM" grace="0.3s"/>
+  </process>
+</world>
+""")
+    args = suites(tmp_path, ["arm", "base"], ["stubborn"])
+    result = run_runner(*args, "-j", "1", "-o", "junit:report.xml", cwd=tmp_path,
+                        env=marked(marker))
+    assert result.returncode == 1, result.output
+    # The last suite stopped the world: its tear-down failed, and only its.
+    failed = "fixture stubborn (shared world) tearDown failed: shared world 'stubborn':"
+    assert result.output.count(failed) == 1, result.output
+    assert "suites: 2 (1 passed, 1 failed)" in result.stdout
+    report = ET.parse(tmp_path / "report.xml").getroot()
+    holding = [suite.get("name") for suite in report.iter("testsuite")
+               if failed in ET.tostring(suite, encoding="unicode")]
+    assert holding == ["base"], ET.tostring(report, encoding="unicode")
     assert not leftover_processes(marker)

@@ -171,9 +171,12 @@ void SharedWorld::start() {
             holder->setWorkerNetwork(network_);
         }
         {
+            // The instance of an earlier round (stopped) goes after the lock is let go: its
+            // threads may still report to this world.
             std::lock_guard<std::mutex> lock(mutex_);
-            manager_ = std::move(manager);
+            manager_.swap(manager);
         }
+        manager.reset();
         std::lock_guard<std::mutex> call(callMutex_);
         if (guarded([&] { up = manager_->setup(); }, why) && !up) {
             why = "setup returned false";
@@ -247,16 +250,18 @@ bool SharedWorld::acquire(FixtureEvents* suite, TestResult& result, const Test* 
     }
     std::size_t events = 0;
     State now;
+    bool cut = false;
     {
         std::lock_guard<std::mutex> lock(mutex_);
         now = state_;
         events = startEvents_;
-        if (now == State::Up && !interrupted_) {
+        cut = interrupted_;
+        if (now == State::Up) {
             active_.insert(suite);
         }
     }
     replay(0, events, result, owner);
-    if (interrupted_ && now != State::Up) {
+    if (cut && now != State::Up) {
         failure = TestMessage("interrupted while shared world '" + name_ + "' started");
         return false;
     }
@@ -265,9 +270,8 @@ bool SharedWorld::acquire(FixtureEvents* suite, TestResult& result, const Test* 
             return true;
         case State::Collapsed: {
             std::lock_guard<std::mutex> lock(mutex_);
-            failure = TestMessage(
-                "shared world '" + name_ + "' collapsed before this suite: " + reason_.getMessage(),
-                reason_.getDetail());
+            failure = TestMessage("collapsed before this suite: " + reason_.getMessage(),
+                                  reason_.getDetail());
             return false;
         }
         case State::Stopped:
@@ -381,13 +385,17 @@ void SharedWorld::fixtureCollapsed(TestMessage reason) {
             return;
         }
         state_ = State::Collapsed;
-        reason_ = TestMessage("shared world '" + name_ + "' collapsed: " + reason.getMessage(),
+        // The process fixture's reason names the world already ("world 'lab' collapsed: ...").
+        const std::string text = reason.getMessage();
+        const std::string named = "world '" + name_ + "'";
+        reason_ = TestMessage(text.compare(0, named.size(), named) == 0
+                                  ? "shared " + text
+                                  : "shared " + named + " collapsed: " + text,
                               reason.getDetail());
         reason = reason_;
         told = active_;
     }
-    note("world '" + name_ + "' collapsed: " + reason.getMessage(), "collapsed",
-         reason.getMessage(), steadySeconds());
+    note(reason.getMessage(), "collapsed", reason.getMessage(), steadySeconds());
     for (FixtureEvents* suite : told) {
         suite->fixtureCollapsed(reason);
     }
