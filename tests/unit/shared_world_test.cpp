@@ -15,6 +15,7 @@
 
 #include <robottestingframework/Exception.h>
 #include <robottestingframework/TestResult.h>
+#include <robottestingframework/TestResultCollector.h>
 #include <robottestingframework/TestSuite.h>
 
 #include "runner/model/test_executor.h"
@@ -271,4 +272,40 @@ TEST(SharedWorld, GroupsLinkSuitesThroughTheWorldsTheyShare) {
               (std::vector<std::size_t>{0, 1, 0, 3, 0}));
     EXPECT_EQ(sharedWorldGroups(3, {{2, 1}}), (std::vector<std::size_t>{0, 1, 1}));
     EXPECT_EQ(sharedWorldGroups(0, {}), (std::vector<std::size_t>{}));
+}
+
+TEST(SharedWorld, ItsPhasesReachTheReportsAsWorldEvents) {
+    Journal journal;
+    WorldExecutor executor(journal);
+    RunPlan plan(executor);
+    plan.addSuite(suite("a", {sharedWorld("lab.xml")}, 1));
+    plan.addSuite(suite("b", {sharedWorld("lab.xml")}, 1));
+    plan.addSuite(suite("c", {sharedWorld("broken.xml", "fails")}, 1));
+    SchedulerSettings settings;
+    settings.jobs = 2;
+    Scheduler scheduler(plan, ResourcePools(), settings);
+    TestResult result;
+    TestResultCollector collector;
+    result.addListener(&collector);
+    scheduler.run(result);
+    ASSERT_EQ(collector.worlds().size(), 2u);
+    const WorldRecord* lab = nullptr;
+    const WorldRecord* broken = nullptr;
+    for (const WorldRecord& world : collector.worlds()) {
+        (world.name == "lab" ? lab : broken) = &world;
+    }
+    ASSERT_NE(lab, nullptr);
+    ASSERT_NE(broken, nullptr);
+    EXPECT_EQ(lab->users, "2 suites");
+    EXPECT_GE(lab->start, 0);
+    EXPECT_GE(lab->ready - lab->start, 0.09);  // the fake world takes 100 ms to start
+    EXPECT_GT(lab->stop, lab->ready);
+    EXPECT_LT(lab->failed, 0);
+    EXPECT_EQ(broken->users, "1 suite");
+    EXPECT_LT(broken->ready, 0);
+    EXPECT_GE(broken->failed, broken->start);
+    EXPECT_NE(broken->reason.find("world broken.xml cannot start"), std::string::npos);
+    // About no test: no suite's record holds them, and the counts are the suites'.
+    EXPECT_EQ(collector.suiteCount(), 3u);
+    EXPECT_EQ(collector.testCount(), 2u);  // c's is not counted: its fixture failed (RTF 2.x)
 }
