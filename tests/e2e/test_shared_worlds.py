@@ -118,11 +118,45 @@ def test_a_shared_world_declared_twice_differently_is_exit_2(tmp_path):
 
     # The same file with another param is another world of the same name.
     (tmp_path / "base.xml").write_text(
-        '<suite name="base">\n  <fixture type="process" scope="run" param="--var x=1">'
+        '<suite name="base">\n  <fixture type="process" scope="run" param="--logdir other">'
         'lab.xml</fixture>\n  <test type="exec">/bin/true</test>\n</suite>\n')
     result = run_runner("-s", "arm.xml", "-s", "base.xml", "--no-output", cwd=tmp_path)
     assert result.returncode == 2, result.output
-    assert "param '' there, '--var x=1' here" in result.stderr
+    assert 'param "" there, "--logdir other" here' in result.stderr
+
+
+def test_variables_decide_the_identity_of_a_shared_world_only_where_it_reads_them(tmp_path,
+                                                                                    marker):
+    (tmp_path / "lab.xml").write_text("""<world name="lab" logdir="logs">
+  <variable name="speed">1</variable>
+  <process name="lab" command="sh -c 'echo start-${speed} >> journal.txt; echo ready; while :; do sleep 0.05; done'">
+    <ready timeout="20s"><output>ready</output></ready>
+  </process>
+</world>
+""")
+
+    def suite(name, variables):
+        given = "".join(f'  <variable name="{k}">{v}</variable>\n' for k, v in variables.items())
+        (tmp_path / f"{name}.xml").write_text(
+            f'<suite name="{name}">\n{given}'
+            '  <fixture type="process" scope="run">lab.xml</fixture>\n'
+            '  <test type="exec">/bin/true</test>\n</suite>\n')
+        return ["-s", f"{name}.xml"]
+
+    # Their tests' variables differ, the world's do not: one world.
+    args = suite("arm", {"robot": "left", "speed": "2"}) + suite("base", {"robot": "right",
+                                                                          "speed": "2"})
+    result = run_runner(*args, "--no-output", cwd=tmp_path, env=marked(marker))
+    assert result.returncode == 0, result.output
+    assert journal(tmp_path) == ["start-2"]
+    # A value the world reads differs: two worlds of one name, exit 2.
+    args = suite("arm", {"speed": "2"}) + suite("head", {"speed": "3"})
+    result = run_runner(*args, "--no-output", cwd=tmp_path, env=marked(marker))
+    assert result.returncode == 2, result.output
+    assert ('head.xml:3: a shared world declared twice with different contents: world \'lab\' '
+            '(scope="run") is also declared at arm.xml:3 (param "--var speed=2" there, '
+            '"--var speed=3" here)') in result.stderr
+    assert not leftover_processes(marker)
 
 
 def test_bad_scopes_are_exit_2_naming_file_and_line(tmp_path):
