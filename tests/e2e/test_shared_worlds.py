@@ -74,7 +74,8 @@ def test_two_shared_worlds_stop_in_the_reverse_order_of_their_starts(tmp_path, m
     assert not leftover_processes(marker)
 
 
-def test_a_world_that_fails_to_start_fails_exactly_its_suites(tmp_path, marker):
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_world_that_fails_to_start_fails_exactly_its_suites(tmp_path, marker, isolation):
     (tmp_path / "broken.xml").write_text("""<world name="broken" logdir="logs">
   <process name="broken" command="sh -c 'echo broken-world-said-this; exit 3'">
     <ready timeout="20s"><output>ready</output></ready>
@@ -83,8 +84,8 @@ def test_a_world_that_fails_to_start_fails_exactly_its_suites(tmp_path, marker):
 """)
     args = suites(tmp_path, ["arm", "base"], ["broken"])
     args += suites(tmp_path, ["head"], [])
-    result = run_runner(*args, "-j", "2", "-o", "json:report.json", cwd=tmp_path,
-                        env=marked(marker))
+    result = run_runner(*args, "-j", "2", "--isolation", isolation, "-o", "json:report.json",
+                        cwd=tmp_path, env=marked(marker))
     assert result.returncode == 1, result.output
     assert "suites: 3 (1 passed, 2 failed)" in result.stdout
     assert result.output.count("shared world 'broken' did not start") >= 4  # 2 suites, 2 tests
