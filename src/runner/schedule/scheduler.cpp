@@ -425,9 +425,18 @@ void Scheduler::run(TestResult& result) {
             place->reset();
         }
     }
+    // A world changes on a suite's thread: the loop is woken to say it. With the suites on
+    // this thread (--isolation none) it is said at once, among the suite's own lines.
+    const std::thread::id loop = std::this_thread::get_id();
     for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
         plan_.world(w).reset();
-        plan_.world(w).onChange([this] { wake(); });
+        plan_.world(w).onChange([this, loop] {
+            if (settings_.inlineSuites && std::this_thread::get_id() == loop) {
+                noteWorlds();
+            } else {
+                wake();
+            }
+        });
     }
     result.startTestRunner();
     std::size_t head = 0;  // the first suite not yet handed on whole
