@@ -23,6 +23,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import soak_bench  # noqa: E402  (its suite writer and its measured run)
 import network_bench  # noqa: E402  (private networks: bench/network_bench.py)
 import ctest_world_bench  # noqa: E402  (worlds started under ctest)
+import shared_world_bench  # noqa: E402  (8 suites sharing one world)
 
 # RTF 2.0.1 (robotology/robot-testing-framework v2.0.1, built in Release), measured in 2026 on
 # a 2-core machine of this project's kind, whole processes, median of 5-7 runs, the same trivial
@@ -254,6 +255,8 @@ def main():
 
         if not args.quick:
             ctest_world_bench.report(runner, folder, lambda *f: table.line(*f[:3], None, *f[3:]))
+        shared_world_bench.figures(table, runner, folder, rounds)
+
         if args.soak_count > 0:
             soak_folder = os.path.join(folder, "soak")
             os.makedirs(soak_folder, exist_ok=True)

@@ -37,6 +37,11 @@ struct ResultEvent {
         Repetition,   // repetition `repetition` of `repetitions` of the test starts
         Measurement,  // the test measured `measurement`; `passed`: within its limits
         Attachment,   // the test attached `attachment` (already copied)
+        // A world shared by suites (scope="run") changed: `testName` is the world's name,
+        // `message` its phase ("start", "ready", "failed", "collapsed", "stop"; its detail: the
+        // reason, or for "start" how many suites share it). About no test (testId 0): no named
+        // handler; TestResultCollector::worlds() keeps it.
+        World,
         // Reserved for the runner's own tests (tests/e2e/test_event_kinds.py): no product code
         // sends it. A kind with nothing but its rows in the tables (TestListener::addEvent
         // takes it): it fails its test, so every report shows whether it arrived.

@@ -152,6 +152,18 @@ struct SuiteRecord {
     bool succeeded() const;
 };
 
+// A world shared by suites (<fixture scope="run">), from its ResultEvent::Kind::World events:
+// each time in seconds since the collector started, -1 when it did not happen.
+struct WorldRecord {
+    std::string name;
+    std::string users;  // "3 suites"
+    double start = -1;
+    double ready = -1;
+    double stop = -1;
+    double failed = -1;  // it failed to start or collapsed
+    std::string reason;  // why
+};
+
 class TestResultCollector : public TestListener {
 public:
     TestResultCollector();
@@ -180,6 +192,8 @@ public:
     const std::vector<ResultEvent>& getResults() const { return events_; }
     // Suites in order, with their tests.
     const std::vector<SuiteRecord>& suites() const { return suites_; }
+    // The shared worlds of the run, in the order they started.
+    const std::vector<WorldRecord>& worlds() const { return worlds_; }
     // Wall time from startTestRunner to endTestRunner (or to now while running).
     double duration() const;
     // The calendar time the collector was made; event times count from it.
@@ -257,6 +271,8 @@ private:
     // Cuts a test's output to its tail once the run's output budget is spent.
     void keepWithinBudget(std::string& output);
 
+    void recordWorld(const ResultEvent& event);
+    std::vector<WorldRecord> worlds_;
     std::chrono::steady_clock::time_point origin_;
     // The event onEvent is handing to the named handlers, while it does (else null): when it
     // happened.

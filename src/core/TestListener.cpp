@@ -81,6 +81,10 @@ void TestListener::onEvent(const RunEvent& event) {
         case Kind::Probe:
             addEvent(test, data);
             break;
+        // About no test (`test` is nullptr): a listener that does not show worlds ignores it.
+        case Kind::World:
+            addEvent(test, data);
+            break;
     }
 }
 

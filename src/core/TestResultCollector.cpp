@@ -158,6 +158,7 @@ void TestResultCollector::reset() {
     end_ = -1;
     events_.clear();
     suites_.clear();
+    worlds_.clear();
     labels_.clear();
     openSuites_.clear();
     openTests_.clear();
@@ -252,12 +253,48 @@ void TestResultCollector::onEvent(const RunEvent& event) {
     const RunEvent* outer = delivering_;  // a handler may publish again (a subclass's own)
     delivering_ = &event;
     try {
+        if (event.data.kind == Kind::World) {
+            recordWorld(event.data);
+        }
         TestListener::onEvent(event);
     } catch (...) {
         delivering_ = outer;
         throw;
     }
     delivering_ = outer;
+}
+
+void TestResultCollector::recordWorld(const ResultEvent& event) {
+    const double at = now();
+    const std::string phase = event.message.getMessage();
+    WorldRecord* world = nullptr;
+    for (auto it = worlds_.rbegin(); it != worlds_.rend() && world == nullptr; ++it) {
+        if (it->name == event.testName && it->stop < 0) {
+            world = &*it;
+        }
+    }
+    if (world == nullptr || phase == "start") {
+        worlds_.emplace_back();
+        world = &worlds_.back();
+        world->name = event.testName;
+        world->start = at;
+    }
+    if (phase == "start") {
+        world->users = event.message.getDetail();
+    } else if (phase == "ready") {
+        world->ready = at;
+    } else if (phase == "stop") {
+        world->stop = at;
+        if (!event.message.getDetail().empty()) {
+            world->reason += (world->reason.empty() ? "" : "; ") + event.message.getDetail();
+        }
+    } else {
+        world->failed = at;
+        world->reason = event.message.getDetail();
+        if (phase == "failed") {
+            world->stop = at;
+        }
+    }
 }
 
 const RunEvent* TestResultCollector::timeAs(const RunEvent* event) {
@@ -371,6 +408,9 @@ void TestResultCollector::addOutput(const Test* test, const std::string& text) {
 }
 
 void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
+    if (event.kind == Kind::World) {
+        return;  // kept by onEvent, in worlds()
+    }
     record(event.kind, test, TestMessage(event.message), event.passed, event.measurement.get(),
            event.attachment);
 }

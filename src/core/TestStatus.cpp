@@ -78,6 +78,7 @@ constexpr KindRow kindRows[] = {
     {Kind::Repetition, "repetition", TestStatus::Passed, false},
     {Kind::Measurement, "measurement", TestStatus::Passed, false},
     {Kind::Attachment, "attachment", TestStatus::Passed, false},
+    {Kind::World, "world", TestStatus::Passed, false},
     {Kind::Probe, "probe", TestStatus::Failed, false},
 };
 

@@ -109,6 +109,9 @@ void ConsoleListener::addCheck(const Test* test, TestMessage msg, bool passed) {
 }
 
 void ConsoleListener::addEvent(const Test* test, const ResultEvent& event) {
+    if (event.kind == Kind::World) {
+        return;  // about no test; the runner says it itself
+    }
     record_.addEvent(test, event);
     say(event.kind, test, event.message, event.passed);
 }

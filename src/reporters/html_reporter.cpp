@@ -280,7 +280,19 @@ void HtmlReporter::writeDocument(ReportText& out) {
         data +=
             "," + jsonString(toString(status)) + ":" + std::to_string(collector_.countOf(status));
     }
-    data += "},\"suites\":[";
+    data += "}";
+    // The shared worlds, each a lane of the timeline: start, ready, stop, failure.
+    data += ",\"worlds\":[";
+    bool firstWorld = true;
+    for (const WorldRecord& world : collector_.worlds()) {
+        data += std::string(firstWorld ? "" : ",") + "{\"name\":" + jsonString(world.name) +
+                ",\"users\":" + jsonString(world.users) + ",\"start\":" + number(world.start) +
+                ",\"ready\":" + number(world.ready) + ",\"stop\":" + number(world.stop) +
+                ",\"failed\":" + number(world.failed) + ",\"reason\":" + jsonString(world.reason) +
+                "}";
+        firstWorld = false;
+    }
+    data += "],\"suites\":[";
 
     // The style and script first; the data, test text that may hold anything ("@REPORT_JS@"
     // too), goes where "@REPORT_DATA@" is and is never searched.

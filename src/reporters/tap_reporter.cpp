@@ -346,6 +346,9 @@ void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
     note(Kind::Interrupted, test, msg);
 }
 void TapReporter::addEvent(const Test* test, const ResultEvent& event) {
+    if (event.kind == Kind::World) {
+        return;  // about no test point
+    }
     note(event.kind, test, event.message);
 }
 void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {

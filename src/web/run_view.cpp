@@ -490,6 +490,63 @@ void RunView::publishTest(std::size_t suiteIndex, std::size_t index) {
     publish("t" + std::to_string(suiteIndex) + "." + std::to_string(index), dump(json));
 }
 
+namespace {
+
+Json worldJson(const std::string& name, const std::string& users, const std::string& state,
+               double startedAt, double readyAt, double stoppedAt, const std::string& reason) {
+    return {{"name", name},           {"users", users},     {"state", state},
+            {"startedAt", startedAt}, {"readyAt", readyAt}, {"stoppedAt", stoppedAt},
+            {"reason", reason}};
+}
+
+}  // namespace
+
+void RunView::worldPhase(const std::string& name, const std::string& phase,
+                         const std::string& detail) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    std::size_t index = none;
+    for (std::size_t i = worlds_.size(); i > 0 && index == none; --i) {
+        if (worlds_[i - 1].name == name && worlds_[i - 1].stoppedAt < 0) {
+            index = i - 1;
+        }
+    }
+    if (index == none || phase == "start") {
+        worlds_.emplace_back();
+        index = worlds_.size() - 1;
+        worlds_[index].name = name;
+        worlds_[index].startedAt = clock();
+    }
+    WorldView& world = worlds_[index];
+    if (phase == "start") {
+        world.users = detail;
+    } else if (phase == "ready") {
+        world.readyAt = clock();
+        world.state = "ready";
+    } else if (phase == "stop") {
+        world.stoppedAt = clock();
+        world.state = world.state == "collapsed" ? "collapsed" : "stopped";
+        if (!detail.empty()) {
+            world.reason += (world.reason.empty() ? "" : "; ") + detail;
+        }
+    } else {
+        world.state = phase;
+        world.reason = detail;
+        if (phase == "failed") {
+            world.stoppedAt = clock();
+        }
+    }
+    publishWorld(index);
+}
+
+void RunView::publishWorld(std::size_t index) {
+    const WorldView& w = worlds_[index];
+    Json json = {{"type", "world"},
+                 {"index", index},
+                 {"world", worldJson(w.name, w.users, w.state, w.startedAt, w.readyAt, w.stoppedAt,
+                                     w.reason)}};
+    publish("w" + std::to_string(index), dump(json));
+}
+
 void RunView::publish(const std::string& key, std::string json) {
     std::uint64_t& latest = latest_[key];
     changes_.erase(latest);  // 0 (none) is no change
@@ -524,9 +581,15 @@ std::string RunView::snapshotJson() const {
                           {"hiddenReports", suite.hiddenReports},
                           {"tests", std::move(tests)}});
     }
+    Json worlds = Json::array();
+    for (const auto& w : worlds_) {
+        worlds.push_back(
+            worldJson(w.name, w.users, w.state, w.startedAt, w.readyAt, w.stoppedAt, w.reason));
+    }
     Json snapshot = {{"seq", lastChange_},
                      {"now", clock()},
                      {"run", Json::parse(runJson())},
+                     {"worlds", std::move(worlds)},
                      {"suites", std::move(suites)}};
     return dump(snapshot);
 }

@@ -73,6 +73,10 @@ public:
     // The attachment numbered `index` (from 0), if there is one.
     bool attachment(std::size_t index, AttachmentView& found) const;
 
+    // A world shared by suites (<fixture scope="run">) changed: `phase` "start" (`detail`: how
+    // many suites share it), "ready", "failed", "collapsed" (`detail`: why) or "stop". Each
+    // world is a lane of the page: its state and times.
+    void worldPhase(const std::string& name, const std::string& phase, const std::string& detail);
     // Wakes the readers waiting in waitForChanges(), for good: the server is stopping.
     void close();
 
@@ -156,6 +160,17 @@ private:
     double runDuration_ = 0;
     std::size_t counts_[3] = {};  // passed, failed, skipped
     std::vector<SuiteView> suites_;
+    struct WorldView {
+        std::string name;
+        std::string users;
+        std::string state = "starting";  // "starting", "ready", "failed", "collapsed", "stopped"
+        double startedAt = 0;            // on the view's clock; the others -1 until they happen
+        double readyAt = -1;
+        double stoppedAt = -1;
+        std::string reason;
+    };
+    std::vector<WorldView> worlds_;
+    void publishWorld(std::size_t index);
     std::vector<AttachmentView> attachments_;  // at most maxAttachments
     std::vector<std::size_t> openSuites_;      // innermost last
     std::size_t openSuite_ = none;             // where tests go: the innermost open suite

@@ -119,6 +119,10 @@ void ServedLivePage::addInterrupted(const Test* test, TestMessage msg) {
 }
 
 void ServedLivePage::addEvent(const Test* test, const ResultEvent& event) {
+    if (event.kind == ResultEvent::Kind::World) {
+        view.worldPhase(event.testName, event.message.getMessage(), event.message.getDetail());
+        return;
+    }
     said(event.kind, test, event.message);
 }
 

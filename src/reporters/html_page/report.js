@@ -359,12 +359,18 @@
   search.addEventListener("input", render);
   render();
 
-  // --- The timeline: one lane per suite running at once (-j N), each suite's fixture setup
-  // (with the moments its processes were ready), its tests and its teardown. Hover: details.
+  // --- The timeline: a lane per world shared by suites (<fixture scope="run">: its start,
+  // ready, stop, failure), then one lane per suite running at once (-j N), each suite's
+  // fixture setup (with the moments its processes were ready), its tests and its teardown.
+  // Hover: details.
   const drawTimeline = () => {
     const box = document.getElementById("timeline");
     const suites = data.suites.filter((s) => s.duration > 0 || s.tests.length);
-    if (!suites.length) { document.getElementById("timeline-box").hidden = true; return; }
+    const worlds = data.worlds || [];
+    if (!suites.length && !worlds.length) {
+      document.getElementById("timeline-box").hidden = true;
+      return;
+    }
     // Lanes: a suite takes the first lane free when it starts (as the scheduler's slots are).
     const lanes = [];
     const placed = suites.slice().sort((a, b) => a.start - b.start).map((s) => {
@@ -373,9 +379,12 @@
       lanes[lane] = s.start + s.duration;
       return [s, lane];
     });
-    const end = Math.max(data.duration, ...suites.map((s) => s.start + s.duration), 1e-3);
+    const end = Math.max(data.duration, ...suites.map((s) => s.start + s.duration),
+                         ...worlds.map((w) => Math.max(w.stop, w.failed, w.ready, w.start)), 1e-3);
     const width = Math.max(box.clientWidth || 900, 600);
-    const left = 56, right = 12, laneHeight = 26, top = 18;
+    const left = 56, right = 12, laneHeight = 26;
+    const top = 18 + worlds.length * laneHeight;  // the worlds' lanes above the suites'
+    const worldTop = 18;
     const scale = (width - left - right) / end;
     const x = (t) => left + t * scale;
     const height = top + lanes.length * laneHeight + 6;
@@ -387,8 +396,8 @@
     const step = [1, 2, 5, 10].map((m) => m * power).find((s) => s >= raw);
     const axis = svg("g", { class: "axis" });
     for (let t = 0; t <= end + 1e-9; t += step) {
-      axis.appendChild(svg("line", { x1: x(t), x2: x(t), y1: top - 4, y2: height }));
-      const label = svg("text", { x: x(t) + 2, y: top - 6 });
+      axis.appendChild(svg("line", { x1: x(t), x2: x(t), y1: worldTop - 4, y2: height }));
+      const label = svg("text", { x: x(t) + 2, y: worldTop - 6 });
       label.textContent = (step < 1 ? t.toFixed(step < 0.1 ? 2 : 1) : t.toFixed(0)) + " s";
       axis.appendChild(label);
     }
@@ -406,6 +415,42 @@
     };
     const rect = (cls, from, length, y, h, text) => titled(svg("rect", {
       class: cls, x: x(from), y: y, width: Math.max(length * scale, 1), height: h }), text);
+    worlds.forEach((w, lane) => {
+      const y = worldTop + lane * laneHeight + 3;
+      const g = svg("g", { class: "world-bar" });
+      g.dataset.world = w.name;
+      const label = svg("text", { class: "lane-label", x: 4, y: y + 13 });
+      label.textContent = "world";
+      g.appendChild(label);
+      const name = "world " + w.name + (w.users ? " (shared by " + w.users + ")" : "");
+      const upTo = w.ready >= 0 ? w.ready : (w.failed >= 0 ? w.failed : end);
+      g.appendChild(titled(svg("rect", { class: "world-starting", x: x(w.start), y: y,
+                                         width: Math.max((upTo - w.start) * scale, 1),
+                                         height: 20 }),
+          name + ": started " + at(w.start) +
+          (w.ready >= 0 ? ", ready after " + secs(w.ready - w.start) : "")));
+      if (w.ready >= 0) {
+        const until = w.stop >= 0 ? w.stop : end;
+        g.appendChild(titled(svg("rect", { class: "world-up", x: x(w.ready), y: y + 2,
+                                           width: Math.max((until - w.ready) * scale, 1),
+                                           height: 16 }),
+            name + ": ready " + at(w.ready) +
+            (w.stop >= 0 ? ", stopped " + at(w.stop) + " (up " + secs(w.stop - w.start) + ")"
+                         : "")));
+        g.appendChild(titled(svg("line", { class: "ready", x1: x(w.ready), x2: x(w.ready),
+                                          y1: y, y2: y + 20 }), name + ": ready " + at(w.ready)));
+      }
+      if (w.failed >= 0) {
+        g.appendChild(titled(svg("rect", { class: "world-failed t-failing", x: x(w.failed) - 2,
+                                           y: y, width: 4, height: 20 }),
+            name + ": " + (w.ready >= 0 ? "collapsed " : "failed to start ") + at(w.failed) +
+            (w.reason ? "\n" + w.reason : "")));
+      }
+      const text = svg("text", { class: "suite-label", x: x(w.start) + 3, y: y + 14 });
+      text.textContent = w.name;
+      g.appendChild(text);
+      chart.appendChild(g);
+    });
     // Every test drawn while that stays cheap; beyond, each suite's tests as one bar.
     const eachTest = data.counts.total <= 3000;
     for (const [s, lane] of placed) {

@@ -102,6 +102,7 @@ bool readRunInputs(Options& options, RunInputs& inputs) {
         std::fprintf(stderr, "%s: %s\n", programName, poolProblem.c_str());
         return false;
     }
+    keepSharedWorldVariables(inputs.suites);
     const std::string worldProblem = checkWorldFiles(inputs.suites, inputs.pools);
     if (!worldProblem.empty()) {
         std::fprintf(stderr, "%s: %s\n", programName, worldProblem.c_str());

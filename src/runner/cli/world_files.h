@@ -13,6 +13,12 @@
 namespace robottestingframework {
 namespace runner {
 
+// A shared world's fixture (scope="run") gets every variable of its suite as --var, as any
+// process fixture does; two suites sharing it would then be two worlds as soon as one of them
+// defines a variable the world never reads. So each shared world keeps, of the --var words of
+// its param, those whose ${NAME} its world file reads: its identity is what reaches it.
+void keepSharedWorldVariables(std::vector<SuiteSpec>& suites);
+
 // Empty when every world file reads; else the first problem, naming the world file and line
 // (or the suite file and line of a fixture whose world file is missing). A ${resource.POOL}
 // in a fixture's param is read as the pool's first items, as they are only given at run time.

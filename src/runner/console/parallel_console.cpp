@@ -110,6 +110,9 @@ public:
         }
     }
     void addEvent(const Test* test, const ResultEvent& event) override {
+        if (event.kind == ResultEvent::Kind::World) {
+            return;  // the scheduler's note says it (SchedulerView::note)
+        }
         raise(event.kind, test, event.message, event.passed);
     }
     void addOutput(const Test* test, const std::string& text) override {

@@ -49,6 +49,11 @@ struct FixtureSpec {
     std::string type;  // "dll", "python", "process"; empty: from the file
     std::string param;
     SourceLocation where;
+    // scope="run" (process fixtures only): one instance of the world for every suite of the
+    // run that names the same world file with the same param (plan/shared_world.h); "suite"
+    // (the default): the suite's own.
+    enum class Scope { Suite, Run };
+    Scope scope = Scope::Suite;
 };
 
 // A <resource> of a suite: an exclusive lock (`lock="robot:left-arm"`) or `count` items taken

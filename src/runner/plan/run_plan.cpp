@@ -1,7 +1,9 @@
 #include "runner/plan/run_plan.h"
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
+#include <regex>
 #include <stdexcept>
 
 namespace robottestingframework {
@@ -41,6 +43,17 @@ std::string worldText(const std::string& path) {
         text.append(chunk, static_cast<std::size_t>(in.gcount()));
     }
     return text;
+}
+
+// The name a world file gives its world (<world name="...">), else its stem.
+std::string worldNameOf(const std::string& file) {
+    static const std::regex named(R"(<world\b[^>]*?\bname\s*=\s*["']([^"']*)["'])");
+    const std::string text = worldText(file).substr(0, 65536);
+    std::smatch match;
+    if (std::regex_search(text, match, named) && match[1].length() > 0) {
+        return match[1];
+    }
+    return std::filesystem::path(file).stem().string();
 }
 
 }  // namespace
@@ -137,6 +150,20 @@ std::vector<PluginTest*> RunPlan::tests(std::size_t index) {
     return standIns;
 }
 
+std::vector<SharedWorldFixture*> RunPlan::sharedWorlds(std::size_t index) const {
+    std::vector<SharedWorldFixture*> places;
+    for (FixtureManager* fixture : fixtures(index)) {
+        if (auto* place = dynamic_cast<SharedWorldFixture*>(fixture)) {
+            places.push_back(place);
+        }
+    }
+    return places;
+}
+
+std::vector<std::size_t> RunPlan::worldGroups() const {
+    return sharedWorldGroups(specs_.size(), worldUsers_);
+}
+
 void RunPlan::addSuite(SuiteSpec spec) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
     SuiteLane& lane = lanes_.emplace_back(executor_);
@@ -145,7 +172,30 @@ void RunPlan::addSuite(SuiteSpec spec) {
     TestSuite& suite = suites_.emplace_back(owned.name);
     suite.setDescription(owned.description);
     suite.getId();  // ids are given here, in plan order, before any event carries them
+    const std::size_t suiteIndex = specs_.size() - 1;
     for (const auto& fixture : owned.fixtures) {
+        if (fixture.scope == FixtureSpec::Scope::Run) {
+            const std::string identity = sharedWorldIdentity(fixture);
+            auto found = worldByIdentity_.find(identity);
+            if (found == worldByIdentity_.end()) {
+                const std::string file =
+                    fixture.path.empty() ? fixture.plugin.str() : fixture.path.str();
+                TestExecutor* executor = &executor_;
+                const FixtureSpec made = fixture;
+                worlds_.emplace_back(worldNameOf(file), [executor, made](std::string& error) {
+                    return executor->makeFixture(made, error);
+                });
+                worldUsers_.emplace_back();
+                found = worldByIdentity_.emplace(identity, worlds_.size() - 1).first;
+            }
+            SharedWorld& world = worlds_[found->second];
+            world.addUser();
+            worldUsers_[found->second].push_back(suiteIndex);
+            auto standIn = std::make_unique<SharedWorldFixture>(world);
+            suite.addFixtureManager(standIn.get());
+            fixtures_.push_back(std::move(standIn));
+            continue;
+        }
         std::string error;
         std::unique_ptr<FixtureManager> manager = executor_.makeFixture(fixture, error);
         if (!manager) {

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <deque>
+#include <map>
 #include <memory>
 #include <string>
 #include <utility>
@@ -16,6 +17,7 @@
 #include "runner/model/suite_model.h"
 #include "runner/model/test_executor.h"
 #include "runner/plan/run_gate.h"
+#include "runner/plan/shared_world.h"
 #include "runner/plan/suite_lane.h"
 
 namespace robottestingframework {
@@ -76,6 +78,15 @@ public:
     // The stand-ins of its tests, in order.
     std::vector<PluginTest*> tests(std::size_t index);
 
+    // The shared worlds (scope="run" fixtures), one per identity, in the order suites first
+    // named them; a suite's place for one is a SharedWorldFixture among its fixtures.
+    std::size_t worldCount() const { return worlds_.size(); }
+    SharedWorld& world(std::size_t index) { return worlds_[index]; }
+    // Its places for shared worlds, in document order.
+    std::vector<SharedWorldFixture*> sharedWorlds(std::size_t index) const;
+    // Per suite, its group of suites linked through shared worlds (sharedWorldGroups).
+    std::vector<std::size_t> worldGroups() const;
+
 private:
     TestExecutor& executor_;
     TestRunner runner_;
@@ -85,6 +96,9 @@ private:
     std::vector<std::size_t> firstFixture_, firstTest_;  // per suite, into fixtures_ and tests_
     std::deque<PluginTest> tests_;
     std::vector<std::unique_ptr<FixtureManager>> fixtures_;
+    std::deque<SharedWorld> worlds_;
+    std::map<std::string, std::size_t> worldByIdentity_;
+    std::vector<std::vector<std::size_t>> worldUsers_;  // per world, the suites naming it
     RunGate gate_{tests_};
     unsigned int retries_ = 0;
 };

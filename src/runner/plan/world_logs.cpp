@@ -29,7 +29,7 @@ void separateWorldLogs(std::vector<SuiteSpec>& suites) {
     std::map<std::string, std::set<std::size_t>> startedBy;  // world file -> suites
     for (std::size_t s = 0; s < suites.size(); ++s) {
         for (const auto& fixture : suites[s].fixtures) {
-            if (fixture.type == "process") {
+            if (fixture.type == "process" && fixture.scope == FixtureSpec::Scope::Suite) {
                 startedBy[worldOf(fixture)].insert(s);
             }
         }
@@ -46,7 +46,8 @@ void separateWorldLogs(std::vector<SuiteSpec>& suites) {
                 instance = suite.name + "-" + std::to_string(n);
             }
             for (auto& fixture : suite.fixtures) {
-                if (fixture.type == "process" && worldOf(fixture) == world.first) {
+                if (fixture.type == "process" && fixture.scope == FixtureSpec::Scope::Suite &&
+                    worldOf(fixture) == world.first) {
                     fixture.param += (fixture.param.empty() ? "" : " ") +
                                      std::string("--instance ") + quoted(instance);
                 }

@@ -135,6 +135,52 @@ void Scheduler::interrupt() {
 void Scheduler::notRun(Job& job, const TestMessage& reason, bool interrupted) {
     plan_.suite(job.index).reportNotRun(job.result, reason, interrupted);
     job.state = Job::State::Finished;
+    releaseWorlds(job);
+}
+
+void Scheduler::releaseWorlds(Job& job) {
+    for (SharedWorldFixture* place : plan_.sharedWorlds(job.index)) {
+        const std::string problem = place->releaseIfHeld();
+        if (!problem.empty() && settings_.view != nullptr) {
+            settings_.view->note("error: " + problem);
+        }
+    }
+}
+
+void Scheduler::noteWorlds() {
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        for (const SharedWorld::Note& note : plan_.world(w).notes()) {
+            if (settings_.view != nullptr) {
+                settings_.view->note(note.line);
+            }
+            // Its lane in the reports' timelines (TestResultCollector::worlds()).
+            if (result_ != nullptr) {
+                RunEvent event;
+                event.data.kind = ResultEvent::Kind::World;
+                event.data.testName = plan_.world(w).name();
+                event.data.message = TestMessage(note.phase, note.detail);
+                event.happened = note.at;
+                result_->publish(event);
+            }
+        }
+    }
+}
+
+void Scheduler::stopWorlds() {
+    std::vector<SharedWorld*> up;
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        up.push_back(&plan_.world(w));
+    }
+    std::stable_sort(up.begin(), up.end(), [](const SharedWorld* a, const SharedWorld* b) {
+        return a->startedAt() > b->startedAt();
+    });
+    for (SharedWorld* world : up) {
+        const std::string problem = world->stop();
+        if (!problem.empty() && settings_.view != nullptr) {
+            settings_.view->note("error: " + problem);
+        }
+    }
+    noteWorlds();
 }
 
 bool Scheduler::mayStart(Job& job) {
@@ -186,12 +232,27 @@ void Scheduler::start(Job& job) {
     for (const auto& pool : job.held.items) {
         environment.push_back(resourceVariable(pool.first) + "=" + value(pool.first));
     }
-    if (spec.network == SuiteSpec::Network::Private) {
+    const std::vector<SharedWorldFixture*> shared = plan_.sharedWorlds(i);
+    const std::size_t group = groups_[i];
+    if (shared.empty() ? spec.network == SuiteSpec::Network::Private : groupPrivate_[group]) {
         // Checked before the run (cli/private_networks.h); one that fails now (the kernel's
         // limit of namespaces) stops the suite rather than run it in the machine's network.
+        // Suites that share worlds share one network, the worlds' (made for the first).
         std::string error;
-        job.network =
-            settings_.network ? settings_.network : platform::PrivateNetwork::create(error);
+        if (settings_.network) {
+            // A network given from outside (a kept world's, --world DIR).
+            job.network = settings_.network;
+        } else if (shared.empty()) {
+            job.network = platform::PrivateNetwork::create(error);
+        } else {
+            if (!groupNetworks_[group]) {
+                groupNetworks_[group] = platform::PrivateNetwork::create(error);
+            }
+            job.network = groupNetworks_[group];
+            for (SharedWorldFixture* place : shared) {
+                place->world().setNetwork(job.network);
+            }
+        }
         if (!job.network) {
             table_.release(job.held);
             job.held = ResourceTable::Held();
@@ -261,6 +322,7 @@ void Scheduler::finish(Job& job) {
         job.thread.join();
     }
     plan_.lane(job.index).close();
+    releaseWorlds(job);
     job.network.reset();
     table_.release(job.held);
     job.held = ResourceTable::Held();
@@ -355,6 +417,30 @@ void Scheduler::run(TestResult& result) {
     if (settings_.inlineSuites) {
         settings_.jobs = 1;
     }
+    groups_ = plan_.worldGroups();
+    groupPrivate_.assign(plan_.suiteCount(), false);
+    groupNetworks_.assign(plan_.suiteCount(), nullptr);
+    for (std::size_t i = 0; i < plan_.suiteCount(); ++i) {
+        if (plan_.spec(i).network == SuiteSpec::Network::Private) {
+            groupPrivate_[groups_[i]] = true;
+        }
+        for (SharedWorldFixture* place : plan_.sharedWorlds(i)) {
+            place->reset();
+        }
+    }
+    // A world changes on a suite's thread: the loop is woken to say it. With the suites on
+    // this thread (--isolation none) it is said at once, among the suite's own lines.
+    const std::thread::id loop = std::this_thread::get_id();
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        plan_.world(w).reset();
+        plan_.world(w).onChange([this, loop] {
+            if (settings_.inlineSuites && std::this_thread::get_id() == loop) {
+                noteWorlds();
+            } else {
+                wake();
+            }
+        });
+    }
     result.startTestRunner();
     std::size_t head = 0;  // the first suite not yet handed on whole
     std::string shown;
@@ -367,6 +453,7 @@ void Scheduler::run(TestResult& result) {
         }
         bool changed = false;
         collect(changed);
+        noteWorlds();
         for (; head < jobs_.size(); ++head) {
             Job& job = *jobs_[head];
             for (const auto& event : job.pending) {
@@ -402,6 +489,11 @@ void Scheduler::run(TestResult& result) {
                                    ready);
         }
     }
+    stopWorlds();
+    for (std::size_t w = 0; w < plan_.worldCount(); ++w) {
+        plan_.world(w).onChange(nullptr);
+    }
+    groupNetworks_.clear();
     result.endTestRunner();
     result_ = nullptr;
 }

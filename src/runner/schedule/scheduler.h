@@ -77,6 +77,9 @@ private:
     void collect(bool& changed);
     void wake();
     std::string runningLine() const;
+    void releaseWorlds(Job& job);  // lets go the shared worlds a suite still holds
+    void noteWorlds();             // the shared worlds' lines to the view
+    void stopWorlds();             // at the end: every world still up, last started first
 
     RunPlan& plan_;
     ResourcePools pools_;
@@ -92,6 +95,10 @@ private:
     };
     std::vector<std::vector<ResourceTemplate>> testTemplates_;
     std::vector<std::vector<std::string>> fixtureParams_;
+    // Per suite, its group of suites sharing worlds; per group, its private network.
+    std::vector<std::size_t> groups_;
+    std::vector<bool> groupPrivate_;
+    std::vector<std::shared_ptr<const platform::PrivateNetwork>> groupNetworks_;
     TestResult* result_ = nullptr;  // during run()
     std::size_t running_ = 0;
     bool aloneRunning_ = false;  // an exclusive suite runs

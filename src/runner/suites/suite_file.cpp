@@ -593,19 +593,45 @@ private:
             }
         }
         for (auto& fixture : suite.fixtures) {
-            if (fixture.type == "process" && !words.empty()) {
+            // A shared world is the run's, not the suite's: no suite's items reach it.
+            if (fixture.type == "process" && fixture.scope == FixtureSpec::Scope::Suite &&
+                !words.empty()) {
                 fixture.param += fixture.param.empty() ? words.substr(1) : words;
             }
         }
     }
 
     FixtureSpec readFixture(pugi::xml_node node) {
-        checkAttributes(node, {"param", "type"});
+        checkAttributes(node, {"param", "type", "scope"});
         FixtureSpec fixture;
         fixture.where = where(node);
         fixture.plugin = expand(node, pluginOf(node));
         fixture.type = typeOf(node, fixtureTypes);
         fixture.param = expand(node, node.attribute("param").value());
+        if (const pugi::xml_attribute scope = node.attribute("scope")) {
+            const std::string value = trim(scope.value());
+            if (value == "run") {
+                fixture.scope = FixtureSpec::Scope::Run;
+            } else if (value != "suite") {
+                fail(node, "<fixture scope=\"" + value +
+                               "\">: expected \"suite\" (the default: the suite's own) or "
+                               "\"run\" (one world shared by the suites of the run)");
+            }
+        }
+        if (fixture.scope == FixtureSpec::Scope::Run) {
+            if (fixture.type != "process") {
+                fail(node,
+                     "<fixture scope=\"run\"> is for type=\"process\" fixtures (world "
+                     "files) only; this one is of type \"" +
+                         fixture.type + "\"");
+            }
+            if (!variables::resourcesUsed(fixture.param).empty() ||
+                !variables::resourcesUsed(fixture.plugin.str()).empty()) {
+                fail(node,
+                     "<fixture scope=\"run\"> with ${resource.NAME}: a shared world is "
+                     "the run's, not one suite's, and gets no suite's pool items");
+            }
+        }
         if (fixture.type == "process") {
             // Every variable reaches the world file: the suite's under the fixture's own
             // --var, the command line's over it.

@@ -4,6 +4,9 @@
 
 const run = { state: "waiting", tests: 0, passed: 0, failed: 0, skipped: 0, duration: 0 };
 const suites = [];
+// The worlds shared by suites (<fixture scope="run">), each a lane: its state and times.
+const worlds = [];
+let worldsDirty = true;
 let lastSeq = 0;
 let source = null;
 let drawPending = false;
@@ -202,6 +205,60 @@ function drawSummary() {
   document.getElementById("bar-skipped").style.width = (100 * run.skipped / total) + "%";
 }
 
+// A shared world's lane: its name, state, how many suites share it, a bar of its start (grey)
+// and its time up (green; red when it failed or collapsed), and its times in words.
+function worldLane(world) {
+  const lane = element("div", "world world-" + world.state);
+  lane.dataset.world = world.name;
+  const title = element("h2");
+  title.appendChild(element("span", "world-name", "world " + world.name));
+  title.appendChild(element("span", stateClass(world.state), world.state));
+  if (world.users) title.appendChild(element("span", "world-users", "shared by " + world.users));
+  lane.appendChild(title);
+  const ready = world.readyAt >= 0 ? world.readyAt : null;
+  const stopped = world.stoppedAt >= 0 ? world.stoppedAt : null;
+  const starting = (ready !== null ? ready : (stopped !== null ? stopped : null));
+  const bar = element("div", "world-bar");
+  const total = Math.max(1e-3, (stopped !== null ? stopped : Math.max(ready || 0,
+      world.startedAt + elapsedSince(world.startedAt))) - world.startedAt);
+  const part = (cls, length, text) => {
+    const span = element("span", cls);
+    span.style.width = Math.max(0.5, 100 * length / total) + "%";
+    span.title = text;
+    bar.appendChild(span);
+  };
+  if (starting !== null) {
+    part("world-starting", starting - world.startedAt,
+         "starting " + seconds(starting - world.startedAt));
+  } else {
+    part("world-starting", total, "starting");
+  }
+  if (ready !== null) {
+    part("world-up", (stopped !== null ? stopped : world.startedAt + total) - ready, "up");
+  }
+  lane.appendChild(bar);
+  const times = element("p", "world-times");
+  if (ready !== null) times.appendChild(element("span", "", "ready after " +
+      seconds(ready - world.startedAt) + " · "));
+  if (stopped !== null) {
+    times.appendChild(element("span", "", (ready !== null ? "stopped, up " : "gave up after ") +
+        seconds(stopped - world.startedAt)));
+  } else {
+    times.appendChild(elapsedNode("span", "", world.startedAt,
+        ready !== null ? "up" : "starting"));
+  }
+  lane.appendChild(times);
+  if (world.reason) lane.appendChild(element("pre", "world-reason", world.reason));
+  return lane;
+}
+
+function drawWorlds() {
+  const box = document.getElementById("worlds");
+  box.hidden = !worlds.some((w) => w);
+  box.replaceChildren(...worlds.filter((w) => w).map(worldLane));
+  worldsDirty = false;
+}
+
 // What changed since the last drawing: only that is drawn again, so a long run stays cheap.
 const dirty = { all: true, suites: new Set(), tests: [] };
 const sections = [];
@@ -236,6 +293,7 @@ function placeRow(suiteIndex, index) {
 function draw() {
   drawPending = false;
   drawSummary();
+  if (worldsDirty) drawWorlds();
   const main = document.getElementById("suites");
   if (dirty.all) {
     sections.length = 0;
@@ -265,6 +323,9 @@ function apply(change) {
   } else if (change.type === "suite") {
     suites[change.index] = change.suite;
     dirty.suites.add(change.index);
+  } else if (change.type === "world") {
+    worlds[change.index] = change.world;
+    worldsDirty = true;
   } else if (change.type === "test") {
     const suite = suites[change.suite];
     if (suite) {
@@ -309,6 +370,9 @@ async function start() {
     Object.assign(run, snapshot.run);
     suites.length = 0;
     suites.push(...snapshot.suites);
+    worlds.length = 0;
+    worlds.push(...(snapshot.worlds || []));
+    worldsDirty = true;
     lastSeq = snapshot.seq;
     setClock(snapshot.now);
     dirty.all = true;
