@@ -51,6 +51,11 @@ std::string markdown(const std::string& text) {
     return out;
 }
 
+// What the value's rule expects, after the help: " (N: from 1 to 1000000000)".
+std::string ruleOf(const OptionRow& row) {
+    return row.rule.expected.empty() ? "" : " (" + row.value + ": " + row.rule.expected + ")";
+}
+
 std::string valueOf(const OptionRow& row) {
     if (row.value.empty()) {
         return {};
@@ -84,7 +89,7 @@ std::string manPage(const std::vector<OptionRow>& rows, const std::string& versi
             if (!row.value.empty()) {
                 page += " \\fI" + roff(valueOf(row)) + "\\fR";
             }
-            page += "\n" + roff(row.help) + (row.fromRtf2 ? " (RTF 2.x)" : "") + "\n";
+            page += "\n" + roff(row.help + ruleOf(row)) + (row.fromRtf2 ? " (RTF 2.x)" : "") + "\n";
         }
     }
     for (const OptionRow& row : rows) {
@@ -126,8 +131,7 @@ std::string markdownReference(const std::vector<OptionRow>& rows) {
                         (i + 1 == names.size() && !row.value.empty() ? " " + valueOf(row) : "") +
                         "`";
             }
-            page += "| " + cell + " | " + markdown(row.help) +
-                    (row.rule.expected.empty() ? "" : " (" + markdown(row.rule.expected) + ")") +
+            page += "| " + cell + " | " + markdown(row.help + ruleOf(row)) +
                     (row.fromRtf2 ? " *RTF 2.x.*" : "") + " |\n";
         }
     }
