@@ -4,6 +4,7 @@
 
 #include "platform/clock.h"
 #include "platform/private_network.h"
+#include "runner/cli/program_name.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -47,6 +48,18 @@ bool preparePrivateNetworks(const Options& options, std::vector<SuiteSpec>& suit
     note = std::string("a private network is made in ") + cost +
            (probe->joinableByThread() ? " (a network namespace)"
                                       : " (a user and a network namespace)");
+    return true;
+}
+
+bool setUpPrivateNetworks(const Options& options, std::vector<SuiteSpec>& suites) {
+    std::string error, cost;
+    if (!preparePrivateNetworks(options, suites, error, cost)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+        return false;
+    }
+    if (options.verbose && !cost.empty()) {
+        std::printf("%s: %s\n", programName, cost.c_str());
+    }
     return true;
 }
 

@@ -18,5 +18,8 @@ namespace runner {
 bool preparePrivateNetworks(const Options& options, std::vector<SuiteSpec>& suites,
                             std::string& error, std::string& note);
 
+// The same, saying the error on stderr and, with --verbose, the cost on stdout.
+bool setUpPrivateNetworks(const Options& options, std::vector<SuiteSpec>& suites);
+
 }  // namespace runner
 }  // namespace robottestingframework

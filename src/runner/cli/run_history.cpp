@@ -149,5 +149,23 @@ HistoryRun thisRun(int argc, const char* const* argv, bool sharded, unsigned int
     return run;
 }
 
+bool openRunHistory(const Options& options, PlannedRun& planned, int argc, const char* const* argv,
+                    std::unique_ptr<RunHistory>& history) {
+    if (options.history.empty()) {
+        return true;
+    }
+    try {
+        const auto& where = planned.reportSettings;
+        history = std::make_unique<RunHistory>(
+            options.history,
+            thisRun(argc, argv, where.sharded, where.shardIndex, where.shardCount));
+    } catch (const HistoryError& e) {
+        std::fprintf(stderr, "%s: %s\n", programName, e.what());
+        return false;
+    }
+    planned.reportSettings.history = history->strips();
+    return true;
+}
+
 }  // namespace runner
 }  // namespace robottestingframework

@@ -12,6 +12,8 @@
 #include <robottestingframework/TestResultCollector.h>
 
 #include "reporters/history_strip.h"
+#include "runner/cli/options.h"
+#include "runner/cli/planned_run.h"
 #include "runner/history/history_run.h"
 
 namespace robottestingframework {
@@ -46,6 +48,11 @@ private:
 // line, the shard.
 HistoryRun thisRun(int argc, const char* const* argv, bool sharded, unsigned int shardIndex,
                    unsigned int shardCount);
+
+// --history FILE: the run's history, checked before anything runs (the reports' settings get
+// its strips); none without --history. False, having said why, when the file is not a history.
+bool openRunHistory(const Options& options, PlannedRun& planned, int argc, const char* const* argv,
+                    std::unique_ptr<RunHistory>& history);
 
 }  // namespace runner
 }  // namespace robottestingframework

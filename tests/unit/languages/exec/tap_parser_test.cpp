@@ -1,4 +1,4 @@
-// The TAP parser against a corpus of streams, valid and broken (tests/unit/tap/).
+// The TAP parser against a corpus of streams, valid and broken (tests/unit/languages/exec/tap/).
 #include <gtest/gtest.h>
 
 #include <chrono>
