@@ -21,6 +21,7 @@
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/merge_command.h"
 #include "runner/cli/options.h"
+#include "runner/cli/output_paths.h"
 #include "runner/cli/planned_run.h"
 #include "runner/cli/private_networks.h"
 #include "runner/cli/program_name.h"
@@ -43,6 +44,14 @@ int main(int argc, char** argv) {
     if (parsed.outcome == ParseResult::Outcome::Exit) {
         std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
         return parsed.status;
+    }
+    {
+        // A report to the standard output has it alone: the console goes to the standard error.
+        std::string error;
+        if (!keepStandardOutputForReports(options, error)) {
+            std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+            return configurationError;
+        }
     }
     if (!options.merge.type.empty()) {
         return mergeCommand(options);
