@@ -16,8 +16,10 @@ namespace robottestingframework {
 namespace runner {
 
 // The plug-in part of an id: `plugin` as written (variables expanded) made lexically normal
-// ("a/./b/../c" is "a/c"); an absolute path is made relative to `suiteFolder` when below it, else
-// only its file name is kept (a build tree's path must not reach the id).
+// ("a/./b/../c" is "a/c"); a relative path beside the suite's folder is said from the folder both
+// share ("../tests/x.py" is "tests/x.py": no id holds ".."); an absolute path is made relative to
+// `suiteFolder` when below it, else only its file name is kept (a build tree's path must not
+// reach the id).
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder);
 
 // Gives each test of `suite` its LOCAL id (TestSpec::id), in document order. `suiteFolder` is the
