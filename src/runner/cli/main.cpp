@@ -31,6 +31,7 @@
 #include "runner/cli/run_inputs.h"
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_rounds.h"
+#include "runner/cli/slowest_tests.h"
 #include "runner/cli/world_keeper.h"
 #include "runner/history/history_error.h"
 #include "runner/plan/run_plan.h"
@@ -198,6 +199,10 @@ int main(int argc, char** argv) {
     if (history) {
         // A warning at worst: the status stays the run's.
         history->record(listeners.collector(), stderr, htmlReport);
+    }
+    if (options.slowestTests >= 0) {
+        std::fputs(slowestTestsText(listeners.collector(), options.slowestTests).c_str(), stdout);
+        std::fflush(stdout);
     }
     if (!listeners.writeOutputs(stderr)) {
         status = configurationError;

@@ -330,9 +330,14 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         ->type_name("I");
     app.add_option("--shard-count", options.shard.count, "The number of shards (see --shard-index)")
         ->type_name("N");
-    app.add_option("--durations", options.durations,
+    std::string durations;
+    app.add_option("--durations", durations,
+                   "Print the N slowest tests after the run (0: all), as pytest does; a value "
+                   "that is not a number is a REPORT, as --durations-from takes it")
+        ->type_name("N");
+    app.add_option("--durations-from", options.durations,
                    "Balance the shards by each suite's time in REPORT, a JUnit or JSON output of "
-                   "an earlier run, or a --history file")
+                   "an earlier run, or a --history file (and, on a terminal, give the ETA)")
         ->type_name("REPORT");
     app.add_option("--history", options.history,
                    "Append this run to the history in FILE (SQLite, made when missing): each "
@@ -503,6 +508,20 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         options.selection.filters.push_back(std::move(filter));
     }
 
+    if (!durations.empty()) {
+        // A number is pytest's --durations N; anything else the REPORT of earlier 3.0 builds.
+        if (durations.size() <= 9 && std::all_of(durations.begin(), durations.end(),
+                                                 [](char c) { return c >= '0' && c <= '9'; })) {
+            options.slowestTests = std::stoi(durations);
+        } else if (!options.durations.empty()) {
+            return usageError("--durations " + durations + " and --durations-from " +
+                              options.durations +
+                              ": one REPORT at most (--durations N prints "
+                              "the N slowest tests)");
+        } else {
+            options.durations = durations;
+        }
+    }
     if (expectShardsOption->count() > 0 && merge.empty()) {
         return usageError("--expect-shards needs --merge");
     }
