@@ -212,8 +212,9 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         ->type_name("N")
         ->check(numberRule(checkRepetition, "from 1 to " + std::to_string(maxRepetition)));
     takeAll(app.add_option("-o,--output", outputs,
-                           "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); "
-                           "repeatable. Default: result.txt")
+                           "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml; "
+                           "- or /dev/stdout: the standard output, the console then going to "
+                           "stderr); repeatable. Default: result.txt")
                 ->type_name("FILE"));
     app.add_option("--output-type", outputType,
                    "Type of the --output files without a TYPE: " + reporters::reporterTypeList() +
