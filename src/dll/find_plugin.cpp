@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "dll/library_naming.h"
+#include "dll/plugin_below.h"
 #include "dll/shared_library.h"
 #include "platform/file_kind.h"
 
@@ -128,6 +129,33 @@ std::vector<std::string> pluginSearchPath() {
     return folders;
 }
 
+// Where a bare name was looked for, each place said by what it is (the suite's folder, the
+// --plugin-path folders and RTF_PLUGIN_PATH, the loader's path), and when a file of that name
+// is below the working folder, the option that would find it.
+std::string notFound(const std::vector<std::string>& names, const std::string& besideDir) {
+    std::string text = "not found as " + list(names);
+    if (!besideDir.empty()) {
+        // Absolute: given relative, the suite's folder may read ".".
+        std::filesystem::path full(absolute(besideDir));
+        if (full.has_relative_path() && !full.has_filename()) {
+            full = full.parent_path();  // "/x/." is "/x/"
+        }
+        text += " in the suite's folder " + full.string() + ";";
+    }
+    const std::vector<std::string> given = pluginSearchPath();
+    text +=
+        " in --plugin-path and RTF_PLUGIN_PATH: " + (given.empty() ? "none given" : list(given));
+    text += "; in the library path: " + list(SharedLibrary::searchPath());
+    const std::string below = findBelowWorkingFolder(names);
+    if (!below.empty()) {
+        const std::string folder = std::filesystem::path(below).parent_path().generic_string();
+        const std::string option = folder.empty() ? "." : folder;
+        text += ". " + below + " is below the working folder: --plugin-path " + option +
+                " (or RTF_PLUGIN_PATH=" + option + ") finds it";
+    }
+    return text;
+}
+
 }  // namespace
 
 std::string findPlugin(const std::string& name, const std::string& besideDir,
@@ -192,15 +220,7 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
     if (searched != nullptr && !other.empty()) {
         *searched = other;
     } else if (searched != nullptr) {
-        // The folder beside which it was looked for, absolute: given relative, it may read ".".
-        if (!besideDir.empty()) {
-            std::filesystem::path full(absolute(besideDir));
-            if (full.has_relative_path() && !full.has_filename()) {
-                full = full.parent_path();  // "/x/." is "/x/"
-            }
-            folders.front() = full.string();
-        }
-        *searched = "not found as " + list(names) + " in " + list(folders);
+        *searched = notFound(names, besideDir);
     }
     return {};
 }

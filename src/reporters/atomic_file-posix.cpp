@@ -9,6 +9,8 @@
 #include <cstring>
 #include <vector>
 
+#include "reporters/standard_output.h"
+
 namespace robottestingframework {
 namespace reporters {
 
@@ -45,6 +47,9 @@ std::string followLinks(const std::string& path) {
 }  // namespace
 
 std::string notAnOutputFile(const std::string& filename) {
+    if (namesStandardOutput(filename)) {
+        return {};  // whatever it is (a pipe, a socket under a service manager), it is written
+    }
     struct stat info {};
     if (::stat(filename.c_str(), &info) != 0 || S_ISREG(info.st_mode) || S_ISFIFO(info.st_mode) ||
         S_ISCHR(info.st_mode)) {
@@ -77,6 +82,16 @@ bool AtomicFile::open(const std::string& filename, std::string& error) {
     discard();
     filename_ = filename;
     writeErrno_ = 0;
+    if (namesStandardOutput(filename)) {
+        // "-" and /dev/stdout: the standard output as the runner was given it (a pipe too,
+        // where /dev/stdout's link leads nowhere), written through.
+        fd_ = openStandardOutput();
+        if (fd_ < 0) {
+            error = "cannot write " + filename + ": " + std::strerror(errno);
+            return false;
+        }
+        return true;
+    }
     const std::string target = followLinks(filename);
     struct stat info {};
     if (::stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {

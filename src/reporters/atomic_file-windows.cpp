@@ -10,6 +10,7 @@
 #include <cstring>
 
 #include "platform/system_error.h"
+#include "reporters/standard_output.h"
 
 namespace robottestingframework {
 namespace reporters {
@@ -60,6 +61,14 @@ bool AtomicFile::open(const std::string& filename, std::string& error) {
     discard();
     filename_ = filename;
     writeErrno_ = 0;
+    if (namesStandardOutput(filename)) {
+        fd_ = openStandardOutput();  // "-": the standard output, written through
+        if (fd_ < 0) {
+            error = "cannot write " + filename + ": " + std::strerror(errno);
+            return false;
+        }
+        return true;
+    }
     const std::string refused = notAnOutputFile(filename);
     if (!refused.empty()) {
         error = "cannot write " + refused;

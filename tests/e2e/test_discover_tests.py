@@ -53,8 +53,19 @@ def listed(build, *args):
 
 def test_one_ctest_test_per_test_id(project):
     _, build = project
-    assert sorted(listed(build)) == ["discovered.answers/again", "discovered.answers/right",
-                                     "discovered.answers/wrong", "whole.right"]
+    assert sorted(listed(build)) == ["beside.beside/tests/gripper.sh", "discovered.answers/again",
+                                     "discovered.answers/right", "discovered.answers/wrong",
+                                     "whole.right"]
+
+
+def test_a_test_beside_the_suites_folder_has_no_dot_dot_in_its_name(project):
+    """suites/beside.xml names ../tests/gripper.sh: its id is beside/tests/gripper.sh (README
+    "Test ids"), which ctest runs through the runner's --filter."""
+    _, build = project
+    beside = run(["ctest", "--test-dir", build, "-V", "-R",
+                  r"^beside\.beside/tests/gripper\.sh$"])
+    assert beside.returncode == 0, beside.stdout + beside.stderr
+    assert re.search(r"^\d+: 1 passed, 0 failed$", beside.stdout, re.MULTILINE), beside.stdout
 
 
 def test_ctest_runs_one_test_id_through_the_runner(project):

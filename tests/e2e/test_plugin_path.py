@@ -61,3 +61,29 @@ def test_a_plugin_path_that_is_no_folder_is_an_error(tmp_path):
     assert bad.returncode == 2, bad
     assert "--plugin-path ../nowhere: no such folder" in bad.stderr, bad
     assert not os.path.exists(tmp_path / "nowhere")
+
+
+def test_not_found_says_the_plugin_path_and_the_option_that_finds_it(tmp_path):
+    """A first project's plug-in is built in its build tree, which nothing searches: the message
+    names --plugin-path and RTF_PLUGIN_PATH (what was given, or none) and, since the file is
+    below the working folder, the exact option that finds it, which then does."""
+    suites = tmp_path / "suites"
+    suites.mkdir()
+    (suites / "s.xml").write_text(SUITE)
+    none = run_runner("--suite", "s.xml", "--no-output", cwd=suites)
+    assert none.returncode == 1, none
+    assert "in --plugin-path and RTF_PLUGIN_PATH: none given;" in none.stdout, none
+    assert "below the working folder" not in none.stdout, none
+
+    (suites / "build" / "lib").mkdir(parents=True)
+    shutil.copy(plugin("passing_test"), suites / "build" / "lib" / "libprobe.so")
+    hinted = run_runner("--suite", "s.xml", "--no-output", "--plugin-path", "..", cwd=suites,
+                        env={"RTF_PLUGIN_PATH": "/nonexistent"})
+    assert hinted.returncode == 1, hinted
+    assert f"in --plugin-path and RTF_PLUGIN_PATH: {tmp_path}, /nonexistent;" in hinted.stdout, \
+        hinted
+    assert ("build/lib/libprobe.so is below the working folder: --plugin-path build/lib "
+            "(or RTF_PLUGIN_PATH=build/lib) finds it") in hinted.stdout, hinted
+    found = run_runner("--suite", "s.xml", "--no-output", "--plugin-path", "build/lib",
+                       cwd=suites)
+    assert found.returncode == 0 and "1 passed, 0 failed" in found.stdout, found

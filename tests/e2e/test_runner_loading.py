@@ -18,7 +18,7 @@ def test_missing_plugin_is_a_failed_test_with_the_places_searched(tmp_path, suit
     assert "libno_such_motor_test.so" in run.stdout, run   # the spellings tried
     # The suite's folder was searched, and is said as a path, not as "." (the suite was named
     # from its own folder).
-    assert f" in {tmp_path.resolve()}, " in run.stdout, run
+    assert f" in the suite's folder {tmp_path.resolve()};" in run.stdout, run
     assert not re.search(r" in \.(, |$)", run.stdout, re.M), run
     assert "1 passed, 1 failed" in run.stdout, run
 

@@ -229,9 +229,9 @@ def test_a_bad_durations_report_exits_2_naming_file_and_line(tmp_path):
     report.write_text('<testsuites name="RobotTestingFramework">\n'
                       '  <testsuite name="s00" tests="1" time="soon" id="0"/>\n</testsuites>\n')
     r = run("--suites", suites, "--no-output", "--shard-index", 0, "--shard-count", 2,
-            "--durations", report)
+            "--durations-from", report)
     assert r.returncode == 2, r
-    assert f"--durations {report}:2: expected <testsuite>" in r.stderr, r
+    assert f"--durations-from {report}:2: expected <testsuite>" in r.stderr, r
 
 
 def test_merge_bad_input_exits_2(tmp_path):

@@ -46,10 +46,10 @@ SUITE = """<suite name="arm-bench">
 </suite>
 """
 
-IDS = ["arm-bench/../tests/limits.py", "arm-bench/gripper",
-       "arm-bench/../tests/check.py[--speed 1]", "arm-bench/../tests/check.py[--speed 2 --fail]",
-       "arm-bench/../tests/check.py", "arm-bench/../tests/check.py[2]", "arm-bench/repeated.py"]
-FAILED = {"arm-bench/../tests/limits.py", "arm-bench/../tests/check.py[--speed 2 --fail]",
+IDS = ["arm-bench/tests/limits.py", "arm-bench/gripper",
+       "arm-bench/tests/check.py[--speed 1]", "arm-bench/tests/check.py[--speed 2 --fail]",
+       "arm-bench/tests/check.py", "arm-bench/tests/check.py[2]", "arm-bench/repeated.py"]
+FAILED = {"arm-bench/tests/limits.py", "arm-bench/tests/check.py[--speed 2 --fail]",
           "arm-bench/repeated.py"}
 
 
@@ -86,14 +86,14 @@ def test_every_output_names_a_test_by_its_one_id(tmp_path):
     assert r.returncode == 1, r
     local = [i.split("/", 1)[1] for i in IDS]
     # The console: the id, then the name the test gives itself.
-    assert "FAILED      ../tests/limits.py (joint limits)  (" in r.stdout, r.stdout
+    assert "FAILED      tests/limits.py (joint limits)  (" in r.stdout, r.stdout
     # A script's default name (its absolute path) is not shown beside the id.
-    assert "passed      ../tests/check.py[--speed 1]  (" in r.stdout, r.stdout
+    assert "passed      tests/check.py[--speed 1]  (" in r.stdout, r.stdout
     assert "FAILED      repeated.py  (" in r.stdout, r.stdout
     result_lines = [line for line in r.stdout.splitlines() if re.match(r"^  (passed|FAILED) ", line)]
     assert len(result_lines) == 7 and not any(str(tmp_path) in line for line in result_lines), \
         r.stdout
-    assert "../tests/limits.py (joint limits)" in (folder / "r.txt").read_text()
+    assert "tests/limits.py (joint limits)" in (folder / "r.txt").read_text()
 
     validate_junit(folder / "r.xml")
     root = ET.parse(folder / "r.xml").getroot()

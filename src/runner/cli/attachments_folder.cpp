@@ -5,6 +5,7 @@
 #include <system_error>
 
 #include "platform/environment.h"
+#include "reporters/standard_output.h"
 
 namespace fs = std::filesystem;
 
@@ -15,10 +16,14 @@ namespace {
 
 constexpr const char* kVariable = "RTF_ATTACHMENTS_DIR";
 
-// Beside the first output that is a file (or will be): not a device or a FIFO (/dev/stdout).
+// Beside the first output that is a file (or will be): not a device or a FIFO, not the standard
+// output ("-", /dev/stdout).
 fs::path reportsFolder(const Options& options) {
     if (!options.noOutput) {
         for (const OutputRequest& output : options.outputs) {
+            if (reporters::namesStandardOutput(output.file)) {
+                continue;
+            }
             std::error_code failed;
             const fs::file_status status = fs::status(output.file, failed);
             if (!failed && fs::exists(status) && !fs::is_regular_file(status)) {

@@ -19,6 +19,7 @@
 #include "runner/cli/list_command.h"
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/options.h"
+#include "runner/cli/output_paths.h"
 #include "runner/cli/plan_outcome.h"
 #include "runner/cli/planned_run.h"
 #include "runner/cli/private_networks.h"
@@ -29,6 +30,7 @@
 #include "runner/cli/run_listeners.h"
 #include "runner/cli/run_plan_filling.h"
 #include "runner/cli/run_rounds.h"
+#include "runner/cli/slowest_tests.h"
 #include "runner/cli/standalone_command.h"
 #include "runner/cli/world_join.h"
 #include "runner/cli/world_keeper.h"
@@ -43,6 +45,12 @@ int main(int argc, char** argv) {
     if (parsed.outcome == ParseResult::Outcome::Exit) {
         std::fputs(parsed.text.c_str(), parsed.status == 0 ? stdout : stderr);
         return parsed.status;
+    }
+    // A report to the standard output has it alone: the console goes to the standard error.
+    std::string error;
+    if (!keepStandardOutputForReports(options, error)) {
+        std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
+        return configurationError;
     }
     if (const std::optional<int> status = standaloneCommand(options)) {
         return *status;
@@ -78,7 +86,6 @@ int main(int argc, char** argv) {
     if (!openRunHistory(options, planned, argc, argv, history)) {
         return configurationError;
     }
-    std::string error;
     if (!prepareAttachmentsFolder(options, error)) {
         std::fprintf(stderr, "%s: %s\n", programName, error.c_str());
         return configurationError;
@@ -118,6 +125,10 @@ int main(int argc, char** argv) {
     if (history) {
         // A warning at worst: the status stays the run's.
         history->record(listeners.collector(), stderr, htmlReport);
+    }
+    if (options.slowestTests >= 0) {
+        std::fputs(slowestTestsText(listeners.collector(), options.slowestTests).c_str(), stdout);
+        std::fflush(stdout);
     }
     if (!listeners.writeOutputs(stderr)) {
         status = configurationError;

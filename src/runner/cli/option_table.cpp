@@ -175,8 +175,9 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "the tear-down failed", &o.worldDown},
 
         {"-o,--output", "FILE", Takes::Repeatable, console,
-         "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml); repeatable. "
-         "Default: result.txt", &w.outputs, {}, true},
+         "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml; - or /dev/stdout: "
+         "the standard output, the console then going to stderr); repeatable. Default: "
+         "result.txt", &w.outputs, {}, true},
         {"--output-type", "TYPE", Takes::One, console,
          "Type of the --output files without a TYPE: " + reporters::reporterTypeList() +
              " (default text)", &w.outputType, {}, true},
@@ -209,9 +210,12 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "from the CI engine's variables (see the README)", &o.shard.index},
         {"--shard-count", "N", Takes::One, shards, "The number of shards (see --shard-index)",
          &o.shard.count},
-        {"--durations", "REPORT", Takes::One, shards,
+        {"--durations", "N", Takes::One, shards,
+         "Print the N slowest tests after the run (0: all), as pytest does; a value that is not "
+         "a number is a REPORT, as --durations-from takes it", &w.durations},
+        {"--durations-from", "REPORT", Takes::One, shards,
          "Balance the shards by each suite's time in REPORT, a JUnit or JSON output of an "
-         "earlier run, or a --history file", &o.durations},
+         "earlier run, or a --history file (and, on a terminal, give the ETA)", &o.durations},
         {"--merge", "OUT_TYPE:OUT_FILE", Takes::One, shards,
          "Merge the JUnit or JSON REPORTs of a run's shards (the arguments after the options) "
          "into OUT_FILE, and exit", &w.merge},

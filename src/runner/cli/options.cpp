@@ -347,6 +347,25 @@ std::string readCommands(CommandLineWords& words, const CLI::App& app, Options& 
     return {};
 }
 
+// --durations N (pytest's: print the N slowest tests), or a REPORT as --durations-from takes
+// it (the form of earlier 3.0 builds).
+std::string readDurations(const CommandLineWords& words, Options& options) {
+    const std::string& durations = words.durations;
+    if (durations.empty()) {
+        return {};
+    }
+    if (durations.size() <= 9 && std::all_of(durations.begin(), durations.end(),
+                                             [](char c) { return c >= '0' && c <= '9'; })) {
+        options.slowestTests = std::stoi(durations);
+    } else if (!options.durations.empty()) {
+        return "--durations " + durations + " and --durations-from " + options.durations +
+               ": one REPORT at most (--durations N prints the N slowest tests)";
+    } else {
+        options.durations = durations;
+    }
+    return {};
+}
+
 }  // namespace
 
 std::string checkJobs(const std::string& text, unsigned int& jobs) {
@@ -406,7 +425,7 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         return exitWith(0, words.helpMan ? manPage(rows, RTF_VERSION) : markdownReference(rows));
     }
 
-    for (auto step : {readRunShape, readOutputs, readVariables, readSelection}) {
+    for (auto step : {readRunShape, readOutputs, readVariables, readSelection, readDurations}) {
         const std::string error = step(words, options);
         if (!error.empty()) {
             return usageError(error);

@@ -65,9 +65,10 @@ struct Options {
     bool listVariables = false;                                  // --list-vars
     Selection selection;                                         // --tag, --exclude-tag, --filter
     // Shards: --shard-index/--shard-count as given (checked with the environment's, by
-    // chooseShard), --durations REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
+    // chooseShard), --durations-from REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
     ShardFlags shard;
-    std::string durations;  // a report, or a --history file
+    std::string durations;  // --durations-from: a report, or a --history file
+    int slowestTests = -1;  // --durations N: print the N slowest tests (0: all); -1: not asked
     // --history FILE: every run appended to it (SQLite); --history-report [N]: print the
     // flakiest and most slowed-down tests of its last N runs and exit; --history-import:
     // load the REPORTs (JUnit or CTRF, the arguments after the options) into it and exit.

@@ -1,11 +1,14 @@
 #include "runner/cli/output_paths.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <set>
 
 #include "platform/file_identity.h"
 #include "reporters/atomic_file.h"
+#include "reporters/standard_output.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -57,7 +60,16 @@ std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
     }
 
     std::map<std::string, const OutputRequest*> files;
+    const OutputRequest* standardOutput = nullptr;
     for (const auto& output : outputs) {
+        if (reporters::namesStandardOutput(output.file)) {
+            if (standardOutput != nullptr) {
+                return describe(output) + ": " + describe(*standardOutput) +
+                       " goes to the standard output already; one output can go there";
+            }
+            standardOutput = &output;
+            continue;
+        }
         const std::string notFile = reporters::notAnOutputFile(output.file);
         if (!notFile.empty()) {
             return describe(output) + ": " + notFile;
@@ -83,6 +95,9 @@ std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
 
 bool createOutputFolders(const std::vector<OutputRequest>& outputs, std::string& error) {
     for (const auto& output : outputs) {
+        if (reporters::namesStandardOutput(output.file)) {
+            continue;
+        }
         const std::filesystem::path folder = std::filesystem::path(output.file).parent_path();
         std::error_code failed;
         if (folder.empty() || std::filesystem::is_directory(folder, failed)) {
@@ -94,6 +109,19 @@ bool createOutputFolders(const std::vector<OutputRequest>& outputs, std::string&
                     " (" + failed.message() + ")";
             return false;
         }
+    }
+    return true;
+}
+
+bool keepStandardOutputForReports(const Options& options, std::string& error) {
+    bool toStandardOutput = reporters::namesStandardOutput(options.merge.file);
+    for (const auto& output : options.outputs) {
+        toStandardOutput = toStandardOutput || reporters::namesStandardOutput(output.file);
+    }
+    if (toStandardOutput && !reporters::keepStandardOutputForReports()) {
+        error =
+            std::string("cannot keep the standard output for the reports: ") + std::strerror(errno);
+        return false;
     }
     return true;
 }

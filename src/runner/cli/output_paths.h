@@ -23,5 +23,11 @@ std::string checkOutputPaths(const std::vector<OutputRequest>& outputs,
 // when one cannot be made (a file of that name, no permission).
 bool createOutputFolders(const std::vector<OutputRequest>& outputs, std::string& error);
 
+// When an output (or --merge's) goes to the standard output ("-", /dev/stdout), keeps it for the
+// reports and sends the console and every other line of the runner to the standard error, so a
+// pipe (`--output json:- | jq`) reads the report alone. False with `error` set when the
+// descriptors cannot be moved.
+bool keepStandardOutputForReports(const Options& options, std::string& error);
+
 }  // namespace runner
 }  // namespace robottestingframework

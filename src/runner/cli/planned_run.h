@@ -42,8 +42,9 @@ struct PlannedRun {
     // shard's, the list showing each one's shard.
     std::vector<SuiteSpec> suites;
     ShardChoice shard;  // the shard this run is; a rerun takes none
-    // Each suite's time from --durations, read once for the shards and the progress line's ETA;
-    // none without --durations or, when not sharded, when it cannot be read (a warning says so).
+    // Each suite's time from --durations-from, read once for the shards and the progress line's
+    // ETA; none without --durations-from or, when not sharded, when it cannot be read (a warning
+    // says so).
     std::optional<SuiteSeconds> durations;
     // When listing a sharded run: the shard of each of `suites`; else empty.
     std::vector<unsigned int> shardOf;
@@ -53,7 +54,7 @@ struct PlannedRun {
 };
 
 // Plans the run of `suites` (as read, in order) for `shard` (prepareShard's choice). Reads the
-// --rerun-failed and --durations reports; a report that cannot be read is an Error.
+// --rerun-failed and --durations-from reports; a report that cannot be read is an Error.
 PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardChoice shard);
 
 }  // namespace runner

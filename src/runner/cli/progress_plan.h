@@ -1,5 +1,5 @@
 // What the progress line needs to know before the run: how many tests, and each suite's time
-// from --durations when one is given (for the ETA; planRun has read it).
+// from --durations-from when one is given (for the ETA; planRun has read it).
 #pragma once
 
 #include <optional>

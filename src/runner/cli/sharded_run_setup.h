@@ -24,7 +24,7 @@ bool prepareShard(Options& options, ShardChoice& choice, std::string& error);
 
 // The shard of each of `suites` (shard_split.h): by sorted id, suites sharing a lock together (and
 // suites linked by a test's `depends` on a test of another), and balanced by the suites' earlier
-// times (--durations) when there are any.
+// times (--durations-from) when there are any.
 std::vector<unsigned int> shardsOf(const std::vector<SuiteSpec>& suites, unsigned int count,
                                    const std::optional<SuiteSeconds>& durations);
 

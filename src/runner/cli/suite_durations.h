@@ -1,4 +1,4 @@
-// Each suite's time from an earlier run, for --durations (shard balancing, the ETA): read from
+// Each suite's time from an earlier run, for --durations-from (shard balancing, the ETA): read from
 // a JUnit or JSON report of this runner, or from a --history file (each suite's latest run).
 #pragma once
 
@@ -11,7 +11,7 @@ namespace runner {
 // Suite name -> seconds.
 using SuiteSeconds = std::map<std::string, double>;
 
-// Throws std::runtime_error "--durations FILE: ..." when the file cannot be read.
+// Throws std::runtime_error "--durations-from FILE: ..." when the file cannot be read.
 SuiteSeconds suiteDurations(const std::string& file);
 
 }  // namespace runner

@@ -8,7 +8,7 @@
 //     one row per process that appended (a run's shards share run_key) or per imported report
 //   tests(id, name)            the test ids (README "Test ids"), each once
 //   results(run, test, suite, state, duration, attempts)
-//   suites(run, name, duration)                       fixtures included: for --durations
+//   suites(run, name, duration)                       fixtures included: for --durations-from
 //   measurements(run, test, name, value, unit, low, high)
 #pragma once
 
@@ -65,7 +65,7 @@ private:
 };
 
 // True when the file at `path` starts as an SQLite database does ("SQLite format 3"): how
-// --durations tells a history file from a report.
+// --durations-from tells a history file from a report.
 bool looksLikeHistoryFile(const std::string& path);
 
 // Throws HistoryError "--history PATH: is a character device, not a history file ..." when

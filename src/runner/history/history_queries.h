@@ -1,5 +1,5 @@
 // What the history says, read back: each test's outcomes over the last N runs (the shards of
-// one run count as one run), and each suite's latest time (for --durations).
+// one run count as one run), and each suite's latest time (for --durations-from).
 #pragma once
 
 #include <map>

@@ -52,6 +52,37 @@ std::string below(const fs::path& path, const fs::path& folder) {
     return rest.generic_string();
 }
 
+// A normal relative path that climbs out of its folder first ("../tests/x.py").
+bool startsOutside(const fs::path& normal) {
+    return !normal.empty() && *normal.begin() == "..";
+}
+
+// The part of a plug-in beside the suite's folder ("../tests/gripper.py" of a suite in robot/):
+// its path from the folder it shares with the suite's folder ("tests/gripper.py"), so no id
+// holds "..". A path that climbs out and back in ("../robot/x.py" of a suite in robot/) is the
+// one inside ("x.py"). Lexical, as the rest of the id: the same on every machine.
+std::string outsidePart(const fs::path& normal, const std::string& suiteFolder) {
+    std::error_code error;
+    fs::path folder =
+        fs::absolute(suiteFolder.empty() ? "." : suiteFolder, error).lexically_normal();
+    if (!folder.has_filename()) {
+        folder = folder.parent_path();  // "/x/robot/" is "/x/robot": ".." leaves "robot"
+    }
+    if (!error) {
+        const std::string inside = below((folder / normal).lexically_normal(), folder);
+        if (!inside.empty()) {
+            return inside;
+        }
+    }
+    fs::path rest;
+    for (const fs::path& part : normal) {
+        if (!(rest.empty() && part == "..")) {
+            rest /= part;
+        }
+    }
+    return rest.empty() ? normal.generic_string() : rest.generic_string();
+}
+
 }  // namespace
 
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder) {
@@ -61,7 +92,10 @@ std::string pluginIdPart(const std::string& plugin, const std::string& suiteFold
     if (!written.is_absolute() && !written.has_root_directory()) {
         std::string text = written.generic_string();
         // "./x" is normal as "x"; a lone "." (never a plug-in) stays as written.
-        return text.empty() ? plugin : text;
+        if (text.empty()) {
+            return plugin;
+        }
+        return startsOutside(written) ? outsidePart(written, suiteFolder) : text;
     }
     std::error_code error;
     fs::path folder = fs::absolute(suiteFolder.empty() ? "." : suiteFolder, error);

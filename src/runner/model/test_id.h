@@ -1,7 +1,7 @@
 // A test's id (README: "Test ids"): the one name every output, --filter, --list, --rerun-failed,
-// --durations and --merge use for it. Made from the suite file alone, so it is the same on every
-// machine and in every workspace: "SUITE/LOCAL", where LOCAL is the test's name="..." if the suite
-// gives one, else its plug-in as written, normalised and relative to the suite's folder, then
+// --durations-from and --merge use for it. Made from the suite file alone, so it is the same on
+// every machine and in every workspace: "SUITE/LOCAL", where LOCAL is the test's name="..." if the
+// suite gives one, else its plug-in as written, normalised and relative to the suite's folder, then
 // "[param]" when the same plug-in appears more than once with different params, then "[2]",
 // "[3]", ... for a test that would otherwise share its id with an earlier one. A repetition k of
 // a test is "ID#k". The name a test gives itself (setName) is only shown beside it.
@@ -16,8 +16,10 @@ namespace robottestingframework {
 namespace runner {
 
 // The plug-in part of an id: `plugin` as written (variables expanded) made lexically normal
-// ("a/./b/../c" is "a/c"); an absolute path is made relative to `suiteFolder` when below it, else
-// only its file name is kept (a build tree's path must not reach the id).
+// ("a/./b/../c" is "a/c"); a relative path beside the suite's folder is said from the folder both
+// share ("../tests/x.py" is "tests/x.py": no id holds ".."); an absolute path is made relative to
+// `suiteFolder` when below it, else only its file name is kept (a build tree's path must not
+// reach the id).
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder);
 
 // Gives each test of `suite` its LOCAL id (TestSpec::id), in document order. `suiteFolder` is the

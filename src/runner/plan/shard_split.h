@@ -12,7 +12,7 @@ namespace runner {
 struct ShardItem {
     std::string id;                  // sorts the suites: the same on every machine
     std::vector<std::string> locks;  // suites sharing a lock go to the same shard
-    long long milliseconds = -1;     // from --durations; -1: unknown (the known ones' mean)
+    long long milliseconds = -1;     // from --durations-from; -1: unknown (the known ones' mean)
 };
 
 // The shard (0 to count - 1) of each item, in the items' order; every item is in exactly one.

@@ -68,7 +68,8 @@ TEST_F(FindPlugin, NotFoundSaysWhereItLooked) {
     std::string searched;
     EXPECT_EQ(findPlugin("nothing_here", dir_.string(), &searched), "");
     EXPECT_NE(searched.find("libnothing_here.so"), std::string::npos) << searched;
-    EXPECT_NE(searched.find(" in " + dir_.string() + ", "), std::string::npos) << searched;
+    EXPECT_NE(searched.find(" in the suite's folder " + dir_.string() + ";"), std::string::npos)
+        << searched;
     EXPECT_NE(searched.find("/usr/lib"), std::string::npos) << searched;
 
     // Beside a folder given relative, the folder is said as it is, not as ".".
@@ -76,10 +77,47 @@ TEST_F(FindPlugin, NotFoundSaysWhereItLooked) {
     std::filesystem::current_path(dir_);
     EXPECT_EQ(findPlugin("nothing_here", ".", &searched), "");
     std::filesystem::current_path(here);
-    EXPECT_NE(searched.find(" in " + std::filesystem::canonical(dir_).string() + ", "),
-              std::string::npos)
+    EXPECT_NE(
+        searched.find(" in the suite's folder " + std::filesystem::canonical(dir_).string() + ";"),
+        std::string::npos)
         << searched;
 
     EXPECT_EQ(findPlugin("sub/missing.so", dir_.string(), &searched), "");
     EXPECT_NE(searched.find("sub/missing.so"), std::string::npos) << searched;
+}
+
+TEST_F(FindPlugin, NotFoundNamesThePluginPathAndTheOptionThatWouldFindIt) {
+    const char* old = std::getenv("RTF_PLUGIN_PATH");
+    const std::string saved = old != nullptr ? old : "";
+    ::unsetenv("RTF_PLUGIN_PATH");
+    const auto here = std::filesystem::current_path();
+    std::filesystem::current_path(dir_);
+    std::string searched;
+    EXPECT_EQ(findPlugin("gripper", "sub", &searched), "");
+    EXPECT_NE(searched.find("in --plugin-path and RTF_PLUGIN_PATH: none given; in the library "
+                            "path: "),
+              std::string::npos)
+        << searched;
+    EXPECT_EQ(searched.find("below the working folder"), std::string::npos) << searched;
+
+    // Built in a folder nothing searches: the message gives the option, relative to here.
+    fs::create_directories(dir_ / "build" / "lib");
+    fs::create_directories(dir_ / ".hidden");
+    touch(dir_ / ".hidden" / "libgripper.so");
+    touch(dir_ / "build" / "lib" / "libgripper.so");
+    ::setenv("RTF_PLUGIN_PATH", "/nowhere/a:/nowhere/b", 1);
+    EXPECT_EQ(findPlugin("gripper", "sub", &searched), "");
+    std::filesystem::current_path(here);
+    if (old != nullptr) {
+        ::setenv("RTF_PLUGIN_PATH", saved.c_str(), 1);
+    } else {
+        ::unsetenv("RTF_PLUGIN_PATH");
+    }
+    EXPECT_NE(searched.find("in --plugin-path and RTF_PLUGIN_PATH: /nowhere/a, /nowhere/b;"),
+              std::string::npos)
+        << searched;
+    EXPECT_NE(searched.find(". build/lib/libgripper.so is below the working folder: "
+                            "--plugin-path build/lib (or RTF_PLUGIN_PATH=build/lib) finds it"),
+              std::string::npos)
+        << searched;
 }

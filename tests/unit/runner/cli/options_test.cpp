@@ -283,3 +283,40 @@ TEST(Options, HistoryImportTakesTheReportsAfterTheOptions) {
     Options none;
     EXPECT_EQ(parse({"--history", "h.db", "--history-import"}, none).status, 2);
 }
+
+TEST(Options, DurationsNPrintsTheSlowestAndAReportIsDurationsFrom) {
+    Options none;
+    ASSERT_TRUE(runs(parse({"-t", "a.so"}, none)));
+    EXPECT_EQ(none.slowestTests, -1);
+    EXPECT_EQ(none.durations, "");
+
+    Options five;  // pytest's --durations 5
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--durations", "5"}, five)));
+    EXPECT_EQ(five.slowestTests, 5);
+    EXPECT_EQ(five.durations, "");
+    Options all;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--durations=0"}, all)));
+    EXPECT_EQ(all.slowestTests, 0);
+
+    Options from;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--durations-from", "last.xml"}, from)));
+    EXPECT_EQ(from.durations, "last.xml");
+    EXPECT_EQ(from.slowestTests, -1);
+    // The form of earlier 3.0 builds: a value that is not a number is the report.
+    Options old;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--durations", "last.xml"}, old)));
+    EXPECT_EQ(old.durations, "last.xml");
+    EXPECT_EQ(old.slowestTests, -1);
+
+    Options both;
+    ASSERT_TRUE(runs(parse({"-t", "a.so", "--durations", "3", "--durations-from", "h.db"}, both)));
+    EXPECT_EQ(both.slowestTests, 3);
+    EXPECT_EQ(both.durations, "h.db");
+    Options twoReports;
+    const ParseResult result =
+        parse({"-t", "a.so", "--durations", "a.xml", "--durations-from", "b.xml"}, twoReports);
+    EXPECT_EQ(result.status, 2);
+    EXPECT_NE(result.text.find("--durations a.xml and --durations-from b.xml: one REPORT at most"),
+              std::string::npos)
+        << result.text;
+}

@@ -77,3 +77,11 @@ TEST_F(OutputPaths, APlugInNamedByManyTestsIsRefusedAsAnOutput) {
     const std::string problem = check({{"junit", test.path}});
     EXPECT_NE(problem.find("is the test " + test.path), std::string::npos) << problem;
 }
+
+TEST_F(OutputPaths, OneOutputGoesToTheStandardOutput) {
+    EXPECT_EQ(check({{"json", "-"}, {"junit", (dir_ / "a.xml").string()}}), "");
+    EXPECT_EQ(check({{"tap", "/dev/stdout"}}), "");
+    EXPECT_EQ(check({{"json", "-"}, {"junit", "/dev/stdout"}}),
+              "--output junit:/dev/stdout: --output json:- goes to the standard output already; "
+              "one output can go there");
+}

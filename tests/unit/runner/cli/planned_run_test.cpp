@@ -290,16 +290,14 @@ TEST_F(PlannedRunTest, VerboseNamesEachSuiteTheShardRunsAndItsFile) {
                   "out: shard 0 runs suite a (a.xml)", "out: shard 0 runs suite c (c.xml)"}));
 }
 
-TEST_F(PlannedRunTest, DurationsWithoutAShardWarnThatNothingIsBalancedAndAreKeptForTheEta) {
+TEST_F(PlannedRunTest, DurationsWithoutAShardAreKeptForTheEtaWithoutAWarning) {
     Options options;
     options.durations = report({{"a", "a1", "passed", 30}, {"b", "b1", "passed", 10}});
     const PlannedRun plan = planRun(options, fourSuites(), ShardChoice());
     EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
     EXPECT_EQ(plan.suites.size(), 4u);
-    EXPECT_EQ(notesOf(plan),
-              (std::vector<std::string>{"err: warning: --durations " + options.durations +
-                                        ": not sharded, nothing to balance (only a terminal's "
-                                        "progress line reads it, for its ETA)"}));
+    // Only the progress line's ETA reads them: that is their use, not a mistake to warn about.
+    EXPECT_EQ(notesOf(plan), std::vector<std::string>{});
     // Read here, once: the progress line takes them from the plan.
     ASSERT_TRUE(plan.durations.has_value());
     EXPECT_EQ(*plan.durations, (SuiteSeconds{{"a", 30.0}, {"b", 10.0}}));
@@ -312,8 +310,8 @@ TEST_F(PlannedRunTest, DurationsThatCannotBeReadWithoutAShardOnlyCostTheEta) {
     EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Run);
     EXPECT_FALSE(plan.durations.has_value());
     const std::vector<std::string> notes = notesOf(plan);
-    ASSERT_EQ(notes.size(), 2u);
-    EXPECT_EQ(notes[0].rfind("err: warning: --durations " + options.durations + ": ", 0), 0u)
+    ASSERT_EQ(notes.size(), 1u);
+    EXPECT_EQ(notes[0].rfind("err: warning: --durations-from " + options.durations + ": ", 0), 0u)
         << notes[0];
     EXPECT_NE(notes[0].find("; no ETA"), std::string::npos) << notes[0];
 }
@@ -338,7 +336,8 @@ TEST_F(PlannedRunTest, DurationsThatCannotBeReadAreAnErrorNamingThem) {
     options.durations = (dir_ / "missing.xml").string();
     const PlannedRun plan = planRun(options, fourSuites(), shardOf(0, 2));
     EXPECT_EQ(plan.outcome, PlannedRun::Outcome::Error);
-    EXPECT_NE(plan.error.find("--durations " + options.durations), std::string::npos) << plan.error;
+    EXPECT_NE(plan.error.find("--durations-from " + options.durations), std::string::npos)
+        << plan.error;
 }
 
 TEST_F(PlannedRunTest, ARerunOfAShardThenASelectionKeepsTheShardItCameFrom) {

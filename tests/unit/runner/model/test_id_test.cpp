@@ -35,9 +35,23 @@ std::vector<std::string> idsOf(std::vector<TestSpec> tests, const std::string& f
 TEST(TestId, IsThePluginAsWrittenMadeLexicallyNormal) {
     EXPECT_EQ(pluginIdPart("tests/../tests/arith.lua", "suites"), "tests/arith.lua");
     EXPECT_EQ(pluginIdPart("./a/./b.py", "suites"), "a/b.py");
-    EXPECT_EQ(pluginIdPart("../tests/arith.lua", "suites"), "../tests/arith.lua");
     EXPECT_EQ(pluginIdPart("a//b.py", "suites"), "a/b.py");
     EXPECT_EQ(pluginIdPart("ArmTest", "suites"), "ArmTest");
+}
+
+TEST(TestId, APathBesideTheSuiteFolderIsSaidFromTheFolderTheyShare) {
+    // No ".." in an id: "../tests/x" of a suite in suites/ is said from their common folder.
+    EXPECT_EQ(pluginIdPart("../tests/arith.lua", "suites"), "tests/arith.lua");
+    EXPECT_EQ(pluginIdPart("../../lab/tests/arm.py", "proj/suites"), "lab/tests/arm.py");
+    EXPECT_EQ(pluginIdPart("./../tests/../tests/arith.lua", "suites"), "tests/arith.lua");
+    // Out and back in is inside.
+    EXPECT_EQ(pluginIdPart("../suites/arith.lua", "proj/suites"), "arith.lua");
+    EXPECT_EQ(pluginIdPart("../suites/arith.lua", "proj/suites/"), "arith.lua");
+}
+
+TEST(TestId, APathBesideTheSuiteFolderKeepsItsIdUniqueInTheSuite) {
+    EXPECT_EQ(idsOf({test("tests/gripper.py"), test("../tests/gripper.py")}),
+              (std::vector<std::string>{"arm/tests/gripper.py", "arm/tests/gripper.py[2]"}));
 }
 
 TEST(TestId, AnAbsolutePathBelowTheSuiteFolderIsMadeRelativeToIt) {
