@@ -32,6 +32,8 @@ import soak_bench  # noqa: E402  (its suite writer and its measured run)
 import network_bench  # noqa: E402  (private networks: bench/network_bench.py)
 import ctest_world_bench  # noqa: E402  (worlds started under ctest)
 
+# What --part can select, in the order they run.
+PARTS = ("start-up", "in-process", "isolated", "python", "network", "worlds", "soak")
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 # The soak run's peak before issue 23 (README: Tests and benchmarks), and its allowed growth.
@@ -238,6 +240,39 @@ class Table:
                   ours.cpu / theirs.cpu if theirs.cpu > 0 else None, "(stated)", True)
 
 
+def python_figures(table, runner, folder, files, forked_python, forked_why, rounds, quick):
+    """`files` one-check Python files isolated, against pytest and `pytest --forked`."""
+    python_suite = write_python_suite(folder, files)
+    pytest_files = write_pytest_files(folder, files)
+    python = shutil.which("python3") or sys.executable
+    ours_python = ([runner, "--suite", python_suite, "--no-output"],
+                   os.path.dirname(python_suite), None)
+    figure = f"{files} Python one-check files, isolated"
+    pytest_argv = ["-B", "-m", "pytest", "-q", "-p", "no:cacheprovider", pytest_files]
+    try:
+        mine, ref = paired_runs(ours_python, ([python, *pytest_argv], folder, None), rounds)
+    except Failed as e:
+        table.failed(figure, f"pytest did not run (python3-pytest, scripts/install-deps.sh):"
+                     f" {e}")
+    else:
+        table.line(figure, fmt_time(mine.seconds), f"pytest, {files} files "
+                   f"{fmt_time(ref.seconds)}", mine.seconds / ref.seconds, "<= 0.50x",
+                   mine.seconds <= 0.5 * ref.seconds)
+    figure = f"{files} Python files, isolated vs --forked"
+    if forked_python is None:
+        (table.skipped if quick else table.failed)(figure, forked_why)
+    else:
+        try:
+            mine, ref = paired_runs(ours_python, ([forked_python, *pytest_argv, "--forked"],
+                                                  folder, None), rounds)
+        except Failed as e:
+            table.failed(figure, f"pytest --forked did not run: {e}")
+        else:
+            table.line(figure, fmt_time(mine.seconds),
+                       f"pytest --forked {fmt_time(ref.seconds)}", mine.seconds / ref.seconds,
+                       "<= 0.20x", mine.seconds <= 0.2 * ref.seconds)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--build", default="build", help="the build tree (default: build)")
@@ -248,7 +283,10 @@ def main():
                         "temporary folder, removed afterwards)")
     parser.add_argument("--quick", action="store_true", help="a smoke run: one round, 1/100 of "
                         "the tests, no soak (CTest's bench.perf_smoke); its figures mean nothing")
+    parser.add_argument("--part", action="append", choices=PARTS, help="measure only this part "
+                        "(repeatable; default: all of them): " + ", ".join(PARTS))
     args = parser.parse_args()
+    parts = set(args.part or PARTS)
     # Every count is divided by `scale` with --quick.
     scale = 100 if args.quick else 1
     if args.quick:
@@ -303,7 +341,10 @@ def main():
         # Start-up: the one-test runs are short; more rounds steady their median.
         start_rounds = max(rounds, 21)
         figure = "1 test, in process (start-up)"
-        if rtf2.runner:
+        one_peak = None
+        if "start-up" not in parts:
+            pass
+        elif rtf2.runner:
             mine, theirs = against_rtf2(1, start_rounds)
             table.line(figure, fmt_time(mine.seconds), f"RTF 2.0.1 {fmt_time(theirs.seconds)}",
                        mine.seconds / theirs.seconds, "<= 1.5x",
@@ -312,12 +353,15 @@ def main():
         else:
             mine = ours([one], "none", count_rounds=start_rounds)
             table.skipped(figure, f"ours {fmt_time(mine.seconds)}; {rtf2.why}")
-        one_peak = mine.peak
-        isolated_one = ours([one], "process", count_rounds=start_rounds)
-        table.line("1 test, isolated (the default)", fmt_time(isolated_one.seconds), "", None,
-                   "< 20 ms", isolated_one.seconds < 0.020)
+        if "start-up" in parts:
+            one_peak = mine.peak
+        isolated_one = None
+        if parts & {"start-up", "isolated"}:
+            isolated_one = ours([one], "process", count_rounds=start_rounds)
+            table.line("1 test, isolated (the default)", fmt_time(isolated_one.seconds), "",
+                       None, "< 20 ms", isolated_one.seconds < 0.020)
 
-        for count in (10000 // scale, 20000 // scale):
+        for count in (10000 // scale, 20000 // scale) if "in-process" in parts else ():
             if rtf2.runner:
                 mine, theirs = against_rtf2(count, rounds)
                 table.line(f"{count} tests, in process: time", fmt_time(mine.seconds),
@@ -332,6 +376,8 @@ def main():
                 mine = ours([write_cpp_suite(folder, plugin, f"cpp_{count}", count)], "none")
                 table.skipped(f"{count} tests, in process", f"ours {fmt_time(mine.seconds)}, "
                               f"{mib(mine.peak):.1f} MiB; {rtf2.why}")
+            if one_peak is None:
+                one_peak = ours([one], "none", count_rounds=start_rounds).peak
             per_test = (mine.peak - one_peak) / (count - 1)  # KiB, the one-test run's peak aside
             table.line(f"{count} tests, in process: memory per test",
                        f"{per_test * 1024:.0f} B", "", None, "(stated)", True)
@@ -340,7 +386,9 @@ def main():
         cpp_1000 = write_cpp_suite(folder, plugin, "cpp_isolated", isolated)
         quarters = [write_cpp_suite(folder, plugin, f"cpp_isolated_{i}", isolated // 4)
                     for i in range(4)]
-        if ctest is None:
+        if "isolated" not in parts:
+            pass
+        elif ctest is None:
             table.failed(f"{isolated} tests, isolated", "ctest is not on PATH (the reference)")
         else:
             tree = write_ctest_tree(folder, isolated)
@@ -366,41 +414,14 @@ def main():
                                "<= 2.00x", per_test <= 2.0 * bare)
 
         files = 200 // scale
-        python_suite = write_python_suite(folder, files)
-        pytest_files = write_pytest_files(folder, files)
-        python = shutil.which("python3") or sys.executable
-        ours_python = ([runner, "--suite", python_suite, "--no-output"],
-                       os.path.dirname(python_suite), None)
-        figure = f"{files} Python one-check files, isolated"
-        pytest_argv = ["-B", "-m", "pytest", "-q", "-p", "no:cacheprovider", pytest_files]
-        try:
-            mine, ref = paired_runs(ours_python, ([python, *pytest_argv], folder, None), rounds)
-        except Failed as e:
-            table.failed(figure, f"pytest did not run (python3-pytest, scripts/install-deps.sh):"
-                         f" {e}")
-        else:
-            table.line(figure, fmt_time(mine.seconds), f"pytest, {files} files "
-                       f"{fmt_time(ref.seconds)}", mine.seconds / ref.seconds, "<= 0.50x",
-                       mine.seconds <= 0.5 * ref.seconds)
-        figure = f"{files} Python files, isolated vs --forked"
-        if forked_python is None:
-            (table.skipped if args.quick else table.failed)(figure, forked_why)
-        else:
-            try:
-                mine, ref = paired_runs(ours_python, ([forked_python, *pytest_argv, "--forked"],
-                                                      folder, None), rounds)
-            except Failed as e:
-                table.failed(figure, f"pytest --forked did not run: {e}")
-            else:
-                table.line(figure, fmt_time(mine.seconds),
-                           f"pytest --forked {fmt_time(ref.seconds)}", mine.seconds / ref.seconds,
-                           "<= 0.20x", mine.seconds <= 0.2 * ref.seconds)
-
-        network_bench.run(table, runner, folder, rounds, args.quick)
-
-        if not args.quick:
+        if "python" in parts:
+            python_figures(table, runner, folder, files, forked_python, forked_why, rounds,
+                           args.quick)
+        if "network" in parts:
+            network_bench.run(table, runner, folder, rounds, args.quick)
+        if not args.quick and "worlds" in parts:
             ctest_world_bench.report(runner, folder, lambda *f: table.line(*f[:3], None, *f[3:]))
-        if args.soak_count > 0:
+        if args.soak_count > 0 and "soak" in parts:
             soak_folder = os.path.join(folder, "soak")
             os.makedirs(soak_folder, exist_ok=True)
             soak_suite = soak_bench.write_run(soak_folder, args.soak_count)

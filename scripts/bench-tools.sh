@@ -4,8 +4,9 @@
 # (BUILD_DIR/bench-tools, a virtual environment of its own). Versions are pinned, pytest with
 # it: pytest-forked (1.6.0 and 1.7.5) cannot send pytest 9's reports back from its forked
 # child (`NodeId` is not marshallable: every test fails), so the venv has the last pytest 8.
-# Once installed, nothing is fetched again. Run by bench/perf_bench.py (`./run.sh bench`) when it is missing, as
-# scripts/python-tools.sh is by the tests; nothing is installed outside the build tree.
+# Once installed, nothing is fetched again. Run by bench/perf_bench.py (`./run.sh bench`) when
+# it is missing, as scripts/python-tools.sh is by the tests; nothing is installed outside the
+# build tree.
 set -euo pipefail
 
 build=${1:?usage: scripts/bench-tools.sh BUILD_DIR [PYTHON]}
