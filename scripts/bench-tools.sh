@@ -11,18 +11,6 @@ set -euo pipefail
 
 build=${1:?usage: scripts/bench-tools.sh BUILD_DIR [PYTHON]}
 python=${2:-python3}
-prefix="$build/bench-tools"
-pins=(pytest==8.3.5 pytest-forked==1.6.0)
-stamp="$prefix/installed"
-
-if [[ -f "$stamp" && "$(cat "$stamp")" == "${pins[*]}" ]]; then
-    exit 0
-fi
-rm -rf "$prefix"
-if ! "$python" -m venv "$prefix"; then
-    echo "bench-tools: $python cannot make a virtual environment; run scripts/install-deps.sh" >&2
-    exit 1
-fi
-echo "bench-tools: installing ${pins[*]} into $prefix"
-"$prefix/bin/python" -m pip install --quiet --disable-pip-version-check --no-input "${pins[@]}"
-echo "${pins[*]}" >"$stamp"
+# shellcheck source=scripts/pinned-venv.sh
+. "$(dirname "$0")/pinned-venv.sh"
+pinned_venv bench-tools "$build/bench-tools" "$python" pytest==8.3.5 pytest-forked==1.6.0
