@@ -23,8 +23,10 @@
 #   ./run.sh coverage   builds build-coverage/ with -DRTF_COVERAGE=ON, runs every test and
 #                       writes build-coverage/coverage/index.html and coverage.txt
 #   ./run.sh bench [OPTIONS...]  every performance figure in one run (bench/perf_bench.py: ours
-#                       beside CTest's, pytest's and RTF 2.0.1's, with ratio and target; about
-#                       15 minutes with its soak run, --soak-count 0 leaves that out)
+#                       beside RTF 2.0.1's runner (Debian's packages, unpacked into the build
+#                       tree), CTest's, a bare fork's, pytest's and pytest --forked's, measured
+#                       in the same run, with ratio and target; about 15 minutes with its soak
+#                       run, --soak-count 0 leaves that out, --part NAME picks parts)
 #   ./run.sh fuzz [SECONDS [TARGET...]]  builds build-fuzz/ with clang and -DRTF_FUZZ=ON and
 #                       runs every fuzz target (or those named) SECONDS (default 60), two at a
 #                       time; findings in build-fuzz/findings/<target>/

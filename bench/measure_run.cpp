@@ -1,6 +1,8 @@
 // rtf-bench-measure PROGRAM [ARGS...]: runs PROGRAM (stdin, stdout and stderr on /dev/null)
-// and prints one line "<wall seconds> <peak KiB> <exit status>" -- its wall time and its own
-// peak resident memory (ru_maxrss from wait4).
+// and prints one line "<wall seconds> <peak KiB> <exit status> <CPU seconds>" -- its wall time,
+// its own peak resident memory (ru_maxrss from wait4) and the processor time it and the
+// children it waited for used (user + system, from wait4): on a shared machine the CPU time is
+// the steadier figure, the wall time the one a user waits.
 //
 // Why a program of its own: the kernel starts a process's ru_maxrss at the resident size of
 // the process that forked it (a fork copies the parent's page counts; a vfork or posix_spawn
@@ -50,6 +52,10 @@ int main(int argc, char** argv) {
     const double seconds =
         static_cast<double>(end.tv_sec - start.tv_sec) + (end.tv_nsec - start.tv_nsec) * 1e-9;
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    std::printf("%.6f %ld %d\n", seconds, usage.ru_maxrss, code);
+    const auto cpu = [](const timeval& t) {
+        return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6;
+    };
+    std::printf("%.6f %ld %d %.6f\n", seconds, usage.ru_maxrss, code,
+                cpu(usage.ru_utime) + cpu(usage.ru_stime));
     return 0;
 }

@@ -8,18 +8,6 @@ set -euo pipefail
 
 build=${1:?usage: scripts/python-tools.sh BUILD_DIR [PYTHON]}
 python=${2:-python3}
-prefix="$build/python-tools"
-pins=(junitparser==5.0.3 xunitparser==1.3.4)
-stamp="$prefix/installed"
-
-if [[ -f "$stamp" && "$(cat "$stamp")" == "${pins[*]}" ]]; then
-    exit 0
-fi
-rm -rf "$prefix"
-if ! "$python" -m venv "$prefix"; then
-    echo "python-tools: $python cannot make a virtual environment; run scripts/install-deps.sh" >&2
-    exit 1
-fi
-echo "python-tools: installing ${pins[*]} into $prefix"
-"$prefix/bin/python" -m pip install --quiet --disable-pip-version-check --no-input "${pins[@]}"
-echo "${pins[*]}" >"$stamp"
+# shellcheck source=scripts/pinned-venv.sh
+. "$(dirname "$0")/pinned-venv.sh"
+pinned_venv python-tools "$build/python-tools" "$python" junitparser==5.0.3 xunitparser==1.3.4

@@ -5,6 +5,7 @@ damaged or foreign file, and a history that cannot be written (the reports still
 import json
 import sqlite3
 import subprocess
+import sys
 import xml.etree.ElementTree as ET
 
 import pytest
@@ -84,6 +85,27 @@ def test_every_run_is_appended_and_the_report_finds_the_flaky_test(tmp_path, iso
     r = run_runner("--history", "h.db", "--history-report", "1", cwd=folder)
     assert r.returncode == 0, r
     assert "in the last 1 runs" in r.stdout and "hist/flip" not in r.stdout, r
+
+
+@pytest.mark.skipif(not sys.platform.startswith("linux"),
+                    reason="SQLite is loaded on first use on Linux; linked elsewhere")
+def test_sqlite_is_loaded_only_by_a_run_with_a_history(tmp_path):
+    """Start-up (issue 37): the runner does not link SQLite, so a run without --history does
+    not load it (about a tenth of a one-test run's time); a run with --history loads it when
+    the history is opened, and records the run."""
+    ldd = subprocess.run(["ldd", RUNNER], capture_output=True, text=True, timeout=30)
+    assert ldd.returncode == 0 and "libsqlite3" not in ldd.stdout, ldd.stdout
+    folder = make_suite(tmp_path / "suite")
+    # The dynamic loader names each library it loads (LD_DEBUG=files, on stderr).
+    r = run_runner("--isolation", "none", "--suite", "hist.xml", "--no-output", cwd=folder,
+                   env={"LD_DEBUG": "files"})
+    assert r.returncode == 0, r
+    assert "libsqlite3" not in r.stderr, r.stderr[-2000:]
+    r = run_runner("--isolation", "none", "--suite", "hist.xml", "--no-output", "--history",
+                   "h.db", cwd=folder, env={"LD_DEBUG": "files"})
+    assert r.returncode == 0, r
+    assert "file=libsqlite3.so.0" in r.stderr, r.stderr[-2000:]
+    assert history_rows(folder / "h.db", "hist/ok") == [("passed", 1)]
 
 
 def test_a_retried_test_is_recorded_flaky_with_its_attempts(tmp_path):

@@ -1,6 +1,6 @@
 #include "runner/history/history_database.h"
 
-#include <sqlite3.h>
+#include "runner/history/sqlite_library.h"
 
 #include <chrono>
 #include <cstdint>
@@ -96,7 +96,7 @@ HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(pat
             // A WAL file is read beside its -wal and -shm files, which SQLite makes when they
             // are missing: in a folder this process may not write, it cannot. Read as it is,
             // the file tells whether it is a history file; then only a write is impossible.
-            sqlite3_close(db_);
+            sqlite().close(db_);
             db_ = nullptr;
             open(immutableUri(path), SQLITE_OPEN_READONLY | SQLITE_OPEN_URI);
             if (!readFacts()) {
@@ -113,24 +113,26 @@ HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(pat
         }
         checkOrCreateSchema(mode);
     } catch (...) {
-        sqlite3_close(db_);
+        sqlite().close(db_);
         db_ = nullptr;
         throw;
     }
 }
 
 void HistoryDatabase::open(const std::string& name, int flags) {
-    if (sqlite3_open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
-        const std::string why = db_ != nullptr ? sqlite3_errmsg(db_) : "out of memory";
-        sqlite3_close(db_);
+    if (sqlite().open_v2(name.c_str(), &db_, flags | SQLITE_OPEN_NOMUTEX, nullptr) != SQLITE_OK) {
+        const std::string why = db_ != nullptr ? sqlite().errmsg(db_) : "out of memory";
+        sqlite().close(db_);
         db_ = nullptr;
         throw HistoryError("--history " + path_ + ": cannot open the history file (" + why + ")");
     }
-    sqlite3_busy_timeout(db_, busyTimeoutMilliseconds);
+    sqlite().busy_timeout(db_, busyTimeoutMilliseconds);
 }
 
 HistoryDatabase::~HistoryDatabase() {
-    sqlite3_close(db_);
+    if (db_ != nullptr) {
+        sqlite().close(db_);
+    }
 }
 
 bool HistoryDatabase::readFacts() {
@@ -148,7 +150,7 @@ bool HistoryDatabase::readFacts() {
         runSql(db_, "COMMIT", path_);
         return true;
     } catch (const HistoryError&) {
-        sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+        sqlite().exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
         return false;
     }
 }
@@ -181,13 +183,13 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
     const auto giveUp =
         std::chrono::steady_clock::now() + std::chrono::milliseconds(busyTimeoutMilliseconds);
     for (;;) {
-        const int status = sqlite3_exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, nullptr);
+        const int status = sqlite().exec(db_, "PRAGMA journal_mode=WAL", nullptr, nullptr, nullptr);
         if (status == SQLITE_OK) {
             break;
         }
         if ((status != SQLITE_BUSY && status != SQLITE_LOCKED) ||
             std::chrono::steady_clock::now() > giveUp) {
-            throw HistoryError("--history " + path_ + ": " + sqlite3_errmsg(db_));
+            throw HistoryError("--history " + path_ + ": " + sqlite().errmsg(db_));
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(20));
     }
@@ -201,7 +203,7 @@ void HistoryDatabase::checkOrCreateSchema(Mode mode) {
                    path_);
             runSql(db_, "COMMIT", path_);
         } catch (...) {
-            sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+            sqlite().exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
             throw;
         }
     }

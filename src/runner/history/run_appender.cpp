@@ -1,6 +1,6 @@
 #include "runner/history/run_appender.h"
 
-#include <sqlite3.h>
+#include "runner/history/sqlite_library.h"
 
 #include "runner/history/sqlite_statement.h"
 
@@ -26,7 +26,7 @@ RunAppender::RunAppender(HistoryDatabase& database, const HistoryRun& run) : dat
     }
     insertRun.bind(7, run.source);
     insertRun.step();
-    run_ = sqlite3_last_insert_rowid(db);
+    run_ = sqlite().last_insert_rowid(db);
     insertTest_ =
         std::make_unique<SqliteStatement>(db, "INSERT OR IGNORE INTO tests(name) VALUES(?)", file);
     findTest_ = std::make_unique<SqliteStatement>(db, "SELECT id FROM tests WHERE name = ?", file);
@@ -51,15 +51,15 @@ RunAppender::~RunAppender() {
     insertSuite_.reset();
     insertMeasurement_.reset();
     if (open_) {
-        sqlite3_exec(database_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
+        sqlite().exec(database_.handle(), "ROLLBACK", nullptr, nullptr, nullptr);
     }
 }
 
 std::int64_t RunAppender::testRow(const std::string& test) {
     insertTest_->reset();
     insertTest_->bind(1, test).step();
-    if (sqlite3_changes(database_.handle()) > 0) {
-        return sqlite3_last_insert_rowid(database_.handle());
+    if (sqlite().changes(database_.handle()) > 0) {
+        return sqlite().last_insert_rowid(database_.handle());
     }
     findTest_->reset();
     findTest_->bind(1, test);
