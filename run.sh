@@ -190,7 +190,7 @@ portable_job() {
     # this machine's init leaves them zombies, and the portable build (no subreaper of its own)
     # leaves a test's orphans to it; their zombies would hold each test for the whole grace.
     # Left out: a daemon that leaves its session escapes the portable build, which reaches a
-    # test's descendants only through process groups (README, "Platforms").
+    # test's descendants only through process groups (docs/development/platforms.md).
     ctest_prefix=(tini -s --)
     PYTEST_ADDOPTS="-k 'not test_daemons_of_exec_tests_do_not_survive_the_run'" \
         run_ctest portable-e2e build-portable -R "$portable_e2e" || status=1

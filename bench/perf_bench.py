@@ -32,7 +32,7 @@ RTF2_MEASURED = "2026 (issue 23)"
 RTF2_ONE_TEST_S = 0.007
 RTF2_10K_S, RTF2_10K_MIB = 0.058, 15.7
 RTF2_20K_S, RTF2_20K_MIB = 0.231, 27.8
-# The soak run's peak before issue 23 (README: Tests and benchmarks), and its allowed growth.
+# The soak run's peak before issue 23 (docs/development/tests-and-benchmarks.md), and its allowed growth.
 SOAK_PEAK_MIB = 41.0
 
 TRIVIAL_PYTHON = """import robottestingframework
