@@ -6,6 +6,10 @@
 #   ./run.sh test       runs every test (ctest), then RTF 2.0.1's own tests against the
 #                       installed tree (rtf2_job), the sanitizer job, the portable-POSIX job
 #                       and the Windows job (below); last line "N passed, N failed" over all
+#   ./run.sh docs       installs mkdocs and doxygen (scripts/install-deps.sh --docs) and builds
+#                       the documentation site into build/docs/site/ (scripts/build-docs.sh:
+#                       the C++ API reference with Doxygen, warnings as errors; mkdocs
+#                       --strict; every internal link checked)
 #   ./run.sh rtf2       RTF 2.0.1's own tests alone (scripts/rtf2-tests.sh, build/rtf2/)
 #   ./run.sh portable   the portable-POSIX job alone: builds build-portable/ with
 #                       -DRTF_PORTABLE_POSIX=ON (the macOS code paths, on Linux) and runs the
@@ -37,7 +41,7 @@ root=$PWD
 dir=${RTF_BUILD_DIR:-build}
 
 usage() {
-    echo "usage: $0 example|test|rtf2|sanitize|portable|windows|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
+    echo "usage: $0 example|test|docs|rtf2|sanitize|portable|windows|coverage|bench [OPTIONS...]|fuzz [SECONDS [TARGET...]]" >&2
     exit 2
 }
 
@@ -188,7 +192,7 @@ portable_job() {
     # this machine's init leaves them zombies, and the portable build (no subreaper of its own)
     # leaves a test's orphans to it; their zombies would hold each test for the whole grace.
     # Left out: a daemon that leaves its session escapes the portable build, which reaches a
-    # test's descendants only through process groups (README, "Platforms").
+    # test's descendants only through process groups (docs/development/platforms.md).
     ctest_prefix=(tini -s --)
     PYTEST_ADDOPTS="-k 'not test_daemons_of_exec_tests_do_not_survive_the_run'" \
         run_ctest portable-e2e build-portable -R "$portable_e2e" || status=1
@@ -379,6 +383,10 @@ test)
     portable_job || true
     windows_job || true
     finish
+    ;;
+docs)
+    scripts/install-deps.sh --docs
+    exec scripts/build-docs.sh "$dir"
     ;;
 rtf2)
     scripts/install-deps.sh

@@ -37,7 +37,7 @@ import shared_world_bench  # noqa: E402  (8 suites sharing one world)
 PARTS = ("start-up", "in-process", "isolated", "python", "network", "worlds", "soak")
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
-# The soak run's peak before issue 23 (README: Tests and benchmarks), and its allowed growth.
+# The soak run's peak before issue 23 (docs/development/tests-and-benchmarks.md), and its allowed growth.
 SOAK_PEAK_MIB = 41.0
 
 TRIVIAL_PYTHON = """import robottestingframework

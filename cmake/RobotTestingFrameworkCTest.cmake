@@ -66,7 +66,7 @@
 # --world-up keeps the world in a process of its own) and "/world:down" (FIXTURES_CLEANUP); its
 # tests run in that world (--world); `ctest -R` adds the two to the tests it picks. WORLD
 # PER_TEST: each test sets the suite's fixtures up and tears them down itself (what Windows
-# always does: no world keeper there). docs/ctest-worlds.md.
+# always does: no world keeper there). docs/how-to/ctest-worlds.md.
 
 include_guard(GLOBAL)
 

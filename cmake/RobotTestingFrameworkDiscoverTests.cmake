@@ -10,7 +10,7 @@
 # fixtures up once, in a keeper process) and <prefix><suite>/world:down (FIXTURES_CLEANUP:
 # --world-down DIR), and each of its tests runs with --world DIR (FIXTURES_REQUIRED) in that
 # world. Every test of a suite, world tests included, takes the suite's RESOURCE_LOCK, so that
-# they never run at once, as in one run of the suite. docs/ctest-worlds.md.
+# they never run at once, as in one run of the suite. docs/how-to/ctest-worlds.md.
 if(CMAKE_VERSION VERSION_LESS 3.19)
     message(FATAL_ERROR "robottestingframework_discover_tests needs ctest 3.19 or later "
                         "(string(JSON)); this is ${CMAKE_VERSION}")

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The portable files compile without GCC-only things (README.md, Platforms). The library users
+# The portable files compile without GCC-only things (docs/development/platforms.md). The library users
 # link (include/, src/core, src/reporters, src/dll, src/variables) is what a Windows build takes
 # first; a file named for its platform or compiler (-posix, -linux, -portable, -windows, -apple,
 # -itanium, -msvc) and the fuzz targets (clang only) are left out. Two checks:

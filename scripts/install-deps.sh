@@ -6,6 +6,8 @@
 #                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`,
 #                                      tcl to generate SQLite's amalgamation, unicode-data
 #                                      and python3-six to generate RE2's tables
+#   scripts/install-deps.sh --docs     also the documentation's tools (./run.sh docs): mkdocs
+#                                      and doxygen
 set -euo pipefail
 
 packages=(
@@ -26,10 +28,14 @@ packages=(
 # (dpkg-source); SQLite's sqlite3.c is generated from its source tree with tclsh (tcl), RE2's
 # Unicode tables from unicode-data with its Python scripts (python3-six).
 windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev tcl unicode-data python3-six)
+# Optional: the documentation site (./run.sh docs, scripts/build-docs.sh).
+docs_packages=(mkdocs doxygen)
 if [[ "${1:-}" == --windows ]]; then
     packages+=("${windows_packages[@]}")
+elif [[ "${1:-}" == --docs ]]; then
+    packages+=("${docs_packages[@]}")
 elif [[ $# -gt 0 ]]; then
-    echo "usage: $0 [--windows]" >&2
+    echo "usage: $0 [--windows|--docs]" >&2
     exit 2
 fi
 

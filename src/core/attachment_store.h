@@ -1,7 +1,7 @@
 // Where testAttach puts files: the run's attachments folder, beside the report outputs. The
 // runner names it (RTF_ATTACHMENTS_DIR, inherited by its workers); without a runner it is
-// ./rtf-attachments. Bounded per file and per run (README: Attachments), across every process
-// of the run: the folder itself is the account, read under a lock.
+// ./rtf-attachments. Bounded per file and per run (docs/how-to/measurements-and-attachments.md),
+// across every process of the run: the folder itself is the account, read under a lock.
 #pragma once
 
 #include <cstdint>

@@ -1,5 +1,5 @@
 // MSVC: type_info::name() is readable already ("class std::out_of_range"). Not verified here
-// (no MSVC on these machines); README.md, Platforms.
+// (no MSVC on these machines); docs/development/platforms.md.
 #include "type_name.h"
 
 namespace robottestingframework {

@@ -1,7 +1,8 @@
 // Windows: the script language modules are DLLs (robottestingframework-lua.dll), found and
 // loaded with LoadLibrary as script_module_loading-posix.cpp does with dlopen. Only Lua is
 // built (its source is Debian's, compiled by MinGW-w64); Python and Ruby need a Windows
-// CPython or Ruby to link and test with, which these machines do not have (README: Platforms).
+// CPython or Ruby to link and test with, which these machines do not have
+// (docs/development/platforms.md).
 #include "languages/script_module_loading.h"
 
 #include <windows.h>

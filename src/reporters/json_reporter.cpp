@@ -136,8 +136,9 @@ void appendTest(ReportText& out, const TestRecord& test, const SuiteRecord& suit
     const long long start = origin + milliseconds(test.start);
     out += "{\"testId\":\"" + testId + "\"";
     out += ",\"executionId\":\"" + std::to_string(test.id) + "\"";
-    // The name is the test's id in its suite, the same in every workspace (README: "Test ids");
-    // extra["robotology.rtf"]: id is its whole id, name the name the test gave itself.
+    // The name is the test's id in its suite, the same in every workspace
+    // (docs/reference/test-ids.md); extra["robotology.rtf"]: id is its whole id, name the name the
+    // test gave itself.
     const std::string& name = test.reportName();
     out += ",\"name\":" + jsonString(name.empty() ? "unnamed test" : name);
     out += ",\"status\":\"" + std::string(ctrfStatus(test.status)) + "\"";

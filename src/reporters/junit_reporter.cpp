@@ -201,7 +201,7 @@ void appendTestCase(ReportText& out, const TestRecord& test, const std::string& 
     std::vector<ResultEvent> scratch;
     const std::vector<ResultEvent>& events = test.eventsInOrder(scratch);
     out += "    <testcase";
-    // classname/name is the test's id (README: "Test ids"), so CI history follows a test
+    // classname/name is the test's id (docs/reference/test-ids.md), so CI history follows a test
     // across workspaces; the name it gave itself is a property of the suite ("rtf.name.S.T":
     // junit-10.xsd allows no <properties> in a <testcase>).
     out += attr("name", test.reportName());

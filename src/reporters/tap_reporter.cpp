@@ -248,7 +248,7 @@ void TapReporter::endTestSuite(const TestSuite* /*suite*/) {
 }
 
 void TapReporter::renameTest(const Test* test, const std::string& name) {
-    // A test with an id is described by it (README: "Test ids"), whatever it calls itself.
+    // A test with an id is described by it (docs/reference/test-ids.md), whatever it calls itself.
     if (test != nullptr && !test->getKey().empty()) {
         return;
     }

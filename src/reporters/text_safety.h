@@ -42,8 +42,8 @@ enum class Markup {
 std::string escapeMarkup(const std::string& text, Markup where);
 
 // `name` as a file name every report can link and Jenkins' [[ATTACHMENT|...]] line can hold
-// (README: Attachments): control characters, bytes that are not UTF-8, `[`, `]`, `|` and what
-// Windows refuses in a name (`<`, `>`, `:`, `"`, `\`, `?`, `*`) each become `_`.
+// (docs/how-to/measurements-and-attachments.md): control characters, bytes that are not UTF-8, `[`,
+// `]`, `|` and what Windows refuses in a name (`<`, `>`, `:`, `"`, `\`, `?`, `*`) each become `_`.
 std::string safeFileName(const std::string& name);
 
 }  // namespace reporters

@@ -65,7 +65,7 @@ private:
     }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
     // "tests/arith.lua (ArmTest)": the test's id in its suite and the name it gives itself
-    // (README: "Test ids"), as the console shows it.
+    // (docs/reference/test-ids.md), as the console shows it.
     static std::string shownAs(const Test* test, const std::string& name) {
         const std::string& key = test->getKey();
         // An absolute path is a loader's default name, not one the test chose.

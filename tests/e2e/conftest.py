@@ -239,7 +239,7 @@ def junit_state(case):
 def junit_display_names(root):
     """{<testcase>: the name the test gave itself}, from its suite's "rtf.name.S.T" property
     (S the suite's id + 1, T the test's place in it, the fixtures testcase not counted): the
-    name beside the id (README "Test ids"), where junit-10.xsd lets a report keep it."""
+    name beside the id (docs/reference/test-ids.md), where junit-10.xsd lets a report keep it."""
     names = {}
     for suite in root.iter("testsuite"):
         given = {p.get("name"): p.get("value") for p in suite.findall("properties/property")}

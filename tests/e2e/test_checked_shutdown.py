@@ -1,4 +1,4 @@
-"""Checked shutdowns of the process fixture through the installed runner (docs/process-fixture.md,
+"""Checked shutdowns of the process fixture through the installed runner (docs/reference/world-file.md,
 "Checked shutdowns"): a world process that exits otherwise than its <stop exit="..."> says, crashes
 or outlives its grace when stopped fails the suite with a record of its own in every report,
 named "world 'NAME': stop of 'PROCESS'", with the last lines of its log; an expected ending

@@ -1,4 +1,4 @@
-"""The CI engine files of examples/ci (docs/ci-engines.md) work: they parse, and their commands,
+"""The CI engine files of examples/ci (docs/how-to/ci-engines.md) work: they parse, and their commands,
 run as each engine would run them (4 shards as 4 processes, each with its engine's variables),
 give merged reports equal to the one-machine run."""
 import ast
@@ -134,7 +134,7 @@ def test_googletest_variables_shard_too(tmp_path):
 
 
 def test_the_docs_name_the_example_files():
-    docs = (SOURCE_DIR / "docs" / "ci-engines.md").read_text()
+    docs = (SOURCE_DIR / "docs" / "how-to" / "ci-engines.md").read_text()
     for name in ("examples/ci/gitlab-ci.yml", "examples/ci/k8s-indexed-job.yaml",
                  "examples/ci/bazel/BUILD", "examples/ci/bazel/rtf_shard.sh"):
         assert name in docs

@@ -1,4 +1,4 @@
-"""A real middleware world: Cyclone DDS (tests/e2e/dds/, docs/dds-world.md), through the
+"""A real middleware world: Cyclone DDS (tests/e2e/dds/, docs/how-to/dds-world.md), through the
 installed runner, from the suites' own folder. The world publishes on a DDS topic; its test
 subscribes for 1 s, measures the rate and the latency against limits, and checks that every
 sample carries its own network namespace's token and comes from one writer. Three unedited

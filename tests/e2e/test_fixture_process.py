@@ -222,7 +222,7 @@ def test_a_process_that_dies_mid_suite_skips_the_rest_with_the_reason(tmp_path, 
 
 def test_a_line_of_10_mb_costs_the_fixture_nothing_and_the_next_line_is_seen(tmp_path, mark):
     # The <output> check's std::regex recursed over the whole 10 MB line: the fixture died of
-    # SIGSEGV. Each line is now matched on its first 4 KiB (docs/process-fixture.md).
+    # SIGSEGV. Each line is now matched on its first 4 KiB (docs/reference/world-file.md).
     w = world(tmp_path, f"""
   <process name="chatty" command="{actor('--spew', 10, '--say', 'ready')}">
     <ready timeout="30s"><output>^x*y?ready$</output></ready>
@@ -368,7 +368,7 @@ def test_a_port_taken_after_the_start_by_another_program_is_not_the_world_ready(
             runner.communicate()
     if cache_value("RTF_PORTABLE_POSIX", "OFF") == "ON":
         # The portable build (macOS code paths) cannot tell whose listener it reached and
-        # counts it, as documented (docs/process-fixture.md).
+        # counts it, as documented (docs/reference/world-file.md).
         assert runner.returncode == 0, (out, err)
         return
     assert runner.returncode == 1, (out, err)
@@ -494,5 +494,5 @@ def test_sigkill_of_the_runner_leaves_no_process(tmp_path, mark, isolation):
         for pid in left:
             os.kill(pid, signal.SIGKILL)
         pytest.xfail(f"--isolation none: {len(left)} escaped grandchild(ren) outlived a SIGKILL "
-                     "of the runner (docs/process-fixture.md)")
+                     "of the runner (docs/reference/world-file.md)")
     assert gone, f"left behind: {survivors()}"

@@ -231,7 +231,7 @@ def test_a_process_fixture_whose_process_ignores_the_stop_fails_the_run(tmp_path
     r = run_runner("--isolation", isolation, "--suite", suite, "--no-output", cwd=tmp_path,
                    env=marked(marker))
     assert r.returncode == 1, r
-    # A failed record of its own (docs/process-fixture.md, "Checked shutdowns").
+    # A failed record of its own (docs/reference/world-file.md, "Checked shutdowns").
     assert "world 'stubborn': stop of 'stubborn'" in r.output, r
     assert "did not stop within 300 ms of SIGTERM: killed with SIGKILL" in r.output, r
 

@@ -1,7 +1,7 @@
 """Tests that live beside the suite's folder (`../tests/gripper.sh` of robot/robot.xml, issue
 38 item 10): no ".." in their ids. The id is the path from the folder the suite's folder and the
 test share (`robot/tests/gripper.sh`), the same in --list, --filter, the reports,
---rerun-failed and the history (README "Test ids"); CTest's names are checked in
+--rerun-failed and the history (docs/reference/test-ids.md); CTest's names are checked in
 test_discover_tests.py. Run from the suite's folder with relative paths."""
 import json
 import sqlite3

@@ -372,7 +372,7 @@ def test_a_script_that_names_itself_is_named_so_in_every_output(tmp_path, isolat
     if "is not supported by this build" in r.output:
         pytest.skip("this build leaves the language out")
     assert r.returncode == 1, r
-    # Shown beside its id (the file given, README "Test ids"), which the reports name it by.
+    # Shown beside its id (the file given, docs/reference/test-ids.md), which the reports name it by.
     shown = f"renaming.{ext} (renamed by the script)"
     assert console_line(r.stdout, shown).split()[0] == "FAILED", r
     assert list(junit_cases(junit)) == [f"renaming.{ext}"]

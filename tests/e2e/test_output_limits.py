@@ -220,7 +220,7 @@ def test_a_test_renaming_itself_to_megabytes_keeps_4_kib_of_its_name(tmp_path, i
     validate_junit(files["xml"])
     validate_ctrf(files["json"])
     validate_tap(files["tap"])
-    # The display name, kept beside the id (README "Test ids") as the suite's rtf.name.S.T.
+    # The display name, kept beside the id (docs/reference/test-ids.md) as the suite's rtf.name.S.T.
     root = ET.parse(files["xml"]).getroot()
     case = next(root.iter("testcase"))
     assert case.get("name") == "renaming.py", case.get("name")

@@ -152,6 +152,7 @@ def test_install_layout(prefix):
         f"{LIBDIR}/cmake/RobotTestingFramework/RobotTestingFrameworkBracket.cmake",
         f"{LIBDIR}/pkgconfig/robottestingframework.pc",
         "share/doc/RobotTestingFramework/README.md",
+        "share/doc/RobotTestingFramework/docs/index.md",   # what the README links to
         "share/doc/RobotTestingFramework/examples/suites/example.xml",
     ]
     missing = [path for path in expected if not (prefix / path).exists()]

@@ -4,7 +4,7 @@ from conftest import plugin, run_runner, validate_ctrf, validate_junit, validate
 
 
 def by_name(report):
-    # By the name each test gives itself (extra["robotology.rtf"].name); "name" is its id (README "Test ids").
+    # By the name each test gives itself (extra["robotology.rtf"].name); "name" is its id (docs/reference/test-ids.md).
     return {test["extra"]["robotology.rtf"]["name"].split(" ")[0]: test for test in report["results"]["tests"]}
 
 

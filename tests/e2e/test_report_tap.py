@@ -34,7 +34,7 @@ def test_suites_are_subtests_with_a_point_per_test_and_diagnostics(tmp_path, sui
     assert [p["ok"] for p in inner] == [True, False, True, False], inner
     assert inner[2]["name"] == "a # b \\ c", inner
     failing = inner[1]
-    assert failing["name"] == "failing_test.so", failing  # its id (README "Test ids")
+    assert failing["name"] == "failing_test.so", failing  # its id (docs/reference/test-ids.md)
     assert failing["diag"]["severity"] == "fail", failing
     assert "two and two make five" in failing["diag"]["message"], failing
     assert failing["diag"]["at"]["file"].endswith("failing_test.cpp"), failing
@@ -91,7 +91,7 @@ def test_crashes_and_bytes_that_are_not_utf8_stay_valid_tap(tmp_path):
     crash, bad = points_at(parsed, 1)
     assert not crash["ok"] and crash["diag"]["severity"] == "crash", crash
     assert "SIGSEGV" in crash["diag"]["message"], crash
-    # Described by its id (README "Test ids"), not by the bytes it names itself with; a '#'
+    # Described by its id (docs/reference/test-ids.md), not by the bytes it names itself with; a '#'
     # and a '\\' of a description are escaped (test_suites_are_subtests_...).
     assert bad["name"] == "bad_bytes_test.so", bad
     assert "\ufffd" in bad["diag"]["message"], bad

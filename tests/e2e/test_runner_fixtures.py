@@ -74,11 +74,13 @@ def test_a_failed_fixture_counts_in_junit_as_the_readers_count_and_as_the_readme
     cases = ET.parse(tmp_path / "out.xml").getroot().findall("testsuite/testcase")
     assert [c.get("name") for c in cases][-1] == "fixtures", [c.get("name") for c in cases]
 
-    # Every README sentence about the fixtures testcase and tests= says it is counted.
-    readme = re.sub(r"\s+", " ", (SOURCE_DIR / "README.md").read_text())
+    # Every sentence of the README and docs/ about the fixtures testcase and tests= says it is
+    # counted.
+    pages = [SOURCE_DIR / "README.md"] + sorted((SOURCE_DIR / "docs").rglob("*.md"))
+    readme = re.sub(r"\s+", " ", " ".join(page.read_text() for page in pages))
     sentences = [s for s in re.split(r"(?<=[.|])\s", readme)
                  if "fixtures" in s and "tests=" in s]
-    assert sentences, "the README says nothing of the fixtures testcase in tests="
+    assert sentences, "the docs say nothing of the fixtures testcase in tests="
     for sentence in sentences:
         assert "not one more test" not in sentence and "not counted" not in sentence, sentence
         assert "counted in `tests=`" in sentence, sentence

@@ -1,6 +1,6 @@
 """Reports to the standard output: `-` and `/dev/stdout` for every output kind, into a pipe (as
 `| jq` reads it), and the JSON list of --list. The standard output then carries the report
-alone: the console goes to the standard error (README "Outputs")."""
+alone: the console goes to the standard error (docs/reference/report-formats.md)."""
 import json
 import xml.etree.ElementTree as ET
 

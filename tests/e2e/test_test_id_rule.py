@@ -1,4 +1,4 @@
-"""One id per test (README: "Test ids"): made from the suite file alone, the same on the console,
+"""One id per test (docs/reference/test-ids.md): made from the suite file alone, the same on the console,
 in every output, in --list, --filter and --rerun-failed, and in a moved copy of the workspace.
 Run from the suite's own folder with relative paths, as users do."""
 import json

@@ -38,7 +38,7 @@ class TestCase:
 # (name, failed, the problem it must carry) in run order.
 EXPECTED = [("twin", True, "the failing twin fails"), ("twin", False, None),
             ("renamed mid-run", True, "fails before the rename")]
-# Each one's id in the suite (README: "Test ids"): what every output names it by; the name it
+# Each one's id in the suite (docs/reference/test-ids.md): what every output names it by; the name it
 # gives itself is shown beside it on the console and kept in the reports.
 IDS = ["twin.py[--fail]", "twin.py", "renaming.py"]
 

@@ -102,7 +102,7 @@ PYTHON_FIXTURE = """class FixtureManager:
 PYTHON_WORDS = ["PY-PASS-PRINT", "PY-PASS-WRITE", "PY-PASS-STDERR", "PY-PASS-THREAD",
                 "PY-PASS-UNENDED", "PY-FAIL-PRINT", "PY-FAIL-AFTER", "PY-RAISE-SETUP",
                 "PY-RAISE-PRINT", "PY-RAISE-TEARDOWN", "PY-EXIT-FLUSHED"]
-# CTRF keeps the fixtures' output of a suite whose fixture failed only (docs/ctrf.md): these
+# CTRF keeps the fixtures' output of a suite whose fixture failed only (docs/reference/ctrf.md): these
 # are looked for in the JUnit report (the suite's <system-out>).
 PYTHON_FIXTURE_WORDS = ["PY-FIXTURE-SETUP", "PY-FIXTURE-TEARDOWN"]
 

@@ -1,5 +1,5 @@
 // The measurements and attachments an exec test gives in a TAP point's YAML diagnostics
-// (README: "Executables and TAP"):
+// (docs/tutorial/other-languages.md):
 //
 //   ok 1 - arm tracks
 //     ---

@@ -61,8 +61,9 @@ TestCase* currentTest() {
 // A thread a test started carries that test (its id and name, `_rtf_test`, stamped by
 // kThreadOwnerSource): with --isolation none the runner goes on to the next test while the
 // thread may still run. What it reports after its test ended belongs to that test, never to
-// the one running then: it is dropped with a warning naming its test (README: Python). Empty
-// when the calling thread is the call's own, carries no test, or its test is the running one.
+// the one running then: it is dropped with a warning naming its test
+// (docs/tutorial/other-languages.md). Empty when the calling thread is the call's own, carries no
+// test, or its test is the running one.
 std::string endedOwner() {
     if (g_caller.test != nullptr && PyThread_get_thread_ident() == g_caller.thread) {
         return "";
@@ -316,8 +317,8 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
         }
         Asserter::testFail(passed, messageHere(py::str(text)), currentTest());
     });
-    // A number with its unit and optional limits (README: Measurements); outside them the test
-    // fails and goes on.
+    // A number with its unit and optional limits (docs/how-to/measurements-and-attachments.md);
+    // outside them the test fails and goes on.
     m.def(
         "testMeasure",
         [](const py::object& name, const py::object& value, const py::object& unit,
@@ -343,7 +344,8 @@ PYBIND11_EMBEDDED_MODULE(robottestingframework, m) {
         },
         py::arg("name"), py::arg("value"), py::arg("unit") = py::none(),
         py::arg("low") = py::none(), py::arg("high") = py::none());
-    // Copies a file into the run's attachments folder (README: Attachments).
+    // Copies a file into the run's attachments folder
+    // (docs/how-to/measurements-and-attachments.md).
     m.def(
         "testAttach",
         [](const py::object& path, const py::object& description) {

@@ -1,7 +1,7 @@
-// The run's attachments folder (README: Attachments): rtf-attachments/ beside the first file
-// output (the current folder without one), made by the first attachment and emptied when a run
-// starts, and named to the tests through RTF_ATTACHMENTS_DIR, which the workers inherit. A folder
-// the user named in RTF_ATTACHMENTS_DIR is used as it is.
+// The run's attachments folder (docs/how-to/measurements-and-attachments.md): rtf-attachments/
+// beside the first file output (the current folder without one), made by the first attachment and
+// emptied when a run starts, and named to the tests through RTF_ATTACHMENTS_DIR, which the workers
+// inherit. A folder the user named in RTF_ATTACHMENTS_DIR is used as it is.
 #pragma once
 
 #include <string>

@@ -20,7 +20,7 @@ namespace {
 // With the tests in the runner's process, each exec test's program gets a variable of this run
 // (languages::setExecGuard), and so does everything it starts; should the runner be killed,
 // even by SIGKILL, a watchdog kills every process carrying it, as a world's watchdog does for
-// its processes (docs/process-fixture.md): the parent-death signal reaches the program only.
+// its processes (docs/reference/world-file.md): the parent-death signal reaches the program only.
 // Started with the first exec test (a run without one has no watchdog); it sweeps when the
 // runner's end closes its pipe, or when endExecGuard() lets it go.
 std::mutex guardMutex;

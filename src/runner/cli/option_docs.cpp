@@ -101,7 +101,8 @@ std::string manPage(const std::vector<OptionRow>& rows, const std::string& versi
     page += ".SH EXIT STATUS\n" + roff(exitStatusHelp) + "\n";
     page +=
         ".SH SEE ALSO\nThe command-line reference, docs/reference/command-line.md, and the "
-        "README of Robot Testing Framework.\n";
+        "documentation of Robot Testing Framework, docs/index.md (./run.sh docs builds it as "
+        "HTML).\n";
     return page;
 }
 

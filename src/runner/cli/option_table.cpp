@@ -166,7 +166,7 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "Set up the suite's fixtures (its world, and its private network) in a keeper process "
          "that outlives this one, with its control socket in DIR; exit 0 when the world is up, "
          "1 with the reason when it failed. The keeper stops its world when the process that "
-         "started the runner (ctest) ends (docs/ctest-worlds.md)", &o.worldUp},
+         "started the runner (ctest) ends (docs/how-to/ctest-worlds.md)", &o.worldUp},
         {"--world", "DIR", Takes::One, running,
          "Run the suite's tests in the world a --world-up DIR keeper holds, without setting up "
          "the suite's fixtures; exit 2 when no keeper is there", &o.world},
@@ -207,7 +207,7 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
 
         {"--shard-index", "I", Takes::One, shards,
          "Run only shard I (from 0) of the selected suites split --shard-count ways; default: "
-         "from the CI engine's variables (see the README)", &o.shard.index},
+         "from the CI engine's variables (docs/how-to/shards.md)", &o.shard.index},
         {"--shard-count", "N", Takes::One, shards, "The number of shards (see --shard-index)",
          &o.shard.count},
         {"--durations", "N", Takes::One, shards,

@@ -83,7 +83,7 @@ struct Options {
     std::string resources;  // --resources FILE: the pools of <resource pool="..."/>
     std::vector<std::string> pluginPath;  // --plugin-path DIR: searched for plug-ins by name
     Colour colour = Colour::Auto;         // --color auto|always|never
-    // One world per suite under CTest (docs/ctest-worlds.md): --world-up DIR sets up the
+    // One world per suite under CTest (docs/how-to/ctest-worlds.md): --world-up DIR sets up the
     // suite's fixtures in a keeper process and returns; --world DIR runs the tests in the world
     // that keeper holds; --world-down DIR stops it. Empty: not given.
     std::string worldUp;

@@ -1,4 +1,4 @@
-// One world per suite under CTest (docs/ctest-worlds.md). --world-up DIR sets up the suite's
+// One world per suite under CTest (docs/how-to/ctest-worlds.md). --world-up DIR sets up the suite's
 // fixtures (its world, in its private network when it has one) in a keeper: a process of its
 // own session that outlives the runner which started it, with a control socket in DIR
 // (world_protocol.h). The runner returns once the set-up ended and prints what a run prints

@@ -1,6 +1,6 @@
 // Windows: an isolated run's fixtures run in the runner's process, as with --isolation none
-// (README: Platforms); its tests still run in workers. A fixture worker needs the fixture calls
-// over a second pipe, not built yet.
+// (docs/development/platforms.md); its tests still run in workers. A fixture worker needs the
+// fixture calls over a second pipe, not built yet.
 #include "runner/execution/in_process_executor.h"
 #include "runner/execution/isolated_executor.h"
 

@@ -15,7 +15,7 @@ namespace runner {
 namespace {
 
 // More than this per test is cut to its tail: the last lines are the ones that explain. The
-// same 64 KiB as a worker's output (README: Isolation).
+// same 64 KiB as a worker's output (docs/reference/isolation-timeouts-interrupts.md).
 const long long maxOutput = 64 * 1024;
 
 void flushStreams() {

@@ -6,7 +6,7 @@
 // Tables (schema version 1):
 //   runs(id, run_key, started, host, command, shard_index, shard_count, source)
 //     one row per process that appended (a run's shards share run_key) or per imported report
-//   tests(id, name)            the test ids (README "Test ids"), each once
+//   tests(id, name)            the test ids (docs/reference/test-ids.md), each once
 //   results(run, test, suite, state, duration, attempts)
 //   suites(run, name, duration)                       fixtures included: for --durations-from
 //   measurements(run, test, name, value, unit, low, high)

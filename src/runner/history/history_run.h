@@ -22,7 +22,7 @@ struct HistoryRun {
 };
 
 struct HistoryTestResult {
-    std::string test;           // its id, "SUITE/TEST" (README "Test ids")
+    std::string test;           // its id, "SUITE/TEST" (docs/reference/test-ids.md)
     std::string suite;          // the suite's name
     std::string state;          // TestStatus's word: "passed", "timed out", "flaky", ...
     double duration = 0;        // seconds, every attempt's

@@ -278,7 +278,7 @@ std::string makeIdsUniqueAcrossSuites(std::vector<SuiteSpec>& suites) {
         files.push_back(file.lexically_normal());
     }
     // Several files: each says which it is. One file given several times (two copies of a
-    // suite side by side, README: Running suites in parallel): its copies are numbered.
+    // suite side by side, docs/how-to/parallel-runs-and-worlds.md): its copies are numbered.
     const std::set<fs::path> distinct(files.begin(), files.end());
     const fs::path common = distinct.size() > 1 ? commonFolder(files) : fs::path();
     std::map<fs::path, unsigned int> copies;

@@ -1,4 +1,5 @@
-// A test's id (README: "Test ids"): the one name every output, --filter, --list, --rerun-failed,
+// A test's id (docs/reference/test-ids.md): the one name every output, --filter, --list,
+// --rerun-failed,
 // --durations-from and --merge use for it. Made from the suite file alone, so it is the same on
 // every machine and in every workspace: "SUITE/LOCAL", where LOCAL is the test's name="..." if the
 // suite gives one, else its plug-in as written, normalised and relative to the suite's folder, then

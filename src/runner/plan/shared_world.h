@@ -1,6 +1,6 @@
 // A world shared by the suites of a run (<fixture type="process" scope="run">): one instance,
 // started by the first suite that needs it, kept while any suite that needs it has not ended,
-// stopped by the last one (docs/process-fixture.md, "Shared worlds").
+// stopped by the last one (docs/reference/world-file.md, "Shared worlds").
 //
 // Each suite holds a stand-in fixture (SharedWorldFixture) in the world's place among its
 // fixtures. Its setup starts the world when it is the first (on the suite's thread), or waits

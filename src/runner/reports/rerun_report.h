@@ -31,7 +31,7 @@ std::vector<FailedTest> parseFailedTests(const std::string& text, const std::str
 void keepFailedTests(std::vector<SuiteSpec>& suites, const std::vector<FailedTest>& failed);
 
 // The name of the record of a world process that did not stop cleanly (the process fixture's
-// "world 'NAME': stop of 'PROCESS'", docs/process-fixture.md).
+// "world 'NAME': stop of 'PROCESS'", docs/reference/world-file.md).
 bool isStopRecord(const std::string& name);
 
 }  // namespace runner
