@@ -218,7 +218,7 @@ TEST_F(ShardSetup, DurationsThatCannotBeReadThrowNamingTheReport) {
         suiteDurations(report);
         FAIL() << "no error";
     } catch (const std::runtime_error& e) {
-        EXPECT_NE(std::string(e.what()).find("--durations " + report), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("--durations-from " + report), std::string::npos)
             << e.what();
     }
 }
