@@ -122,6 +122,11 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "and ?, separated by ':', negative ones after '-' (e.g. 'arm/*-*slow*'); '\\' makes "
          "the next character literal ('arm/*\\-fast'); a test's id written as it is selects "
          "that test alone", &w.filters},
+        {"-k,--keyword", "EXPR", Takes::One, selection,
+         "Run only the tests matching EXPR, as pytest's -k: names matched without case as "
+         "substrings of the test's id (suite/test) or of a tag, with and, or, not and "
+         "parentheses (e.g. -k 'speed and not slow'); with --filter and --tag, a test must "
+         "match all", &w.keyword},
         {"--rerun-failed", "REPORT", Takes::One, selection,
          "Run only the tests that failed, errored, crashed or timed out in REPORT, a JUnit or "
          "JSON output of an earlier run", &o.rerunFailed},

@@ -258,6 +258,14 @@ std::string readSelection(const CommandLineWords& words, Options& options) {
                 .push_back(std::move(expression));
         }
     }
+    if (!words.keyword.empty()) {
+        KeywordExpression expression;
+        std::string error;
+        if (!KeywordExpression::parse(words.keyword, expression, error)) {
+            return "-k '" + words.keyword + "': " + error;
+        }
+        options.selection.keywords.push_back(std::move(expression));
+    }
     for (const auto& text : words.filters) {
         NameFilter filter;
         std::string error;

@@ -63,7 +63,7 @@ struct Options {
     std::vector<std::string> variableFiles;                      // --var-file FILE
     bool list = false;                                           // --list: print, run nothing
     bool listVariables = false;                                  // --list-vars
-    Selection selection;                                         // --tag, --exclude-tag, --filter
+    Selection selection;                                         // --tag, --exclude-tag, --filter, -k
     // Shards: --shard-index/--shard-count as given (checked with the environment's, by
     // chooseShard), --durations-from REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
     ShardFlags shard;

@@ -126,7 +126,7 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
             if (!options.allowEmpty && !options.list && !options.listVariables) {
                 plan.outcome = PlannedRun::Outcome::NothingSelected;
                 plan.error =
-                    "no test is selected (by --filter, --tag or --exclude-tag); "
+                    "no test is selected (by -k, --filter, --tag or --exclude-tag); "
                     "--allow-empty makes that a success";
                 return plan;
             }
