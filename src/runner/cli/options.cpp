@@ -439,6 +439,13 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
             return usageError(error);
         }
     }
+    if ((options.lastFailed || options.failedFirst) && options.noCache) {
+        return usageError(std::string(options.lastFailed ? "--lf" : "--ff") +
+                          " reads the cache folder, which --no-cache turns off");
+    }
+    if (options.lastFailed && !options.rerunFailed.empty()) {
+        return usageError("--lf and --rerun-failed both choose the tests to rerun: give one");
+    }
     if (app.count("--expect-shards") > 0 && words.merge.empty()) {
         return usageError("--expect-shards needs --merge");
     }
