@@ -149,7 +149,7 @@ REFUSES_EMPTY = {
     "--web-port", "--web-host", "--web-linger", "--isolation", "--network", "--timeout",
     "--retries",
     "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
-    "--filter", "--shard-index", "--shard-count", "--durations", "--durations-from", "--merge",
+    "--filter", "--keyword", "--cache-dir", "--shard-index", "--shard-count", "--durations", "--durations-from", "--merge",
     "--expect-shards",
     "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
     "--world-up", "--world", "--world-down",

@@ -16,6 +16,7 @@
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/kept_world.h"
+#include "runner/cli/last_run_cache.h"
 #include "runner/cli/list_command.h"
 #include "runner/cli/live_web_page.h"
 #include "runner/cli/options.h"
@@ -126,6 +127,7 @@ int main(int argc, char** argv) {
         // A warning at worst: the status stays the run's.
         history->record(listeners.collector(), stderr, htmlReport);
     }
+    recordLastRun(options, listeners.collector(), stderr);  // for --lf and --ff
     if (options.slowestTests >= 0) {
         std::fputs(slowestTestsText(listeners.collector(), options.slowestTests).c_str(), stdout);
         std::fflush(stdout);

@@ -122,9 +122,29 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "and ?, separated by ':', negative ones after '-' (e.g. 'arm/*-*slow*'); '\\' makes "
          "the next character literal ('arm/*\\-fast'); a test's id written as it is selects "
          "that test alone", &w.filters},
+        {"-k,--keyword", "EXPR", Takes::One, selection,
+         "Run only the tests matching EXPR, as pytest's -k: names matched without case as "
+         "substrings of the test's id (suite/test) or of a tag, with and, or, not and "
+         "parentheses (e.g. -k 'speed and not slow'); with --filter and --tag, a test must "
+         "match all", &w.keyword},
         {"--rerun-failed", "REPORT", Takes::One, selection,
          "Run only the tests that failed, errored, crashed or timed out in REPORT, a JUnit or "
-         "JSON output of an earlier run", &o.rerunFailed},
+         "JSON output of an earlier run, or in the last run of a --history file",
+         &o.rerunFailed},
+        {"--lf,--last-failed", "", Takes::Nothing, selection,
+         "Run only the tests that failed, errored, crashed or timed out in the last run, as the "
+         "cache folder keeps them (--cache-dir); when none did, or none of them is selected, "
+         "every test runs, with a note", &o.lastFailed},
+        {"--ff,--failed-first", "", Takes::Nothing, selection,
+         "Run the last run's failures first (their suites first, and those tests first in "
+         "each), then the rest", &o.failedFirst},
+        {"--cache-dir", "DIR", Takes::One, selection,
+         "The cache folder that keeps the last run's failures for --lf and --ff (default "
+         ".rtf_cache in the working folder); written after a run that has a failure or when it "
+         "exists, never by --list", &o.cacheDir},
+        {"--no-cache", "", Takes::Nothing, selection,
+         "Neither read nor write the cache folder (as pytest's -p no:cacheprovider)",
+         &o.noCache},
         {"--allow-empty", "", Takes::Nothing, selection,
          "A run with no test selected (by --filter, --tag, --rerun-failed, or suites without "
          "tests) exits 0 instead of 5", &o.allowEmpty},

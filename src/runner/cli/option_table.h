@@ -23,6 +23,7 @@ struct CommandLineWords {
     std::vector<std::string> tags;
     std::vector<std::string> excludedTags;
     std::vector<std::string> filters;
+    std::string keyword;    // -k EXPR
     std::string durations;  // --durations: N, or a REPORT as --durations-from takes it
     std::string historyRuns;
     bool historyImport = false;

@@ -258,6 +258,14 @@ std::string readSelection(const CommandLineWords& words, Options& options) {
                 .push_back(std::move(expression));
         }
     }
+    if (!words.keyword.empty()) {
+        KeywordExpression expression;
+        std::string error;
+        if (!KeywordExpression::parse(words.keyword, expression, error)) {
+            return "-k '" + words.keyword + "': " + error;
+        }
+        options.selection.keywords.push_back(std::move(expression));
+    }
     for (const auto& text : words.filters) {
         NameFilter filter;
         std::string error;
@@ -430,6 +438,13 @@ ParseResult parseOptions(int argc, const char* const* argv, Options& options) {
         if (!error.empty()) {
             return usageError(error);
         }
+    }
+    if ((options.lastFailed || options.failedFirst) && options.noCache) {
+        return usageError(std::string(options.lastFailed ? "--lf" : "--ff") +
+                          " reads the cache folder, which --no-cache turns off");
+    }
+    if (options.lastFailed && !options.rerunFailed.empty()) {
+        return usageError("--lf and --rerun-failed both choose the tests to rerun: give one");
     }
     if (app.count("--expect-shards") > 0 && words.merge.empty()) {
         return usageError("--expect-shards needs --merge");

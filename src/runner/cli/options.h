@@ -59,11 +59,18 @@ struct Options {
     bool failOnFlaky = false;          // --fail-on-flaky: a flaky test fails the run
     unsigned int repeatUntilFail = 0;  // --repeat-until-fail N; 0: not given (once)
     std::string rerunFailed;           // --rerun-failed REPORT: only the tests it says failed
+    // The last run's failures (cli/last_run_cache.h): --lf runs only them, --ff first; the cache
+    // folder is --cache-dir DIR (.rtf_cache in the working folder); --no-cache: not read or
+    // written.
+    bool lastFailed = false;
+    bool failedFirst = false;
+    std::string cacheDir = ".rtf_cache";
+    bool noCache = false;
     std::vector<std::pair<std::string, std::string>> variables;  // --var name=value
     std::vector<std::string> variableFiles;                      // --var-file FILE
     bool list = false;                                           // --list: print, run nothing
     bool listVariables = false;                                  // --list-vars
-    Selection selection;                                         // --tag, --exclude-tag, --filter
+    Selection selection;                                         // -k, --filter, --(exclude-)tag
     // Shards: --shard-index/--shard-count as given (checked with the environment's, by
     // chooseShard), --durations-from REPORT; --merge TYPE:FILE REPORT... and --expect-shards N.
     ShardFlags shard;

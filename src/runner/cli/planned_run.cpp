@@ -1,9 +1,14 @@
 #include "runner/cli/planned_run.h"
 
+#include <set>
 #include <stdexcept>
 #include <utility>
 
+#include "runner/cli/last_run_cache.h"
 #include "runner/cli/sharded_run_setup.h"
+#include "runner/history/history_database.h"
+#include "runner/history/history_queries.h"
+#include "runner/plan/last_failed.h"
 #include "runner/plan/selection.h"
 #include "runner/plan/world_logs.h"
 #include "runner/reports/rerun_report.h"
@@ -30,12 +35,34 @@ bool hasTests(const std::vector<SuiteSpec>& suites) {
     return false;
 }
 
-// --rerun-failed: only the tests the report says failed. False when the run ends here.
+// --rerun-failed HISTORY: the failures of the history file's last run (all its shards).
+std::vector<FailedTest> failedInHistory(const std::string& path) {
+    HistoryDatabase history(path, HistoryDatabase::Mode::Read);
+    std::vector<FailedTest> failed;
+    for (const FailedInHistory& test : lastRunFailures(history)) {
+        // The history keeps the id; FailedTest is the suite and the rest of it.
+        const std::string prefix = test.suite.empty() ? "" : test.suite + "/";
+        const bool prefixed = test.test.rfind(prefix, 0) == 0;
+        failed.push_back({test.suite, prefixed ? test.test.substr(prefix.size()) : test.test});
+    }
+    return failed;
+}
+
+// --rerun-failed: only the tests the report (or the history's last run) says failed. False
+// when the run ends here.
 bool keepFailed(const Options& options, PlannedRun& plan) {
     std::vector<FailedTest> failed;
     try {
-        const Report earlier = readReport("--rerun-failed", options.rerunFailed);
-        failed = failedTests(earlier);
+        if (looksLikeHistoryFile(options.rerunFailed)) {
+            failed = failedInHistory(options.rerunFailed);
+        } else {
+            const Report earlier = readReport("--rerun-failed", options.rerunFailed);
+            failed = failedTests(earlier);
+            plan.reportSettings.sharded = earlier.shard.known;
+            plan.reportSettings.shardIndex = earlier.shard.index;
+            plan.reportSettings.shardCount = earlier.shard.count;
+            plan.reportSettings.shardPlan = earlier.shard.plan;
+        }
         // A rerun of a shard's failures is that shard again: its tests as they are, and its
         // report says so, for --merge to put it in place of the first one.
         if (plan.shard.sharded) {
@@ -45,10 +72,6 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
             plan.shard = ShardChoice();
         }
         plan.reportSettings.rerun = true;
-        plan.reportSettings.sharded = earlier.shard.known;
-        plan.reportSettings.shardIndex = earlier.shard.index;
-        plan.reportSettings.shardCount = earlier.shard.count;
-        plan.reportSettings.shardPlan = earlier.shard.plan;
     } catch (const std::exception& e) {
         plan.outcome = PlannedRun::Outcome::Error;
         plan.error = e.what();
@@ -68,6 +91,38 @@ bool keepFailed(const Options& options, PlannedRun& plan) {
                      failed.front().suite + "/" + failed.front().test +
                      ", ...); give the suites that report was written for";
         return false;
+    }
+    return true;
+}
+
+// --lf, --ff: the last run's failures, from the cache folder. False when the run ends here.
+bool useLastFailed(const Options& options, PlannedRun& plan) {
+    std::set<std::string> ids;
+    std::string error;
+    if (!readLastFailed(options.cacheDir, ids, error)) {
+        plan.outcome = PlannedRun::Outcome::Error;
+        plan.error = error;
+        return false;
+    }
+    const std::size_t selected = countTestsNamed(plan.suites, ids);
+    const std::string count = std::to_string(selected) + " test(s)";
+    const char* const option = options.lastFailed ? "--lf" : "--ff";
+    if (ids.empty()) {
+        // As pytest: nothing known to have failed is no reason to run nothing.
+        say(plan, std::string(option) + ": no test failed in the last run (" + options.cacheDir +
+                      "): running every selected test");
+    } else if (selected == 0) {
+        say(plan, std::string(option) + ": none of the last run's " + std::to_string(ids.size()) +
+                      " failed test(s) is selected: running every selected test");
+    } else if (options.lastFailed) {
+        say(plan, "--lf: running the " + count + " that failed in the last run");
+        keepTestsNamed(plan.suites, ids);
+    }
+    if (options.failedFirst && selected > 0) {
+        if (!options.lastFailed) {
+            say(plan, "--ff: the " + count + " that failed in the last run first");
+        }
+        putTestsNamedFirst(plan.suites, ids);
     }
     return true;
 }
@@ -126,12 +181,15 @@ PlannedRun planRun(const Options& options, std::vector<SuiteSpec> suites, ShardC
             if (!options.allowEmpty && !options.list && !options.listVariables) {
                 plan.outcome = PlannedRun::Outcome::NothingSelected;
                 plan.error =
-                    "no test is selected (by --filter, --tag or --exclude-tag); "
+                    "no test is selected (by -k, --filter, --tag or --exclude-tag); "
                     "--allow-empty makes that a success";
                 return plan;
             }
             warn(plan, "warning: no test is selected");
         }
+    }
+    if ((options.lastFailed || options.failedFirst) && !useLastFailed(options, plan)) {
+        return plan;
     }
     separateWorldLogs(plan.suites);
     if (!options.durations.empty()) {

@@ -130,6 +130,27 @@ RecentMeasurements recentMeasurements(HistoryDatabase& database, unsigned int ru
     return found;
 }
 
+std::vector<FailedInHistory> lastRunFailures(HistoryDatabase& database) {
+    std::vector<FailedInHistory> failed;
+    SqliteStatement results(database.handle(),
+                            "SELECT r.suite, t.name, r.state FROM results r JOIN tests t ON "
+                            "t.id = r.test WHERE r.run = ? ORDER BY r.rowid",
+                            database.path());
+    for (const RunRow& run : recentRunRows(database, 1)) {
+        results.reset();
+        results.bind(1, run.row);
+        while (results.step()) {
+            const std::string state = results.text(2);
+            // TestStatus's words, as the reports' rerun takes them (rerun_report.h).
+            if (state == "failed" || state == "error" || state == "crashed" ||
+                state == "timed out") {
+                failed.push_back({results.text(0), results.text(1)});
+            }
+        }
+    }
+    return failed;
+}
+
 std::map<std::string, double> latestSuiteSeconds(HistoryDatabase& database) {
     SqliteStatement rows(database.handle(),
                          "SELECT s.name, s.duration FROM suites s JOIN runs u ON u.id = s.run "

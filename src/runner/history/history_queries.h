@@ -55,6 +55,16 @@ std::vector<TestHistory> recentHistories(HistoryDatabase& database, unsigned int
 RecentMeasurements recentMeasurements(HistoryDatabase& database, unsigned int runs,
                                       const std::set<std::string>* only);
 
+// A test that did not pass in a run: its suite's name and its id ("SUITE/TEST").
+struct FailedInHistory {
+    std::string suite;
+    std::string test;
+};
+
+// The tests that failed, errored, crashed or timed out in the last run (all its shards), in the
+// order recorded: --rerun-failed FILE with a history file. Throws HistoryError.
+std::vector<FailedInHistory> lastRunFailures(HistoryDatabase& database);
+
 // Each suite's time (seconds, fixtures included) in the latest run that has it.
 std::map<std::string, double> latestSuiteSeconds(HistoryDatabase& database);
 

@@ -370,6 +370,11 @@ bool selected(const Selection& selection, const SuiteSpec& suite, const TestSpec
             return false;
         }
     }
+    for (const auto& keyword : selection.keywords) {
+        if (!keyword.matches(id, test.tags)) {
+            return false;
+        }
+    }
     for (const auto& expression : selection.exclude) {
         if (expression.matches(test.tags)) {
             return false;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "runner/model/suite_model.h"
+#include "runner/plan/keyword_expression.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -57,10 +58,13 @@ private:
 };
 
 struct Selection {
-    std::vector<TagExpression> include;  // --tag: a test matching any is selected
-    std::vector<TagExpression> exclude;  // --exclude-tag: a test matching any is not
-    std::vector<NameFilter> filters;     // --filter: a test must match each
-    bool empty() const { return include.empty() && exclude.empty() && filters.empty(); }
+    std::vector<TagExpression> include;       // --tag: a test matching any is selected
+    std::vector<TagExpression> exclude;       // --exclude-tag: a test matching any is not
+    std::vector<NameFilter> filters;          // --filter: a test must match each
+    std::vector<KeywordExpression> keywords;  // -k: a test must match each
+    bool empty() const {
+        return include.empty() && exclude.empty() && filters.empty() && keywords.empty();
+    }
 };
 
 // "*", "?" glob, the whole text.

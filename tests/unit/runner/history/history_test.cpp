@@ -354,3 +354,23 @@ TEST_F(History, ARunsStripsAreReadBackOnlyWhenAnOutputShowsThem) {
     ASSERT_EQ(histories.size(), 1u);
     EXPECT_EQ(histories[0].runs.size(), 3u);
 }
+
+TEST_F(History, TheLastRunsFailuresAreEveryShardsOfItsLastRun) {
+    append("one", 100, {result("s/a", "failed"), result("s/b", "failed")});
+    append("two", 200, {result("s/a", "passed"), result("s/c", "timed out")});
+    append("two", 201,
+           {result("s/d", "crashed"), result("s/e", "skipped"), result("s/f", "flaky")});
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    std::vector<std::string> ids;
+    for (const FailedInHistory& test : lastRunFailures(database)) {
+        EXPECT_EQ(test.suite, "s");
+        ids.push_back(test.test);
+    }
+    EXPECT_EQ(ids, (std::vector<std::string>{"s/c", "s/d"}));
+}
+
+TEST_F(History, AnEmptyHistoryHasNoFailures) {
+    append("one", 100, {});
+    HistoryDatabase database(path_, HistoryDatabase::Mode::Read);
+    EXPECT_TRUE(lastRunFailures(database).empty());
+}
