@@ -374,7 +374,7 @@ example)
     exit $status
     ;;
 test)
-    scripts/install-deps.sh --windows
+    scripts/install-deps.sh --windows --docs
     configure "$dir"
     build "$dir"
     run_ctest tests "$dir" || true

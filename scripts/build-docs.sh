@@ -4,7 +4,7 @@
 # mkdocs in strict mode (mkdocs.yml; a broken link between pages fails), then every internal
 # link of README.md, docs/ and the built site (scripts/check-doc-links.py).
 #   scripts/build-docs.sh [BUILD_DIR]   the site in BUILD_DIR/docs/site (default build)
-# Exits 77 (skipped) when doxygen or mkdocs is missing. Pages under docs/new/ are not yet placed: they are left out of the site.
+# Fails (exit 1) when doxygen or mkdocs is missing, saying how to get them.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 root=$PWD
@@ -12,8 +12,9 @@ mkdir -p "${1:-build}"
 out=$(cd "${1:-build}" && pwd)/docs
 for tool in doxygen mkdocs; do
     command -v $tool >/dev/null || {
-        echo "build-docs: skipped: $tool is missing (Debian: apt-get install $tool; ./run.sh docs installs it)" >&2
-        exit 77
+        echo "build-docs: $tool is missing (Debian: apt-get install $tool; ./run.sh docs and" \
+            "./run.sh test install it: scripts/install-deps.sh --docs)" >&2
+        exit 1
     }
 done
 rm -rf "$out"

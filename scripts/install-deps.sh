@@ -6,7 +6,8 @@
 #                                      MinGW-w64, Wine, dpkg-dev for `apt-get source`,
 #                                      tcl to generate SQLite's amalgamation, unicode-data
 #                                      and python3-six to generate RE2's tables
-#   scripts/install-deps.sh --docs     also the documentation's tools (./run.sh docs): mkdocs
+#   scripts/install-deps.sh --docs     also the documentation's tools (./run.sh docs and the
+#                                      docs.site test of ./run.sh test): mkdocs
 #                                      and doxygen
 set -euo pipefail
 
@@ -30,14 +31,16 @@ packages=(
 windows_packages=(g++-mingw-w64-x86-64-posix wine64 dpkg-dev tcl unicode-data python3-six)
 # Optional: the documentation site (./run.sh docs, scripts/build-docs.sh).
 docs_packages=(mkdocs doxygen)
-if [[ "${1:-}" == --windows ]]; then
-    packages+=("${windows_packages[@]}")
-elif [[ "${1:-}" == --docs ]]; then
-    packages+=("${docs_packages[@]}")
-elif [[ $# -gt 0 ]]; then
-    echo "usage: $0 [--windows|--docs]" >&2
-    exit 2
-fi
+for flag in "$@"; do
+    case "$flag" in
+    --windows) packages+=("${windows_packages[@]}") ;;
+    --docs) packages+=("${docs_packages[@]}") ;;
+    *)
+        echo "usage: $0 [--windows] [--docs]" >&2
+        exit 2
+        ;;
+    esac
+done
 
 missing=()
 for package in "${packages[@]}"; do
