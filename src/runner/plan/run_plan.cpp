@@ -45,7 +45,8 @@ std::string worldText(const std::string& path) {
     return text;
 }
 
-// The name a world file gives its world (<world name="...">), else its stem.
+}  // namespace
+
 std::string worldNameOf(const std::string& file) {
     static const std::regex named(R"(<world\b[^>]*?\bname\s*=\s*["']([^"']*)["'])");
     const std::string text = worldText(file).substr(0, 65536);
@@ -55,8 +56,6 @@ std::string worldNameOf(const std::string& file) {
     }
     return std::filesystem::path(file).stem().string();
 }
-
-}  // namespace
 
 std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
                                          const Overrides& overrides) {

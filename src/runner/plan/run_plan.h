@@ -38,6 +38,9 @@ struct Overrides {
 // is the most specific given: the test's, the suite's <timeout>, then --timeout (0: none).
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides);
 
+// The name a world file gives its world (<world name="...">), else its stem.
+std::string worldNameOf(const std::string& file);
+
 // A warning for each --var that no suite or test file of the run used and no world file of its
 // process fixtures names as ${NAME}: nothing would read it, and a value silently ignored is a test
 // run against the wrong thing.
