@@ -215,8 +215,11 @@ def test_the_world_options_say_what_is_wrong(project, prefix):
     runner = prefix / "bin" / "robottestingframework-testrunner"
     suites = project.parent / "source"
     shown = run([runner, "--help"])
-    for option in ("--world-up DIR", "--world DIR", "--world-down DIR"):
+    for option in ("--world-up DIR", "--world DIR", "--world-down DIR", "--shared-worlds DIR"):
         assert option in shown.stdout, shown.stdout
+    alone = run([runner, "--suite", "fixed/fixed.xml", "--shared-worlds", project / "x"],
+                cwd=suites)
+    assert alone.returncode == 2 and "only with --world-up" in alone.stderr, alone
     nowhere = project / "no_keeper_here"
     for option in (["--filter", "fixed/one", "--world"], ["--world-down"]):
         missing = run([runner, "--suite", "fixed/fixed.xml", "--no-output", *option, nowhere],
@@ -315,3 +318,24 @@ def test_ctest_killed_in_a_shared_world_leaves_nothing_behind(project, how):
                 os.kill(pid, signal.SIGKILL)
             except OSError:
                 pass
+
+
+def own_starts(build):
+    """Starts of the mixed suite's own world: its keeper's log (made again at each world:up)."""
+    return sum(log.read_text().count("starting 'own'")
+               for log in build.glob("rtf_discover_mixed_*_world/keeper.log"))
+
+
+def test_a_suite_with_a_world_of_its_own_joins_the_shared_world(project):
+    before = starts(project, "shared")
+    result = ctest(project, "-j", "3", "-R", r"^shared\.|^mixed\.")
+    assert result.returncode == 0, result.stdout
+    # 4 suites x 2 tests, the shared world's up and down, the mixed suite's own up and down.
+    assert "100% tests passed, 0 tests failed out of 12" in result.stdout, result.stdout
+    assert (starts(project, "shared") - before, own_starts(project)) == (1, 1)
+    alone = ctest(project, "-R", r"^mixed\.shared_mixed/one$")
+    assert alone.returncode == 0, alone.stdout
+    names = re.findall(r"Test +#\d+: (\S+)", alone.stdout)
+    assert names == ["world:server:up", "mixed.shared_mixed/world:up", "mixed.shared_mixed/one",
+                     "mixed.shared_mixed/world:down", "world:server:down"], names
+    assert (starts(project, "shared") - before, own_starts(project)) == (2, 1)

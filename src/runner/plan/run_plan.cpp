@@ -163,7 +163,7 @@ std::vector<std::size_t> RunPlan::worldGroups() const {
     return sharedWorldGroups(specs_.size(), worldUsers_);
 }
 
-void RunPlan::addSuite(SuiteSpec spec) {
+void RunPlan::addSuite(SuiteSpec spec, FixtureManager* sharedWorlds) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
     SuiteLane& lane = lanes_.emplace_back(executor_);
     firstFixture_.push_back(fixtures_.size());
@@ -172,7 +172,15 @@ void RunPlan::addSuite(SuiteSpec spec) {
     suite.setDescription(owned.description);
     suite.getId();  // ids are given here, in plan order, before any event carries them
     const std::size_t suiteIndex = specs_.size() - 1;
+    bool sharedWorldsAdded = false;
     for (const auto& fixture : owned.fixtures) {
+        if (fixture.scope == FixtureSpec::Scope::Run && sharedWorlds) {
+            if (!sharedWorldsAdded) {
+                suite.addFixtureManager(sharedWorlds);
+                sharedWorldsAdded = true;
+            }
+            continue;
+        }
         if (fixture.scope == FixtureSpec::Scope::Run) {
             const std::string identity = sharedWorldIdentity(fixture);
             auto found = worldByIdentity_.find(identity);

@@ -56,7 +56,9 @@ public:
 
     // Adds a suite to run after the ones already added. Its fixtures are made now; one that
     // cannot be made fails the suite's set-up with the reason when the suite runs.
-    void addSuite(SuiteSpec spec);
+    // `sharedWorlds`, when given, stands in for all its shared worlds (scope="run"), in the
+    // place of the first of them: a keeper's world under CTest (--shared-worlds DIR).
+    void addSuite(SuiteSpec spec, FixtureManager* sharedWorlds = nullptr);
     // --retries: each test added from now on that fails runs again up to `retries` times.
     void setRetries(unsigned int retries) { retries_ = retries; }
 
