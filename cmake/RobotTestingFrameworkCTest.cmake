@@ -518,6 +518,10 @@ function(robottestingframework_discover_tests)
     endforeach()
     _robottestingframework_bracket("${base}" value)
     string(APPEND content "set(rtf_base ${value})\n")
+    # Where the keepers of shared worlds live: one folder for the whole build tree, so that
+    # every discovery whose suites share a world finds the same keeper.
+    _robottestingframework_bracket("${CMAKE_BINARY_DIR}/rtf_shared_worlds" value)
+    string(APPEND content "set(rtf_shared_root ${value})\n")
     _robottestingframework_bracket("${_ROBOTTESTINGFRAMEWORK_DISCOVER_SCRIPT}" value)
     string(APPEND content "include(${value})\n")
     file(GENERATE OUTPUT "${base}_include.cmake" CONTENT "${content}")

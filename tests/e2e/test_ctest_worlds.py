@@ -4,7 +4,9 @@ built against the installed tree). Each suite's world starts once for all its te
 world:up test sets it up in a keeper, a world:down test stops it), tests of one suite never
 clash, suites in private networks bind one port side by side, `ctest -R` of one test brings
 its world along, a world that fails fails its tests with its reason, and ctest killed while a
-test runs leaves no process behind. Each world counts its starts in a file."""
+test runs leaves no process behind. Suites that share a world (scope="run") share one keeper:
+one start for all of them (docs/how-to/ctest-shared-worlds.md). Each world counts its starts in a
+file."""
 import os
 import re
 import shutil
@@ -70,6 +72,7 @@ def project(tmp_path_factory, prefix):
     generator = ["-G", "Ninja"] if shutil.which("ninja") else []
     check(["cmake", "-S", source, "-B", build, *generator, "-Wdev",
            f"-DCMAKE_PREFIX_PATH={prefix}", f"-DFIXED_PORT={free_port()}",
+           f"-DSHARED_PORT={free_port()}",
            "-DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON"], timeout=120)
     return build
 
@@ -212,8 +215,11 @@ def test_the_world_options_say_what_is_wrong(project, prefix):
     runner = prefix / "bin" / "robottestingframework-testrunner"
     suites = project.parent / "source"
     shown = run([runner, "--help"])
-    for option in ("--world-up DIR", "--world DIR", "--world-down DIR"):
+    for option in ("--world-up DIR", "--world DIR", "--world-down DIR", "--shared-worlds DIR"):
         assert option in shown.stdout, shown.stdout
+    alone = run([runner, "--suite", "fixed/fixed.xml", "--shared-worlds", project / "x"],
+                cwd=suites)
+    assert alone.returncode == 2 and "only with --world-up" in alone.stderr, alone
     nowhere = project / "no_keeper_here"
     for option in (["--filter", "fixed/one", "--world"], ["--world-down"]):
         missing = run([runner, "--suite", "fixed/fixed.xml", "--no-output", *option, nowhere],
@@ -250,3 +256,86 @@ def test_a_world_that_collapses_fails_the_running_test_and_its_world_down(projec
     assert "the world collapsed" in result.stdout, result.stdout
     assert "process 'fragile server' exited with status 3" in result.stdout, result.stdout
     assert "its tear-down failed" in result.stdout, result.stdout
+
+
+def test_three_suites_sharing_a_world_start_it_once(project):
+    before = starts(project, "shared")
+    result = ctest(project, "-j", "3", "-R", r"^shared\.|^world:server:")
+    assert result.returncode == 0, result.stdout
+    # 3 suites x 2 tests, and the shared world's up and down.
+    assert "100% tests passed, 0 tests failed out of 8" in result.stdout, result.stdout
+    assert re.search(r"world:server:up \.+ +Passed", result.stdout), result.stdout
+    assert starts(project, "shared") - before == 1
+    listed = ctest(project, "-N")
+    assert listed.stdout.count("world:server:up") == 1, listed.stdout  # one fixture, not 4
+
+
+def test_ctest_R_brings_the_shared_world_of_one_test(project):
+    before = starts(project, "shared")
+    result = ctest(project, "-R", r"^shared\.shared_2/two$")
+    assert result.returncode == 0, result.stdout
+    names = re.findall(r"Test +#\d+: (\S+)", result.stdout)
+    assert names == ["world:server:up", "shared.shared_2/two", "world:server:down"], names
+    assert starts(project, "shared") - before == 1
+
+
+@pytest.mark.parametrize("how", ["SIGKILL", "Ctrl-C"])
+def test_ctest_killed_in_a_shared_world_leaves_nothing_behind(project, how):
+    mark = uuid.uuid4().hex
+    running = project / "shared_running"
+    running.unlink(missing_ok=True)
+    ctest_run = subprocess.Popen(["ctest", "--test-dir", str(project), "-j", "3",
+                                  "-R", r"^shared\.|^shared_hang\."],
+                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                 env={**os.environ, "RTF_E2E_MARK": mark},
+                                 start_new_session=True)
+    try:
+        deadline = time.monotonic() + 60
+        while not running.exists() and time.monotonic() < deadline:
+            time.sleep(0.05)
+        assert running.exists(), "the test never ran"
+        alive = marked(mark)
+        keepers = [pid for pid, (command, _) in alive.items() if "--world-up" in command]
+        assert len(keepers) == 1, alive  # the shared world's keeper, no suite's own
+        assert any(world for _, world in alive.values()), alive  # the world's server
+        if how == "SIGKILL":
+            os.kill(ctest_run.pid, signal.SIGKILL)
+        else:
+            os.killpg(ctest_run.pid, signal.SIGINT)
+        ctest_run.wait(timeout=20)
+        deadline = time.monotonic() + 10
+        left = marked(mark)
+        while left and time.monotonic() < deadline:
+            time.sleep(0.1)
+            left = marked(mark)
+        assert not left, f"left behind: {left}"
+    finally:
+        if ctest_run.poll() is None:
+            ctest_run.kill()
+            ctest_run.wait()
+        for pid in marked(mark):
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except OSError:
+                pass
+
+
+def own_starts(build):
+    """Starts of the mixed suite's own world: its keeper's log (made again at each world:up)."""
+    return sum(log.read_text().count("starting 'own'")
+               for log in build.glob("rtf_discover_mixed_*_world/keeper.log"))
+
+
+def test_a_suite_with_a_world_of_its_own_joins_the_shared_world(project):
+    before = starts(project, "shared")
+    result = ctest(project, "-j", "3", "-R", r"^shared\.|^mixed\.")
+    assert result.returncode == 0, result.stdout
+    # 4 suites x 2 tests, the shared world's up and down, the mixed suite's own up and down.
+    assert "100% tests passed, 0 tests failed out of 12" in result.stdout, result.stdout
+    assert (starts(project, "shared") - before, own_starts(project)) == (1, 1)
+    alone = ctest(project, "-R", r"^mixed\.shared_mixed/one$")
+    assert alone.returncode == 0, alone.stdout
+    names = re.findall(r"Test +#\d+: (\S+)", alone.stdout)
+    assert names == ["world:server:up", "mixed.shared_mixed/world:up", "mixed.shared_mixed/one",
+                     "mixed.shared_mixed/world:down", "world:server:down"], names
+    assert (starts(project, "shared") - before, own_starts(project)) == (2, 1)

@@ -150,7 +150,8 @@ bool joinKeptWorld(const std::string& folder, const std::string& suite, KeptWorl
     if (!askStatus(folder, status, fds, error)) {
         return false;
     }
-    if (status.suite != suite) {
+    // A keeper of shared worlds (discover_tests) holds them for every suite that needs them.
+    if (status.suite != suite && status.suite.rfind(sharedWorldKeeperPrefix, 0) != 0) {
         error = "the world keeper at " + folder + " keeps the world of suite " + status.suite +
                 ", not of suite " + suite + " (give --world-up and --world the same suite)";
         return false;

@@ -8,6 +8,8 @@
 #include "reporters/atomic_file.h"
 #include "runner/model/stand_in_test.h"
 #include "runner/model/test_id.h"
+#include "runner/plan/run_plan.h"
+#include "runner/plan/shared_world.h"
 #include "variables/variables.h"
 
 namespace robottestingframework {
@@ -113,10 +115,22 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
         const SuiteSpec& suite = suites[s];
         nlohmann::json fixtures = nlohmann::json::array();
         for (const auto& fixture : suite.fixtures) {
-            fixtures.push_back({{"plugin", fixture.plugin.str()},
-                                {"path", fixture.path.str()},
-                                {"type", fixture.type},
-                                {"param", shown(fixture.param)}});
+            fixtures.push_back(
+                {{"plugin", fixture.plugin.str()},
+                 {"path", fixture.path.str()},
+                 {"type", fixture.type},
+                 {"param", shown(fixture.param)},
+                 {"scope", fixture.scope == FixtureSpec::Scope::Run ? "run" : "suite"}});
+            if (fixture.scope == FixtureSpec::Scope::Run) {
+                // What makes a shared world one (plan/shared_world.h): discover_tests gives the
+                // suites that need it one CTest fixture and one keeper (docs/how-to/ctest-worlds.md).
+                const std::string file =
+                    fixture.path.empty() ? fixture.plugin.str() : fixture.path.str();
+                const std::string identity = sharedWorldIdentity(fixture);
+                fixtures.back()["world"] = worldNameOf(file);
+                fixtures.back()["world_file"] = identity.substr(0, identity.find('\n'));
+                fixtures.back()["identity"] = identity;
+            }
         }
         nlohmann::json tests = nlohmann::json::array();
         for (const auto& test : suite.tests) {
@@ -139,12 +153,14 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
                                                       : nlohmann::json{{"pool", resource.pool},
                                                                        {"count", resource.count}});
         }
-        list["suites"].push_back({{"name", suite.name},
-                                  {"file", suite.where.file},
-                                  {"resources", resources},
-                                  {"exclusive", suite.exclusive},
-                                  {"fixtures", fixtures},
-                                  {"tests", tests}});
+        list["suites"].push_back(
+            {{"name", suite.name},
+             {"file", suite.where.file},
+             {"resources", resources},
+             {"exclusive", suite.exclusive},
+             {"network", suite.network == SuiteSpec::Network::Private ? "private" : "host"},
+             {"fixtures", fixtures},
+             {"tests", tests}});
         if (s < shards.size()) {
             list["suites"].back()["shard"] = shards[s];
         }

@@ -14,7 +14,9 @@ namespace runner {
 // `shards`, when not empty: the shard of each suite (of `count`), shown on its line.
 std::string listText(const std::vector<SuiteSpec>& suites,
                      const std::vector<unsigned int>& shards = {}, unsigned int count = 0);
-// The same as one JSON document: {"suites": [{"name", "file", "fixtures": [...], "tests":
+// The same as one JSON document: {"suites": [{"name", "file", "network" ("host" or "private"),
+// "fixtures": [{"plugin", "path", "type", "param", "scope" ("suite" or "run"); a shared world
+// (scope "run") also "world" (its name), "world_file" (absolute) and "identity"}], "tests":
 // [{"id", "name", "type", "plugin", "path", "param", "environment", "tags", "timeout",
 // "repetition", "depends"}]}]}.
 // With `shards`, each suite has "shard" too.

@@ -193,6 +193,10 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
         {"--world-down", "DIR", Takes::One, running,
          "Stop the world the --world-up DIR keeper holds and print its tear-down; exit 1 when "
          "the tear-down failed", &o.worldDown},
+        {"--shared-worlds", "DIR", Takes::One, running,
+         "With --world-up: the suite's shared worlds (scope=\"run\") are the ones the "
+         "--world-up DIR keeper of those worlds holds, not started again; the suite's world "
+         "joins that keeper's network (docs/how-to/ctest-worlds.md)", &o.sharedWorlds},
 
         {"-o,--output", "FILE", Takes::Repeatable, console,
          "Write the results to FILE, or TYPE:FILE (e.g. junit:results.xml; - or /dev/stdout: "

@@ -187,6 +187,9 @@ std::string readRunShape(const CommandLineWords& words, Options& options) {
         1) {
         return "--world-up, --world and --world-down: one at a time";
     }
+    if (!options.sharedWorlds.empty() && options.worldUp.empty()) {
+        return "--shared-worlds " + options.sharedWorlds + ": only with --world-up DIR";
+    }
     if (!words.jobs.empty()) {
         const std::string problem = checkJobs(words.jobs, options.jobs);
         if (!problem.empty()) {

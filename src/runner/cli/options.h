@@ -96,6 +96,7 @@ struct Options {
     std::string worldUp;
     std::string world;
     std::string worldDown;
+    std::string sharedWorlds;  // --shared-worlds DIR (with --world-up)
 
     bool nothingToRun() const {
         return tests.empty() && testDirs.empty() && suites.empty() && suiteDirs.empty();

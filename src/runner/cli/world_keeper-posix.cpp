@@ -28,6 +28,7 @@
 #include "runner/cli/executor_choice.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/interrupt_watcher.h"
+#include "runner/cli/kept_world.h"
 #include "runner/cli/private_networks.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/world_keeper.h"
@@ -315,7 +316,18 @@ int keep(Options& options, SuiteSpec suite, const Overrides& overrides, Resource
     }
     const std::string socketPath = worldSocketPath(folder);
     std::shared_ptr<const platform::PrivateNetwork> network;
-    if (suite.network == SuiteSpec::Network::Private) {
+    // --shared-worlds DIR: the suite's shared worlds are another keeper's, and so is the
+    // network they live in.
+    KeptWorld shared;
+    if (!options.sharedWorlds.empty()) {
+        if (!joinKeptWorld(options.sharedWorlds, suite.name, shared, error)) {
+            state.failedToStart("--shared-worlds " + options.sharedWorlds + ": " + error);
+            ::unlink(socketPath.c_str());
+            return configurationError;
+        }
+        network = shared.network;
+    }
+    if (suite.network == SuiteSpec::Network::Private && !network) {
         network = platform::PrivateNetwork::create(error);
         if (!network) {
             state.failedToStart("suite " + suite.name + ": " + error);
@@ -332,7 +344,7 @@ int keep(Options& options, SuiteSpec suite, const Overrides& overrides, Resource
     RunPlan plan(*executor);
     applyOverrides(suite, overrides);
     suite.tests.clear();
-    plan.addSuite(std::move(suite));
+    plan.addSuite(std::move(suite), shared.fixture.get());
     state.setInterruptSetup([&plan] { plan.interruptFixtures(); });
     Hold hold(state, plan.suite(0), network);
     plan.suite(0).addTest(&hold);

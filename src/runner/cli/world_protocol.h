@@ -9,6 +9,11 @@
 namespace robottestingframework {
 namespace runner {
 
+// The name of a suite that only holds shared worlds for other suites (the suite file that
+// robottestingframework_discover_tests writes for a shared world's keeper): --world DIR takes
+// such a keeper's world for any suite.
+constexpr const char* sharedWorldKeeperPrefix = "shared world ";
+
 // The control socket and the keeper's log in a keeper's folder.
 std::string worldSocketPath(const std::string& folder);
 std::string worldLogPath(const std::string& folder);

@@ -45,7 +45,8 @@ std::string worldText(const std::string& path) {
     return text;
 }
 
-// The name a world file gives its world (<world name="...">), else its stem.
+}  // namespace
+
 std::string worldNameOf(const std::string& file) {
     static const std::regex named(R"(<world\b[^>]*?\bname\s*=\s*["']([^"']*)["'])");
     const std::string text = worldText(file).substr(0, 65536);
@@ -55,8 +56,6 @@ std::string worldNameOf(const std::string& file) {
     }
     return std::filesystem::path(file).stem().string();
 }
-
-}  // namespace
 
 std::vector<std::string> unreadVariables(const std::vector<SuiteSpec>& suites,
                                          const Overrides& overrides) {
@@ -164,7 +163,7 @@ std::vector<std::size_t> RunPlan::worldGroups() const {
     return sharedWorldGroups(specs_.size(), worldUsers_);
 }
 
-void RunPlan::addSuite(SuiteSpec spec) {
+void RunPlan::addSuite(SuiteSpec spec, FixtureManager* sharedWorlds) {
     const SuiteSpec& owned = specs_.emplace_back(std::move(spec));
     SuiteLane& lane = lanes_.emplace_back(executor_);
     firstFixture_.push_back(fixtures_.size());
@@ -173,7 +172,15 @@ void RunPlan::addSuite(SuiteSpec spec) {
     suite.setDescription(owned.description);
     suite.getId();  // ids are given here, in plan order, before any event carries them
     const std::size_t suiteIndex = specs_.size() - 1;
+    bool sharedWorldsAdded = false;
     for (const auto& fixture : owned.fixtures) {
+        if (fixture.scope == FixtureSpec::Scope::Run && sharedWorlds) {
+            if (!sharedWorldsAdded) {
+                suite.addFixtureManager(sharedWorlds);
+                sharedWorldsAdded = true;
+            }
+            continue;
+        }
         if (fixture.scope == FixtureSpec::Scope::Run) {
             const std::string identity = sharedWorldIdentity(fixture);
             auto found = worldByIdentity_.find(identity);

@@ -38,6 +38,9 @@ struct Overrides {
 // is the most specific given: the test's, the suite's <timeout>, then --timeout (0: none).
 void applyOverrides(SuiteSpec& suite, const Overrides& overrides);
 
+// The name a world file gives its world (<world name="...">), else its stem.
+std::string worldNameOf(const std::string& file);
+
 // A warning for each --var that no suite or test file of the run used and no world file of its
 // process fixtures names as ${NAME}: nothing would read it, and a value silently ignored is a test
 // run against the wrong thing.
@@ -53,7 +56,9 @@ public:
 
     // Adds a suite to run after the ones already added. Its fixtures are made now; one that
     // cannot be made fails the suite's set-up with the reason when the suite runs.
-    void addSuite(SuiteSpec spec);
+    // `sharedWorlds`, when given, stands in for all its shared worlds (scope="run"), in the
+    // place of the first of them: a keeper's world under CTest (--shared-worlds DIR).
+    void addSuite(SuiteSpec spec, FixtureManager* sharedWorlds = nullptr);
     // --retries: each test added from now on that fails runs again up to `retries` times.
     void setRetries(unsigned int retries) { retries_ = retries; }
 

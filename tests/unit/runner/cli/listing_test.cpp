@@ -141,6 +141,42 @@ TEST(Listing, TheJsonListHasNoShardWhenNotSharded) {
     EXPECT_FALSE(list["suites"][0].contains("shard"));
 }
 
+// discover_tests gives the suites sharing a world one CTest fixture: it needs each fixture's
+// scope, and a shared world's name, file and identity (docs/how-to/ctest-shared-worlds.md).
+TEST(Listing, TheJsonListSaysWhichFixturesAreSharedWorldsAndTheirIdentity) {
+    const std::filesystem::path folder =
+        std::filesystem::temp_directory_path() / ("rtf_listing_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(folder);
+    const std::string world = (folder / "lab.xml").string();
+    std::ofstream(world) << "<world name=\"the lab\"><process name=\"p\"><command>true"
+                            "</command></process></world>\n";
+    SuiteSpec suite = armSuite();
+    suite.network = SuiteSpec::Network::Private;
+    FixtureSpec own;
+    own.plugin = "own.xml";
+    own.path = "own.xml";
+    own.type = "process";
+    FixtureSpec shared = own;
+    shared.plugin = world;
+    shared.path = world;
+    shared.param = "--var port=1";
+    shared.scope = FixtureSpec::Scope::Run;
+    suite.fixtures = {own, shared};
+    const nlohmann::json list = nlohmann::json::parse(listJson({suite}));
+    std::filesystem::remove_all(folder);
+    const nlohmann::json& listed = list["suites"][0];
+    EXPECT_EQ(listed["network"], "private");
+    EXPECT_EQ(listed["fixtures"][0]["scope"], "suite");
+    EXPECT_FALSE(listed["fixtures"][0].contains("identity"));
+    EXPECT_EQ(listed["fixtures"][1]["scope"], "run");
+    EXPECT_EQ(listed["fixtures"][1]["world"], "the lab");
+    EXPECT_EQ(listed["fixtures"][1]["world_file"], world);
+    EXPECT_EQ(listed["fixtures"][1]["identity"], world + "\n--var port=1");
+    EXPECT_EQ(list["suites"][0]["fixtures"][1]["param"], "--var port=1");
+    suite.network = SuiteSpec::Network::Host;
+    EXPECT_EQ(nlohmann::json::parse(listJson({suite}))["suites"][0]["network"], "host");
+}
+
 TEST(Listing, InvalidUtf8InAParamIsReplacedNotFatal) {
     SuiteSpec suite = armSuite();
     suite.tests[0].param = "caf\xE9";
