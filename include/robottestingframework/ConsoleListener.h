@@ -33,31 +33,24 @@ public:
     // last attempt's line says how the test ended.
     void setRetries(unsigned int retries) { retries_ = retries; }
 
-    void addReport(const Test* test, TestMessage msg) override;
-    void addError(const Test* test, TestMessage msg) override;
-    void addFailure(const Test* test, TestMessage msg) override;
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
     void startTestSuite(const TestSuite* suite) override;
     void endTestSuite(const TestSuite* suite) override;
     void startTestRunner() override;
     void endTestRunner() override;
-    void addCheck(const Test* test, TestMessage msg, bool passed) override;
-    void addSkipped(const Test* test, TestMessage reason) override;
     void retryTest(const Test* test, TestMessage msg) override;
-    void addCrash(const Test* test, TestMessage msg) override;
-    void addTimeout(const Test* test, TestMessage msg) override;
-    void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
-    void addEvent(const Test* test, const ResultEvent& event) override;
-    // Hands `event` to the handlers above, its own record timing it when it happened (as the
-    // run's collector does): a test's time on the console is the reports' time.
+    // Reads the record: a message or a problem (the table's columns) is said and recorded; the
+    // frames, output and retries go to the handlers above. Its own record times each event
+    // when it happened (as the run's collector does): a test's time on the console is the
+    // reports' time.
     void onEvent(const RunEvent& event) override;
 
 private:
-    // A message of `kind` (its word and colour from the tables), printed when it is due.
-    void say(ResultEvent::Kind kind, const Test* test, const TestMessage& msg, bool passed = true);
+    // A message (its word and colour from the table), printed when it is due.
+    void say(const Test* test, const ResultEvent& event);
     void message(const char* label, const char* colour, const TestMessage& msg);
     // Prints `msg` now when it belongs to no open test or verbose is on; otherwise it is
     // printed under the test's line at endTest.

@@ -89,4 +89,44 @@ bool isFrame(ResultEvent::Kind kind);
 // events gave it. The one table of it: the collector, the event relay and the executors read it.
 TestStatus stateOf(ResultEvent::Kind kind);
 
+// The other columns of that table: what a kind is to the listeners, so that none of them lists
+// kinds of its own.
+// A test's message (a report, a check): the reports keep it whatever -v says.
+bool isMessage(ResultEvent::Kind kind);
+// A check: a passed one is hidden unless passed checks are kept.
+bool isCheck(ResultEvent::Kind kind);
+// Whether `event` is shown, `passedChecks` saying whether passed checks are: all but a passed
+// check when they are not.
+bool isShown(const ResultEvent& event, bool passedChecks);
+// A passed check (hidden unless passed checks are kept).
+bool isHiddenCheck(const ResultEvent& event);
+// Whether the event is a line of its own under its test (failures, skips, crashes, a kind with
+// no handler of its own, a measurement or attachment that lost its data): the console, TAP
+// and the live page say it as it comes. Reports and checks are said as -v allows.
+bool isSaid(const ResultEvent& event);
+// Whether the event carries its data: a measurement, an attachment.
+bool carriesData(const ResultEvent& event);
+// Whether the kind carries data (measurements, attachments), with it or not.
+bool carriesAnything(ResultEvent::Kind kind);
+// A measurement / an attachment with its data.
+bool isMeasurement(const ResultEvent& event);
+bool isAttachment(const ResultEvent& event);
+// Whether the kind trips --fail-fast (a failure, error, crash, timeout; a retry takes it back).
+bool tripsFailFast(ResultEvent::Kind kind);
+// Whether a worker saying it is quoted when the worker dies (its last words).
+bool isLastWords(ResultEvent::Kind kind);
+// The kind's colour in the console: none, the check's outcome, a warning, a problem.
+enum class KindTone : unsigned char { Plain, Outcome, Warn, Bad };
+KindTone toneOf(ResultEvent::Kind kind);
+// Its word as the console, text and TAP reports show it ("check FAILED", "failure", ...).
+const char* labelOf(ResultEvent::Kind kind, bool passed);
+// A shared world's phase (about no test): TestResultCollector::worlds() keeps them.
+bool isWorldPhase(ResultEvent::Kind kind);
+// What a listener shows of `event`: the event itself, except a repetition's start, shown as
+// the report "repetition index/count" (as TestListener::startRepetition gives it to RTF 2.x's
+// listeners), made in `scratch`.
+const ResultEvent& shownEvent(const ResultEvent& event, ResultEvent& scratch);
+// Its word as the HTML report and the live page show it ("check failed", "failure", ...).
+const char* nameOf(ResultEvent::Kind kind, bool passed);
+
 }  // namespace robottestingframework

@@ -45,29 +45,8 @@ public:
     // before the test's suite starts.
     void setTestHistory(const std::string& testId, const std::string& json);
 
-    void addReport(const Test* test, TestMessage msg) override;
-    void addError(const Test* test, TestMessage msg) override;
-    void addFailure(const Test* test, TestMessage msg) override;
-    void startTest(const Test* test) override;
-    void endTest(const Test* test) override;
-    void renameTest(const Test* test, const std::string& name) override;
-    void startTestSuite(const TestSuite* suite) override;
-    void endTestSuite(const TestSuite* suite) override;
-    void startTestSuite(const Test* suite) override;
-    void endTestSuite(const Test* suite) override;
-    void startTestRunner() override;
-    void endTestRunner() override;
-    void addCheck(const Test* test, TestMessage msg, bool passed) override;
-    void addSkipped(const Test* test, TestMessage reason) override;
-    void addCrash(const Test* test, TestMessage msg) override;
-    void addTimeout(const Test* test, TestMessage msg) override;
-    void addInterrupted(const Test* test, TestMessage msg) override;
-    void addOutput(const Test* test, const std::string& text) override;
-    void retryTest(const Test* test, TestMessage msg) override;
-    void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
-    void addEvent(const Test* test, const ResultEvent& event) override;
-    // Every event of a run reaches the page as the record, whatever its kind (the named
-    // handlers above serve programs that call them directly).
+    // Every event of a run reaches the page as the record, whatever its kind: the one
+    // forwarder (the named handlers of TestListener stay the adapter of RTF 2.x's listeners).
     void onEvent(const RunEvent& event) override;
 
 private:

@@ -48,39 +48,69 @@ const char* toLabel(TestStatus status) {
 
 namespace {
 
-// The one table of event kinds: each kind's word, the state it gives its test, and whether it
-// frames the run rather than says something about a test.
+// The one table of event kinds, one row per kind, in Kind order. Its columns:
+// - word: the kind's stable name (JSON, wire format), the word before a message;
+// - state: the state it gives its test;
+// - frame: it frames the run (start/end of the runner, a suite, a test);
+// - message: a test's message (report, check): the reports keep it whatever -v says;
+// - check: a passed one is hidden unless passed checks are kept;
+// - said: a line of its own under its test in the console, TAP and live page (failures,
+//   skips, ...; a message is said as -v and the check column allow);
+// - failFast: it trips --fail-fast (a retry takes it back);
+// - lastWords: what a worker said last, quoted when it dies;
+// - carries: its data (a measurement, an attachment); without it, it is said as any other;
+// - tone: its colour in the console;
+// - passedLabel / failedLabel: its word when it passed / failed (null: `word`), as the
+//   console, text and TAP reports show it; failedName: as the HTML report and live page do.
+enum class Carries : unsigned char { Nothing, Measurement, Attachment };
 struct KindRow {
     ResultEvent::Kind kind;
     const char* word;
     TestStatus state;
     bool frame;
+    bool message;
+    bool check;
+    bool said;
+    bool failFast;
+    bool lastWords;
+    Carries carries;
+    KindTone tone;
+    const char* passedLabel;
+    const char* failedLabel;
+    const char* failedName;
 };
 using Kind = ResultEvent::Kind;
+using T = KindTone;
+constexpr Carries none = Carries::Nothing;
+constexpr bool Y = true;
+constexpr bool n = false;
+// clang-format off
 constexpr KindRow kindRows[] = {
-    {Kind::StartRunner, "start-runner", TestStatus::Passed, true},
-    {Kind::EndRunner, "end-runner", TestStatus::Passed, true},
-    {Kind::StartSuite, "start-suite", TestStatus::Passed, true},
-    {Kind::EndSuite, "end-suite", TestStatus::Passed, true},
-    {Kind::StartTest, "start-test", TestStatus::Passed, true},
-    {Kind::EndTest, "end-test", TestStatus::Passed, true},
-    {Kind::Report, "report", TestStatus::Passed, false},
-    {Kind::Check, "check", TestStatus::Passed, false},
-    {Kind::Failure, "failure", TestStatus::Failed, false},
-    {Kind::Error, "error", TestStatus::Error, false},
-    {Kind::Skipped, "skipped", TestStatus::Skipped, false},
-    {Kind::Crash, "crash", TestStatus::Crashed, false},
-    {Kind::Timeout, "timeout", TestStatus::TimedOut, false},
-    {Kind::Interrupted, "interrupted", TestStatus::Interrupted, false},
-    {Kind::Output, "output", TestStatus::Passed, false},
-    {Kind::Rename, "rename", TestStatus::Passed, false},
-    {Kind::Retry, "retry", TestStatus::Passed, false},
-    {Kind::Repetition, "repetition", TestStatus::Passed, false},
-    {Kind::Measurement, "measurement", TestStatus::Passed, false},
-    {Kind::Attachment, "attachment", TestStatus::Passed, false},
-    {Kind::World, "world", TestStatus::Passed, false},
-    {Kind::Probe, "probe", TestStatus::Failed, false},
+//   kind              word            state                   frame msg chk said ff  last carries               tone         passed      failed                       failedName
+    {Kind::StartRunner, "start-runner", TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndRunner,   "end-runner",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartSuite,  "start-suite",  TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndSuite,    "end-suite",    TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartTest,   "start-test",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndTest,     "end-test",     TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Report,      "report",       TestStatus::Passed,      n,   Y,  n,  n,   n,  Y,   none,                 T::Plain,    nullptr,    nullptr,                     nullptr},
+    {Kind::Check,       "check",        TestStatus::Passed,      n,   Y,  Y,  n,   n,  Y,   none,                 T::Outcome,  "check ok", "check FAILED",              "check failed"},
+    {Kind::Failure,     "failure",      TestStatus::Failed,      n,   n,  n,  Y,   Y,  Y,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Error,       "error",        TestStatus::Error,       n,   n,  n,  Y,   Y,  Y,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Skipped,     "skipped",      TestStatus::Skipped,     n,   n,  n,  Y,   n,  n,   none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Crash,       "crash",        TestStatus::Crashed,     n,   n,  n,  Y,   Y,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Timeout,     "timeout",      TestStatus::TimedOut,    n,   n,  n,  Y,   Y,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Interrupted, "interrupted",  TestStatus::Interrupted, n,   n,  n,  Y,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Output,      "output",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Rename,      "rename",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Retry,       "retry",        TestStatus::Passed,      n,   n,  n,  n,   Y,  n,   none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Repetition,  "repetition",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Measurement, "measurement",  TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Carries::Measurement, T::Bad,      nullptr,    "measurement OUTSIDE LIMITS", nullptr},
+    {Kind::Attachment,  "attachment",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Carries::Attachment,  T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::World,       "world",        TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Probe,       "probe",        TestStatus::Failed,      n,   n,  n,  Y,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
 };
+// clang-format on
 
 constexpr bool inKindOrder() {
     std::size_t at = 0;
@@ -125,6 +155,114 @@ TestMessage repetitionMessage(unsigned int index, unsigned int count) {
 TestStatus stateOf(ResultEvent::Kind kind) {
     const KindRow* row = rowOf(kind);
     return row != nullptr ? row->state : TestStatus::Passed;
+}
+
+bool isMessage(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->message;
+}
+
+bool isShown(const ResultEvent& event, bool passedChecks) {
+    const KindRow* row = rowOf(event.kind);
+    return row == nullptr || !row->check || !event.passed || passedChecks;
+}
+
+bool isHiddenCheck(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    return row != nullptr && row->check && event.passed;
+}
+
+bool isCheck(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->check;
+}
+
+bool carriesData(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    if (row == nullptr) {
+        return false;
+    }
+    switch (row->carries) {
+        case Carries::Measurement:
+            return event.measurement != nullptr;
+        case Carries::Attachment:
+            return event.attachment != nullptr;
+        case Carries::Nothing:
+            break;
+    }
+    return false;
+}
+
+bool isMeasurement(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    return row != nullptr && row->carries == Carries::Measurement && event.measurement != nullptr;
+}
+
+bool isAttachment(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    return row != nullptr && row->carries == Carries::Attachment && event.attachment != nullptr;
+}
+
+bool carriesAnything(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->carries != Carries::Nothing;
+}
+
+bool isSaid(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    if (row == nullptr) {
+        return true;  // garbage from a broken worker: said, as an event like any other
+    }
+    return row->said || (row->carries != Carries::Nothing && !carriesData(event));
+}
+
+bool tripsFailFast(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->failFast;
+}
+
+bool isLastWords(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->lastWords;
+}
+
+KindTone toneOf(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr ? row->tone : KindTone::Bad;
+}
+
+const char* labelOf(ResultEvent::Kind kind, bool passed) {
+    const KindRow* row = rowOf(kind);
+    if (row == nullptr) {
+        return "unknown";
+    }
+    const char* label = passed ? row->passedLabel : row->failedLabel;
+    return label != nullptr ? label : row->word;
+}
+
+bool isWorldPhase(ResultEvent::Kind kind) {
+    return kind == Kind::World;
+}
+
+const ResultEvent& shownEvent(const ResultEvent& event, ResultEvent& scratch) {
+    if (event.kind != Kind::Repetition) {
+        return event;
+    }
+    scratch.kind = Kind::Report;
+    scratch.testName = event.testName;
+    scratch.testId = event.testId;
+    scratch.time = event.time;
+    scratch.repetition = event.repetition;
+    scratch.message = repetitionMessage(event.repetition, event.repetitions);
+    return scratch;
+}
+
+const char* nameOf(ResultEvent::Kind kind, bool passed) {
+    const KindRow* row = rowOf(kind);
+    if (row == nullptr) {
+        return "unknown";
+    }
+    return !passed && row->failedName != nullptr ? row->failedName : row->word;
 }
 
 }  // namespace robottestingframework

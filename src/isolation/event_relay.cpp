@@ -28,8 +28,7 @@ void EventRelay::note(Kind kind, const TestMessage& message) {
     if (status > status_) {
         status_ = status;
     }
-    if (kind == Kind::Report || kind == Kind::Check || kind == Kind::Failure ||
-        kind == Kind::Error) {
+    if (isLastWords(kind)) {
         lastSaid_ = message.toString();
     }
 }

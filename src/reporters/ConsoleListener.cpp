@@ -16,19 +16,20 @@ namespace {
 
 using namespace reporters::colour;
 using reporters::colourOf;
-using Kind = ResultEvent::Kind;
 
-const char* colourOf(Kind kind, bool passed) {
-    switch (kind) {
-        case Kind::Check:
-            return passed ? green : red;
-        case Kind::Skipped:
-            return yellow;
-        case Kind::Report:
+// An event's colour: its kind's tone (the table).
+const char* colourOf(const ResultEvent& event) {
+    switch (toneOf(event.kind)) {
+        case KindTone::Plain:
             return nullptr;
-        default:
-            return red;
+        case KindTone::Outcome:
+            return event.passed ? green : red;
+        case KindTone::Warn:
+            return yellow;
+        case KindTone::Bad:
+            break;
     }
+    return red;
 }
 
 }  // namespace
@@ -47,6 +48,22 @@ void ConsoleListener::setStream(std::FILE* stream) {
 }
 
 void ConsoleListener::onEvent(const RunEvent& event) {
+    ResultEvent scratch;
+    const ResultEvent& data = shownEvent(event.data, scratch);
+    if (isSaid(data)) {
+        record_.onEvent(event);
+        say(event.test, data);
+        return;
+    }
+    if (isMessage(data.kind)) {
+        // A check is said with --detail; a report with -v, unless uncritical messages are
+        // hidden.
+        if (isCheck(data.kind) ? showChecks_ : verbose_ && !hideUncritical_) {
+            say(event.test, data);
+        }
+        record_.onEvent(event);
+        return;
+    }
     const RunEvent* before = record_.timeAs(&event);
     try {
         TestListener::onEvent(event);
@@ -83,69 +100,15 @@ bool ConsoleListener::printNow(const Test* test) const {
     return verbose_ || test_ == 0 || test == nullptr || test->getId() != test_;
 }
 
-void ConsoleListener::addReport(const Test* test, TestMessage msg) {
-    record_.addReport(test, msg);
-    if (verbose_ && !hideUncritical_) {
-        message(toString(Kind::Report), colourOf(Kind::Report, true), msg);
-    }
-}
-
-void ConsoleListener::addError(const Test* test, TestMessage msg) {
-    record_.addError(test, msg);
-    say(Kind::Error, test, msg);
-}
-
-void ConsoleListener::addFailure(const Test* test, TestMessage msg) {
-    record_.addFailure(test, msg);
-    say(Kind::Failure, test, msg);
-}
-
-void ConsoleListener::addCheck(const Test* test, TestMessage msg, bool passed) {
-    // Printed first, so that the record can take the message (a check per test: no copy).
-    if (showChecks_) {
-        say(Kind::Check, test, msg, passed);
-    }
-    record_.addCheck(test, std::move(msg), passed);
-}
-
-void ConsoleListener::addEvent(const Test* test, const ResultEvent& event) {
-    if (event.kind == Kind::World) {
-        return;  // about no test; the runner says it itself
-    }
-    record_.addEvent(test, event);
-    say(event.kind, test, event.message, event.passed);
-}
-
-void ConsoleListener::say(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
-                          bool passed) {
+void ConsoleListener::say(const Test* test, const ResultEvent& event) {
     if (printNow(test)) {
-        message(reporters::eventLabel(kind, passed).c_str(), colourOf(kind, passed), msg);
+        message(labelOf(event.kind, event.passed), colourOf(event), event.message);
     }
-}
-
-void ConsoleListener::addSkipped(const Test* test, TestMessage reason) {
-    record_.addSkipped(test, reason);
-    say(Kind::Skipped, test, reason);
 }
 
 void ConsoleListener::retryTest(const Test* test, TestMessage msg) {
     record_.retryTest(test, msg);
-    message(toString(Kind::Retry), yellow, msg);
-}
-
-void ConsoleListener::addCrash(const Test* test, TestMessage msg) {
-    record_.addCrash(test, msg);
-    say(Kind::Crash, test, msg);
-}
-
-void ConsoleListener::addTimeout(const Test* test, TestMessage msg) {
-    record_.addTimeout(test, msg);
-    say(Kind::Timeout, test, msg);
-}
-
-void ConsoleListener::addInterrupted(const Test* test, TestMessage msg) {
-    record_.addInterrupted(test, msg);
-    say(Kind::Interrupted, test, msg);
+    message("retry", yellow, msg);
 }
 
 void ConsoleListener::addOutput(const Test* test, const std::string& text) {
@@ -217,11 +180,10 @@ void ConsoleListener::endTest(const Test* test) {
     }
     std::vector<ResultEvent> scratch;  // its measurements among its events
     for (const ResultEvent& event : record.eventsInOrder(scratch)) {
-        if (event.kind == Kind::Report || (event.kind == Kind::Check && !showChecks_)) {
+        if (isMessage(event.kind) && (!isCheck(event.kind) || !showChecks_)) {
             continue;
         }
-        message(reporters::eventLabel(event.kind, event.passed).c_str(),
-                colourOf(event.kind, event.passed), event.message);
+        message(labelOf(event.kind, event.passed), colourOf(event), event.message);
     }
 }
 

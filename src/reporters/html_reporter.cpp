@@ -16,8 +16,6 @@ namespace reporters {
 
 namespace {
 
-using Kind = ResultEvent::Kind;
-
 std::string number(double value) {
     char text[32];
     std::snprintf(text, sizeof(text), "%.6f", value);
@@ -25,7 +23,7 @@ std::string number(double value) {
 }
 
 const char* label(const ResultEvent& event) {
-    return event.kind == Kind::Check && !event.passed ? "check failed" : toString(event.kind);
+    return nameOf(event.kind, event.passed);
 }
 
 // The message as the page shows it, the place it came from apart.
@@ -41,7 +39,7 @@ std::string messageData(const ResultEvent& event) {
         out += ",\"at\":" + jsonString(msg.getSourceFileName() + ":" +
                                        std::to_string(msg.getSourceLineNumber()));
     }
-    if (isFailure(stateOf(event.kind)) || (event.kind == Kind::Check && !event.passed)) {
+    if (isFailure(stateOf(event.kind)) || (isCheck(event.kind) && !event.passed)) {
         out += ",\"problem\":true";
     }
     return out + "}";
@@ -92,9 +90,9 @@ void appendMeasurementsAndAttachments(std::string& out, const std::vector<Result
     std::string measurements;
     std::string attachments;
     for (const ResultEvent& event : events) {
-        if (event.kind == Kind::Measurement && event.measurement) {
+        if (isMeasurement(event)) {
             measurements += (measurements.empty() ? "" : ",") + measurementData(event);
-        } else if (event.kind == Kind::Attachment && event.attachment) {
+        } else if (isAttachment(event)) {
             const Attachment& a = *event.attachment;
             attachments += std::string(attachments.empty() ? "" : ",") +
                            "{\"name\":" + jsonString(a.originalName) +
@@ -168,10 +166,10 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
     out += ",\"messages\":[";
     bool firstMessage = true;
     for (const ResultEvent& event : events) {
-        if (!settings_.passedChecks && event.kind == Kind::Check && event.passed) {
+        if (!isShown(event, settings_.passedChecks)) {
             continue;
         }
-        if (event.kind == Kind::Measurement || event.kind == Kind::Attachment) {
+        if (carriesAnything(event.kind)) {
             continue;  // in their own table and links
         }
         out += (firstMessage ? "" : ",") + messageData(event);
@@ -231,7 +229,7 @@ void HtmlReporter::writeSuiteData(ReportText& text, const SuiteRecord& suite) co
     out += ",\"messages\":[";
     bool firstMessage = true;
     for (const ResultEvent& event : suite.events) {
-        if (event.kind == Kind::Attachment) {
+        if (isAttachment(event)) {
             continue;  // linked apart (a process fixture's logs)
         }
         out += (firstMessage ? "" : ",") + messageData(event);

@@ -13,8 +13,6 @@ namespace reporters {
 
 namespace {
 
-using Kind = ResultEvent::Kind;
-
 // The key of the runner's extensions in every "extra" object, namespaced as the CTRF
 // specification recommends (4.6.1: an owner's prefix and a delimiter, the same key throughout
 // the document). report_reader.cpp reads it, and the "rtf" of earlier versions.
@@ -70,8 +68,7 @@ std::string messageList(const std::vector<ResultEvent>& events, long long origin
                         bool all) {
     std::string out;
     for (const ResultEvent& event : events) {
-        const bool message = event.kind == Kind::Report || event.kind == Kind::Check;
-        if ((!message && !all) || (event.kind == Kind::Check && event.passed && !passedChecks)) {
+        if ((!isMessage(event.kind) && !all) || !isShown(event, passedChecks)) {
             continue;
         }
         out += std::string(out.empty() ? "" : ",") +
@@ -87,7 +84,7 @@ std::string messageList(const std::vector<ResultEvent>& events, long long origin
 std::string attachmentsOf(const std::vector<ResultEvent>& events) {
     std::string out;
     for (const ResultEvent& event : events) {
-        if (event.kind != Kind::Attachment || !event.attachment) {
+        if (!isAttachment(event)) {
             continue;
         }
         const Attachment& attachment = *event.attachment;
@@ -106,7 +103,7 @@ std::string attachmentsOf(const std::vector<ResultEvent>& events) {
 std::string measurementsOf(const std::vector<ResultEvent>& events) {
     std::string out;
     for (const ResultEvent& event : events) {
-        if (event.kind != Kind::Measurement || !event.measurement) {
+        if (!isMeasurement(event)) {
             continue;
         }
         const Measurement& measurement = *event.measurement;

@@ -13,8 +13,6 @@ namespace reporters {
 
 namespace {
 
-using Kind = ResultEvent::Kind;
-
 std::string escape(const std::string& text, bool attribute) {
     return escapeMarkup(text, attribute ? Markup::Attribute : Markup::Text);
 }
@@ -101,7 +99,7 @@ std::string crashSignal(const std::string& reason) {
     return end > at + 3 ? reason.substr(at, end - at) : reason;
 }
 
-bool isProblem(Kind kind) {
+bool isProblem(ResultEvent::Kind kind) {
     return isFailure(stateOf(kind));
 }
 
@@ -144,11 +142,11 @@ std::string systemOut(const std::vector<ResultEvent>& events, const std::string&
                       bool passedChecks) {
     std::string text;
     for (const ResultEvent& event : events) {
-        if (event.kind == Kind::Report || (passedChecks && event.kind == Kind::Check)) {
+        if (isMessage(event.kind) && (!isCheck(event.kind) || passedChecks)) {
             text += eventLabel(event.kind, event.passed) + ": " + messageText(event.message) + "\n";
-        } else if (event.kind == Kind::Measurement && event.measurement) {
+        } else if (isMeasurement(event)) {
             text += measurementLines(*event.measurement);
-        } else if (event.kind == Kind::Attachment && event.attachment) {
+        } else if (isAttachment(event)) {
             text += attachmentLines(*event.attachment);
         }
     }

@@ -19,13 +19,7 @@ const char* statusWord(TestStatus status) {
 }
 
 std::string eventLabel(ResultEvent::Kind kind, bool passed) {
-    if (kind == ResultEvent::Kind::Check) {
-        return passed ? "check ok" : "check FAILED";
-    }
-    if (kind == ResultEvent::Kind::Measurement && !passed) {
-        return "measurement OUTSIDE LIMITS";
-    }
-    return toString(kind);
+    return labelOf(kind, passed);
 }
 
 std::string messageText(const TestMessage& msg) {

@@ -18,8 +18,6 @@ namespace reporters {
 
 namespace {
 
-using Kind = ResultEvent::Kind;
-
 std::uint64_t idOf(const Test* test) {
     return test != nullptr ? test->getId() : 0;
 }
@@ -289,16 +287,16 @@ void TapReporter::endTest(const Test* test) {
     }
 }
 
-void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg, bool passed) {
-    const TestStatus state = stateOf(kind);
+void TapReporter::note(const Test* test, const ResultEvent& event) {
+    const TestMessage& msg = event.message;
+    const TestStatus state = stateOf(event.kind);
     // Reports and checks are kept whatever -v says, each with its time from the run's start.
-    const bool message = (kind == Kind::Report || kind == Kind::Check) &&
-                         !(kind == Kind::Check && passed && !settings_.passedChecks);
+    const bool message = isMessage(event.kind) && isShown(event, settings_.passedChecks);
     std::string line;
     if (message) {
         char at[32];
         std::snprintf(at, sizeof(at), "[%.3f s] ", collector_.duration());
-        line = at + eventLabel(kind, passed) + ": " + messageText(msg);
+        line = at + std::string(labelOf(event.kind, event.passed)) + ": " + messageText(msg);
     }
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->id == idOf(test)) {
@@ -321,35 +319,14 @@ void TapReporter::note(Kind kind, const Test* test, const TestMessage& msg, bool
     }
 }
 
-void TapReporter::addReport(const Test* test, TestMessage msg) {
-    note(Kind::Report, test, msg);
-}
-void TapReporter::addCheck(const Test* test, TestMessage msg, bool passed) {
-    note(Kind::Check, test, msg, passed);
-}
-void TapReporter::addError(const Test* test, TestMessage msg) {
-    note(Kind::Error, test, msg);
-}
-void TapReporter::addFailure(const Test* test, TestMessage msg) {
-    note(Kind::Failure, test, msg);
-}
-void TapReporter::addSkipped(const Test* test, TestMessage reason) {
-    note(Kind::Skipped, test, reason);
-}
-void TapReporter::addCrash(const Test* test, TestMessage msg) {
-    note(Kind::Crash, test, msg);
-}
-void TapReporter::addTimeout(const Test* test, TestMessage msg) {
-    note(Kind::Timeout, test, msg);
-}
-void TapReporter::addInterrupted(const Test* test, TestMessage msg) {
-    note(Kind::Interrupted, test, msg);
-}
-void TapReporter::addEvent(const Test* test, const ResultEvent& event) {
-    if (event.kind == Kind::World) {
-        return;  // about no test point
+void TapReporter::onEvent(const RunEvent& event) {
+    ResultEvent scratch;
+    const ResultEvent& data = shownEvent(event.data, scratch);
+    if (isSaid(data) || isMessage(data.kind)) {
+        note(event.test, data);
+    } else {
+        TestListener::onEvent(event);
     }
-    note(event.kind, test, event.message);
 }
 void TapReporter::retryTest(const Test* test, TestMessage /*msg*/) {
     if (test == nullptr || last_.id == 0 || last_.id != idOf(test) ||

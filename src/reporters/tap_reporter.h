@@ -21,22 +21,16 @@ public:
         : collector_(collector), settings_(settings) {}
     void writeDocument(ReportText& out) override;
 
+    // Reads the record: a message or a problem (the table's columns) goes to its test's point;
+    // the frames, output, retries, measurements and attachments go to the handlers below.
+    void onEvent(const RunEvent& event) override;
     void startTestSuite(const TestSuite* suite) override;
     void endTestSuite(const TestSuite* suite) override;
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
-    void addReport(const Test* test, TestMessage msg) override;
-    void addCheck(const Test* test, TestMessage msg, bool passed) override;
-    void addError(const Test* test, TestMessage msg) override;
-    void addFailure(const Test* test, TestMessage msg) override;
-    void addSkipped(const Test* test, TestMessage reason) override;
-    void addCrash(const Test* test, TestMessage msg) override;
-    void addTimeout(const Test* test, TestMessage msg) override;
-    void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
     void retryTest(const Test* test, TestMessage msg) override;
-    void addEvent(const Test* test, const ResultEvent& event) override;
     void addMeasurement(const Test* test, const Measurement& measurement, bool passed) override;
     void addAttachment(const Test* test, const Attachment& attachment) override;
 
@@ -79,7 +73,7 @@ private:
     std::uint64_t retrying_ = 0;  // the id of the test whose next start is a retry; 0 for none
     std::size_t retryCount_ = 0;
 
-    void note(ResultEvent::Kind kind, const Test* test, const TestMessage& msg, bool passed = true);
+    void note(const Test* test, const ResultEvent& event);
     static void closeTest(std::vector<Block>& blocks, const OpenTest& test);
     static void closeSuite(std::vector<Block>& blocks, std::vector<std::string>& bailOuts);
 

@@ -14,17 +14,16 @@ namespace {
 // console is the report's whatever -v says.
 void appendEvents(std::string& out, const std::vector<ResultEvent>& events,
                   const ReporterSettings& settings, const char* indent) {
-    using Kind = ResultEvent::Kind;
     for (std::size_t i = 0; i < events.size(); ++i) {
         const ResultEvent& event = events[i];
-        if ((!settings.passedChecks && event.kind == Kind::Check && event.passed) ||
-            (!settings.reports && event.kind == Kind::Report)) {
+        if (!isShown(event, settings.passedChecks) ||
+            (!settings.reports && isMessage(event.kind) && !isCheck(event.kind))) {
             continue;
         }
         // A failed check is followed by the failure it makes, with the same words: said once
         // (3 000 failed checks of 5 KB wrote 30 MB, each twice).
-        if (event.kind == Kind::Check && !event.passed && i + 1 < events.size() &&
-            events[i + 1].kind == Kind::Failure &&
+        if (isCheck(event.kind) && !event.passed && i + 1 < events.size() &&
+            stateOf(events[i + 1].kind) == TestStatus::Failed &&
             events[i + 1].message.getMessage() == event.message.getMessage()) {
             continue;
         }

@@ -34,9 +34,10 @@ public:
         view.setTestHistory(testId, json);
     }
 
-    void addReport(const Test* test, TestMessage msg) override;
-    void addError(const Test* test, TestMessage msg) override;
-    void addFailure(const Test* test, TestMessage msg) override;
+    // Reads the record: a message or a problem (the table's columns) is shown under its test
+    // as it comes; the frames, output, retries, repetitions, measurements, attachments and
+    // worlds go to the handlers below.
+    void onEvent(const RunEvent& event) override;
     void startTest(const Test* test) override;
     void endTest(const Test* test) override;
     void renameTest(const Test* test, const std::string& name) override;
@@ -46,11 +47,6 @@ public:
     void endTestSuite(const Test* suite) override;
     void startTestRunner() override;
     void endTestRunner() override;
-    void addCheck(const Test* test, TestMessage msg, bool passed) override;
-    void addSkipped(const Test* test, TestMessage reason) override;
-    void addCrash(const Test* test, TestMessage msg) override;
-    void addTimeout(const Test* test, TestMessage msg) override;
-    void addInterrupted(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void retryTest(const Test* test, TestMessage msg) override;
     void startRepetition(const Test* test, unsigned int index, unsigned int count) override;
@@ -59,10 +55,6 @@ public:
     void addAttachment(const Test* test, const Attachment& attachment) override;
 
 private:
-    // A message of `kind`: shown under its word, giving the test its state (the tables).
-    void said(ResultEvent::Kind kind, const Test* test, const TestMessage& msg) {
-        view.addMessage(idOf(test), toString(kind), msg, stateOf(kind));
-    }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
     // "tests/arith.lua (ArmTest)": the test's id in its suite and the name it gives itself
     // (docs/reference/test-ids.md), as the console shows it.
@@ -83,47 +75,21 @@ private:
 
 }  // namespace
 
-void ServedLivePage::addReport(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Report, test, msg);
-}
-
-void ServedLivePage::addError(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Error, test, msg);
-}
-
-void ServedLivePage::addFailure(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Failure, test, msg);
-}
-
-void ServedLivePage::addCheck(const Test* test, TestMessage msg, bool passed) {
+void ServedLivePage::onEvent(const RunEvent& event) {
+    const ResultEvent& data = event.data;
     // Passing checks are many and say little; a failed one is shown with its failure.
-    if (!passed) {
-        view.addMessage(idOf(test), "check failed", msg, TestStatus::Passed);
-    }
-}
-
-void ServedLivePage::addSkipped(const Test* test, TestMessage reason) {
-    said(ResultEvent::Kind::Skipped, test, reason);
-}
-
-void ServedLivePage::addCrash(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Crash, test, msg);
-}
-
-void ServedLivePage::addTimeout(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Timeout, test, msg);
-}
-
-void ServedLivePage::addInterrupted(const Test* test, TestMessage msg) {
-    said(ResultEvent::Kind::Interrupted, test, msg);
-}
-
-void ServedLivePage::addEvent(const Test* test, const ResultEvent& event) {
-    if (event.kind == ResultEvent::Kind::World) {
-        view.worldPhase(event.testName, event.message.getMessage(), event.message.getDetail());
+    if (isSaid(data) || (isMessage(data.kind) && !isHiddenCheck(data))) {
+        view.addMessage(idOf(event.test), nameOf(data.kind, data.passed), data.message,
+                        stateOf(data.kind));
         return;
     }
-    said(event.kind, test, event.message);
+    TestListener::onEvent(event);
+}
+
+void ServedLivePage::addEvent(const Test* /*test*/, const ResultEvent& event) {
+    if (isWorldPhase(event.kind)) {
+        view.worldPhase(event.testName, event.message.getMessage(), event.message.getDetail());
+    }
 }
 
 void ServedLivePage::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {

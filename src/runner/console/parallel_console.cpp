@@ -13,7 +13,6 @@ namespace runner {
 namespace {
 
 using namespace reporters::colour;
-using Kind = ResultEvent::Kind;
 
 // When `event` happened (steady seconds): as the collector times it, so that a test's time on
 // the console is the one the reports give (a kept event arrives up to SuiteEvents::kLookMs
@@ -91,29 +90,20 @@ public:
             open_().erase(found);
         }
     }
-    void addFailure(const Test* test, TestMessage msg) override { raise(Kind::Failure, test, msg); }
-    void addError(const Test* test, TestMessage msg) override { raise(Kind::Error, test, msg); }
-    void addCrash(const Test* test, TestMessage msg) override { raise(Kind::Crash, test, msg); }
-    void addTimeout(const Test* test, TestMessage msg) override { raise(Kind::Timeout, test, msg); }
-    void addInterrupted(const Test* test, TestMessage msg) override {
-        raise(Kind::Interrupted, test, msg);
-    }
-    void addSkipped(const Test* test, TestMessage msg) override { raise(Kind::Skipped, test, msg); }
-    void addCheck(const Test* test, TestMessage msg, bool passed) override {
-        if (!passed) {
-            raise(Kind::Check, test, msg, passed);
+    // Reads the record: a problem, a failed check and (with -v) a report are lines under
+    // their test (the table's columns); the frames, output and retries go to the handlers.
+    void onEvent(const RunEvent& event) override {
+        ResultEvent scratch;
+        const ResultEvent& data = shownEvent(event.data, scratch);
+        if (isSaid(data)) {
+            raise(event.test, data);
+        } else if (isMessage(data.kind)) {
+            if (!isHiddenCheck(data) && (isCheck(data.kind) || console_.settings_.verbose)) {
+                raise(event.test, data);
+            }
+        } else {
+            TestListener::onEvent(event);
         }
-    }
-    void addReport(const Test* test, TestMessage msg) override {
-        if (console_.settings_.verbose) {
-            raise(Kind::Report, test, msg);
-        }
-    }
-    void addEvent(const Test* test, const ResultEvent& event) override {
-        if (event.kind == ResultEvent::Kind::World) {
-            return;  // the scheduler's note says it (SchedulerView::note)
-        }
-        raise(event.kind, test, event.message, event.passed);
     }
     void addOutput(const Test* test, const std::string& text) override {
         auto found = open_().find(test);
@@ -184,10 +174,10 @@ private:
     }
 
     // A message of `kind`: its word and the state it gives come from the tables.
-    void raise(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
-               bool passed = true) {
-        const TestStatus status = stateOf(kind);
-        const std::string label = reporters::eventLabel(kind, passed);
+    void raise(const Test* test, const ResultEvent& event) {
+        const TestMessage& msg = event.message;
+        const TestStatus status = stateOf(event.kind);
+        const std::string label = labelOf(event.kind, event.passed);
         auto found = open_().find(test);
         const std::string text =
             "      " + label + ": " + reporters::shownMessage(msg, "          ");

@@ -159,21 +159,18 @@ void RunGate::tripped(const Test* test) {
 }
 
 void RunGate::onEvent(const RunEvent& event) {
-    using Kind = ResultEvent::Kind;
-    switch (event.data.kind) {
-        case Kind::Failure:
-        case Kind::Error:
-        case Kind::Crash:
-        case Kind::Timeout:
-        case Kind::Retry:
-            TestListener::onEvent(event);
-            break;
-        default:
-            break;
+    if (!tripsFailFast(event.data.kind)) {
+        return;
+    }
+    // A failing kind trips the gate; the retry that follows a failed attempt takes it back.
+    if (isFailure(stateOf(event.data.kind))) {
+        tripped(event.test);
+    } else {
+        retried(event.test);
     }
 }
 
-void RunGate::retryTest(const Test* test, TestMessage) {
+void RunGate::retried(const Test* test) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (test != nullptr && firstFailing_ == test) {
         firstFailure_.clear();

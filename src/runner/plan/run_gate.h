@@ -42,18 +42,14 @@ public:
 
     bool skip(const Test* test, TestMessage& reason) override;
 
-    void addFailure(const Test* test, TestMessage) override { tripped(test); }
-    void addError(const Test* test, TestMessage) override { tripped(test); }
-    void addCrash(const Test* test, TestMessage) override { tripped(test); }
-    void addTimeout(const Test* test, TestMessage) override { tripped(test); }
-    // A test run again (--retries) has not failed yet: only its last attempt counts.
-    void retryTest(const Test* test, TestMessage) override;
-    // The kinds above only: the others, most of a run's events (starts, ends, checks), pass
-    // by without their message copied for a handler that would ignore it.
+    // Reads the record: a kind that trips --fail-fast (the table's column) trips the gate; a
+    // test run again (--retries) has not failed yet: only its last attempt counts. The others,
+    // most of a run's events (starts, ends, checks), pass by.
     void onEvent(const RunEvent& event) override;
 
 private:
     void tripped(const Test* test);
+    void retried(const Test* test);
 
     const std::deque<PluginTest>& tests_;
     bool failFast_ = false;

@@ -85,7 +85,7 @@ public:
     double startedAt() const;
     // What happened to it since the last call: for the console, its line ("world 'lab' (shared
     // by 3 suites) starting"); for the reports, its phase ("start", "ready", "failed",
-    // "collapsed", "stop"), a detail and when (steady seconds): ResultEvent::Kind::World.
+    // "collapsed", "stop"), a detail and when (steady seconds): a world event (isWorldPhase).
     struct Note {
         std::string line, phase, detail;
         double at = 0;

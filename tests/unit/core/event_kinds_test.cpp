@@ -2,6 +2,7 @@
 // handler RTF 2.x's listeners override.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -173,4 +174,61 @@ TEST(EventKinds, StateOfComesFromTheTable) {
     EXPECT_EQ(stateOf(Kind::Report), TestStatus::Passed);
     EXPECT_EQ(stateOf(Kind::Retry), TestStatus::Passed);
     EXPECT_EQ(stateOf(Kind::Probe), TestStatus::Failed);
+}
+
+// What a kind is to the listeners: the other columns of the one table (issue 37, item 1).
+TEST(EventKinds, WhatAKindIsToTheListenersComesFromTheTable) {
+    EXPECT_TRUE(isMessage(Kind::Report));
+    EXPECT_TRUE(isMessage(Kind::Check));
+    EXPECT_FALSE(isMessage(Kind::Failure));
+    EXPECT_TRUE(isCheck(Kind::Check));
+    EXPECT_FALSE(isCheck(Kind::Report));
+
+    ResultEvent check;
+    check.kind = Kind::Check;
+    EXPECT_TRUE(isHiddenCheck(check));
+    EXPECT_FALSE(isShown(check, false));
+    EXPECT_TRUE(isShown(check, true));
+    check.passed = false;
+    EXPECT_FALSE(isHiddenCheck(check));
+    EXPECT_TRUE(isShown(check, false));
+    EXPECT_STREQ(labelOf(Kind::Check, false), "check FAILED");
+    EXPECT_STREQ(labelOf(Kind::Check, true), "check ok");
+    EXPECT_STREQ(nameOf(Kind::Check, false), "check failed");
+    EXPECT_STREQ(labelOf(Kind::Measurement, false), "measurement OUTSIDE LIMITS");
+    EXPECT_STREQ(labelOf(Kind::Failure, true), "failure");
+
+    for (Kind kind : {Kind::Failure, Kind::Error, Kind::Crash, Kind::Timeout, Kind::Retry}) {
+        EXPECT_TRUE(tripsFailFast(kind)) << toString(kind);
+    }
+    for (Kind kind : {Kind::Report, Kind::Check, Kind::Skipped, Kind::Interrupted, Kind::Probe}) {
+        EXPECT_FALSE(tripsFailFast(kind)) << toString(kind);
+    }
+
+    ResultEvent probe;
+    probe.kind = Kind::Probe;  // no handler of its own: said as it comes
+    EXPECT_TRUE(isSaid(probe));
+    ResultEvent measured;
+    measured.kind = Kind::Measurement;
+    EXPECT_TRUE(isSaid(measured));  // lost its data: said as any other
+    measured.measurement = std::make_shared<const Measurement>();
+    EXPECT_FALSE(isSaid(measured));
+    EXPECT_TRUE(isMeasurement(measured));
+    ResultEvent world;
+    world.kind = Kind::World;
+    EXPECT_FALSE(isSaid(world));
+    EXPECT_TRUE(isWorldPhase(Kind::World));
+}
+
+TEST(EventKinds, ARepetitionIsShownAsItsReport) {
+    ResultEvent repetition;
+    repetition.kind = Kind::Repetition;
+    repetition.repetition = 2;
+    repetition.repetitions = 3;
+    ResultEvent scratch;
+    const ResultEvent& shown = shownEvent(repetition, scratch);
+    EXPECT_EQ(shown.kind, Kind::Report);
+    EXPECT_EQ(shown.message.getMessage(), "repetition 2/3");
+    ResultEvent report;
+    EXPECT_EQ(&shownEvent(report, scratch), &report);
 }

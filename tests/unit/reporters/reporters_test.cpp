@@ -62,13 +62,15 @@ TEST(StateTable, EachEventKindGivesOneState) {
 TEST(TapReporter, EventsGoToTheTestTheyNameNotTheLastStarted) {
     TestResultCollector collector;
     TapReporter tap(collector, ReporterSettings{});
+    TestResult result;  // the events reach the reporter as a run sends them: as records
+    result.addListener(&tap);
     LambdaTest a("a");
     LambdaTest b("b");
-    tap.startTest(&a);
-    tap.startTest(&b);
-    tap.addFailure(&a, TestMessage("a went wrong"));
-    tap.endTest(&b);
-    tap.endTest(&a);
+    result.startTest(&a);
+    result.startTest(&b);
+    result.addFailure(&a, TestMessage("a went wrong"));
+    result.endTest(&b);
+    result.endTest(&a);
     const std::string text = tap.document();
     EXPECT_EQ(text.rfind("TAP version 14\n1..2\nok 1 - b\nnot ok 2 - a\n", 0), 0u) << text;
     EXPECT_TRUE(has(text, "message: \"a went wrong\"")) << text;
@@ -169,15 +171,17 @@ TEST(TextSafety, OneMarkupEscapingForEachPlaceTextGoes) {
 TEST(TapReporter, KeepsEveryReportAndCheckWithItsTimeAndAFixturesAsComments) {
     TestResultCollector collector;
     TapReporter tap(collector, ReporterSettings{});
+    TestResult result;
+    result.addListener(&tap);
     TestSuite suite("s");
     LambdaTest a("a");
-    tap.startTestSuite(&suite);
-    tap.addReport(&suite, TestMessage("world is ready"));
-    tap.startTest(&a);
-    tap.addReport(&a, TestMessage("moved the arm"));
-    tap.addCheck(&a, TestMessage("joint in range"), true);
-    tap.endTest(&a);
-    tap.endTestSuite(&suite);
+    result.startTestSuite(&suite);
+    result.addReport(&suite, TestMessage("world is ready"));
+    result.startTest(&a);
+    result.addReport(&a, TestMessage("moved the arm"));
+    result.addCheck(&a, TestMessage("joint in range"), true);
+    result.endTest(&a);
+    result.endTestSuite(&suite);
     const std::string text = tap.document();
     EXPECT_TRUE(has(text, "    # [")) << text;
     EXPECT_TRUE(has(text, " s] report: world is ready\n")) << text;

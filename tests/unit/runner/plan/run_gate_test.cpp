@@ -112,6 +112,19 @@ TEST(RunGate, DependencyMustHaveRunAndPassed) {
     EXPECT_NE(reason.getMessage().find("did not run"), std::string::npos);
 }
 
+namespace {
+
+// The event of `kind` about `test`, as TestResult::publish hands it to the gate.
+RunEvent eventOf(ResultEvent::Kind kind, const Test* test) {
+    RunEvent event;
+    event.data.kind = kind;
+    event.data.message = TestMessage("boom");
+    event.test = test;
+    return event;
+}
+
+}  // namespace
+
 TEST(RunGate, FailFastSkipsEverythingAfterTheFirstFailure) {
     std::deque<PluginTest> none;
     RunGate gate(none);
@@ -121,12 +134,19 @@ TEST(RunGate, FailFastSkipsEverythingAfterTheFirstFailure) {
     PluginTest test(s, executor);
     TestMessage reason;
     EXPECT_FALSE(gate.skip(&test, reason));
-    gate.addFailure(&test, TestMessage("boom"));
+    gate.onEvent(eventOf(ResultEvent::Kind::Report, &test));  // a report trips nothing
+    gate.onEvent(eventOf(ResultEvent::Kind::Skipped, &test));
+    EXPECT_FALSE(gate.skip(&test, reason));
+    gate.onEvent(eventOf(ResultEvent::Kind::Failure, &test));
     ASSERT_TRUE(gate.skip(&test, reason));
     EXPECT_NE(reason.getMessage().find("--fail-fast"), std::string::npos);
+    gate.onEvent(eventOf(ResultEvent::Kind::Retry, &test));  // it runs again: not failed yet
+    EXPECT_FALSE(gate.skip(&test, reason));
+    gate.onEvent(eventOf(ResultEvent::Kind::Crash, &test));
+    EXPECT_TRUE(gate.skip(&test, reason));
 
     RunGate patient(none);  // without --fail-fast a failure skips nothing
-    patient.addFailure(&test, TestMessage("boom"));
+    patient.onEvent(eventOf(ResultEvent::Kind::Failure, &test));
     EXPECT_FALSE(patient.skip(&test, reason));
 }
 
