@@ -9,7 +9,7 @@
 #include "reporters/history_strip.h"
 #include "reporters/html_page_assets.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

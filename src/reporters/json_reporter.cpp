@@ -6,7 +6,7 @@
 #include <ctime>
 
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

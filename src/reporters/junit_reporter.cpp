@@ -6,7 +6,7 @@
 
 #include "reporters/host_name.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -3,7 +3,7 @@
 #include <cstdio>
 
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -5,7 +5,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {

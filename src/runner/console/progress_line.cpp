@@ -7,7 +7,7 @@
 
 #include "platform/terminal_width.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {
