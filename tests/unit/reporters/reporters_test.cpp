@@ -19,7 +19,7 @@
 #include "reporters/reporter_registry.h"
 #include "reporters/summary.h"
 #include "reporters/tap_reporter.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 using namespace rtf_test;
 using namespace robottestingframework::reporters;
