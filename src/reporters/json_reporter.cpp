@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <ctime>
 
-#include "reporters/summary.h"
 #include "core/text_safety.h"
+#include "reporters/summary.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "reporters/summary.h"
 #include "core/text_safety.h"
+#include "reporters/summary.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -4,8 +4,8 @@
 
 #include <robottestingframework/TestSuite.h>
 
-#include "reporters/summary.h"
 #include "core/text_safety.h"
+#include "reporters/summary.h"
 
 namespace robottestingframework {
 namespace runner {
