@@ -30,7 +30,7 @@
 #include <thread>
 #include <vector>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 extern char** environ;
 

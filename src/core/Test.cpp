@@ -5,7 +5,7 @@
 
 #include <robottestingframework/TestResult.h>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 

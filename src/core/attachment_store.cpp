@@ -5,7 +5,7 @@
 #include <system_error>
 
 #include "attachment_store.h"
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace fs = std::filesystem;
 

@@ -7,8 +7,8 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/text_safety.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 

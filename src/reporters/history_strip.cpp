@@ -4,7 +4,7 @@
 
 #include <robottestingframework/Measurement.h>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -6,10 +6,10 @@
 #include <ctime>
 #include <string_view>
 
+#include "core/text_safety.h"
 #include "reporters/history_strip.h"
 #include "reporters/html_page_assets.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

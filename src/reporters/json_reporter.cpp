@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <ctime>
 
+#include "core/text_safety.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -4,9 +4,9 @@
 #include <cstdio>
 #include <ctime>
 
+#include "core/text_safety.h"
 #include "reporters/host_name.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

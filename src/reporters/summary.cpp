@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

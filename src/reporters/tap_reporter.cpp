@@ -10,8 +10,8 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/text_safety.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
+#include "core/text_safety.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace reporters {

@@ -6,7 +6,7 @@
 
 #include <robottestingframework/ResultEvent.h>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace web {

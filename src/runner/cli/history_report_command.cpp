@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 #include "runner/cli/exit_status.h"
 #include "runner/cli/program_name.h"
 #include "runner/history/history_database.h"

@@ -4,8 +4,8 @@
 
 #include <robottestingframework/TestSuite.h>
 
+#include "core/text_safety.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {

@@ -5,9 +5,9 @@
 
 #include <robottestingframework/TestSuite.h>
 
+#include "core/text_safety.h"
 #include "platform/terminal_width.h"
 #include "reporters/summary.h"
-#include "reporters/text_safety.h"
 
 namespace robottestingframework {
 namespace runner {

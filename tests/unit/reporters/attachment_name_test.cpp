@@ -1,7 +1,7 @@
 // The name a stored attachment gets: one every report can link and Jenkins' line can hold.
 #include <gtest/gtest.h>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 namespace robottestingframework {
 namespace {

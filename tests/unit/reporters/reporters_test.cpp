@@ -14,12 +14,12 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/text_safety.h"
 #include "core_test_helpers.h"
 #include "reporters/html_reporter.h"
 #include "reporters/reporter_registry.h"
 #include "reporters/summary.h"
 #include "reporters/tap_reporter.h"
-#include "reporters/text_safety.h"
 
 using namespace rtf_test;
 using namespace robottestingframework::reporters;

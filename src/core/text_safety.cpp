@@ -1,4 +1,4 @@
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 
 #include <algorithm>
 #include <cstdio>
