@@ -9,6 +9,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import WebDriverWait
 
 from browser import chromium
+from conftest import run_runner
 from web_run import WebRun, quick_test, waiting_test
 
 
@@ -64,3 +65,34 @@ def test_live_page_shows_every_planned_suite_and_test_from_the_start(tmp_path, s
             run.proc.send_signal(signal.SIGINT)
         status = run.wait(timeout=20)
     assert status == 0, run.output()
+
+
+def test_timeline_lanes_are_named_and_a_short_failure_stays_visible(tmp_path, suite_file,
+                                                                      browser):
+    slow = quick_test(tmp_path, "slow move", "sleep 2\n")
+    broken = quick_test(tmp_path, "quick fail", "echo 'joint 3 out of range' >&2\nexit 1\n")
+    suite_file(f"""<suite name="arm">
+  <test type="exec">{slow}</test>
+  <test type="exec">{broken}</test>
+</suite>""", name="arm.xml")
+    suite_file(f"""<suite name="base">
+  <test type="exec">{quick_test(tmp_path, "base check")}</test>
+</suite>""", name="base.xml")
+    result = run_runner("-j", "2", "-s", "arm.xml", "-s", "base.xml", "-o", "html:report.html",
+                        cwd=tmp_path)
+    assert result.returncode == 1, result.output
+    browser.get((tmp_path / "report.html").as_uri())
+    labels = [label.text for label in
+              browser.find_elements(By.CSS_SELECTOR, "#timeline .lane-label.suite-lane")]
+    assert sorted(labels) == ["arm", "base"], labels
+    assert not any(label.startswith("lane ") for label in labels)
+    # The failing test took a few ms beside a 2 s one: still at least 4 px, with a marker.
+    bar = browser.execute_script(
+        "for (const r of document.querySelectorAll('#timeline rect.t-failing')) {"
+        "  if (r.querySelector('title').textContent.includes('quick fail'))"
+        "    return r.getBoundingClientRect().width; }"
+        "return null;")
+    assert bar is not None and bar >= 4, bar
+    markers = browser.find_elements(By.CSS_SELECTOR, "#timeline path.failure-marker")
+    assert [m.get_attribute("data-test") for m in markers] == ["quick fail"]
+    assert markers[0].rect["width"] > 0
