@@ -96,3 +96,63 @@ def test_timeline_lanes_are_named_and_a_short_failure_stays_visible(tmp_path, su
     markers = browser.find_elements(By.CSS_SELECTOR, "#timeline path.failure-marker")
     assert [m.get_attribute("data-test") for m in markers] == ["quick fail"]
     assert markers[0].rect["width"] > 0
+
+
+def junit_run(path, day, cases):
+    """A JUnit report of one run of the suite "robot": cases are (name, seconds, failed)."""
+    path.write_text(
+        '<?xml version="1.0" encoding="utf-8"?><testsuites><testsuite name="robot" '
+        f'timestamp="2024-01-{day:02d}T03:04:05">' + "".join(
+            f'<testcase name="{name}" time="{seconds}">'
+            + ('<failure message="no"/>' if failed else "") + "</testcase>"
+            for name, seconds, failed in cases) + "</testsuite></testsuites>")
+
+
+def test_history_report_html_lists_always_failing_and_judges_slowdowns_by_noise(
+        tmp_path, browser):
+    """Issue 38, friction 12: a test failing 10 runs of 10 is listed; a 7x slow-down from
+    0.016 s to 0.112 s (-j 2 noise) is not; a 1 s -> 2 s one is; the HTML form shows each
+    test's outcomes and times over the runs."""
+    reports = []
+    for run in range(10):
+        recent = run >= 7
+        path = tmp_path / f"run{run}.xml"
+        junit_run(path, run + 1, [("gripper.py", 0.5, True),
+                                  ("loop.py", 0.112 if recent else 0.016, False),
+                                  ("drive.py", 2.0 if recent else 1.0, False),
+                                  ("flip.py", 0.2, run % 2 == 1)])
+        reports.append(path.name)
+    r = run_runner("--history", "h.db", "--history-import", *reports, cwd=tmp_path)
+    assert r.returncode == 0, r
+    r = run_runner("--history", "h.db", "--history-report", "10", "--history-html",
+                   "history.html", cwd=tmp_path)
+    assert r.returncode == 0, r
+    text = r.stdout
+    failing = text.split("Tests that failed every run:\n")[1].split("\n\n")[0]
+    assert "robot/gripper.py  (10 runs)" in failing, text
+    assert "flip.py" not in failing, text
+    slowed = text.split("Most slowed-down tests")[1]
+    assert "robot/drive.py" in slowed and "noise floor" in slowed, text
+    assert "loop.py" not in slowed, text
+
+    browser.get((tmp_path / "history.html").as_uri())
+    always = [li.get_attribute("data-test")
+              for li in browser.find_elements(By.CSS_SELECTOR, "#always-failing li")]
+    assert always == ["robot/gripper.py"], always
+    slowed = [row.get_attribute("data-test")
+              for row in browser.find_elements(By.CSS_SELECTOR, "#slowed tr[data-test]")]
+    assert slowed == ["robot/drive.py"], slowed
+    slowest = browser.find_elements(By.CSS_SELECTOR, "#slowest li")
+    assert slowest[0].get_attribute("data-test") == "robot/drive.py"
+    rows = {row.get_attribute("data-test"): row
+            for row in browser.find_elements(By.CSS_SELECTOR, "#tests tr.test")}
+    assert sorted(rows) == ["robot/drive.py", "robot/flip.py", "robot/gripper.py",
+                            "robot/loop.py"]
+    flip = rows["robot/flip.py"]
+    assert float(flip.get_attribute("data-flaky")) > 0.5
+    squares = flip.find_elements(By.CSS_SELECTOR, ".run")
+    assert len(squares) == 10
+    assert [s.get_attribute("class") for s in squares[:2]] == ["run passed", "run failed"]
+    assert squares[0].rect["width"] > 0
+    assert rows["robot/drive.py"].find_elements(By.CSS_SELECTOR, "svg.durations polyline")
+    assert browser.execute_script("return document.scripts.length;") == 0

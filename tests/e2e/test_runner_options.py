@@ -151,7 +151,7 @@ REFUSES_EMPTY = {
     "--rerun-failed", "--repeat-until-fail", "--var", "--var-file", "--tag", "--exclude-tag",
     "--filter", "--shard-index", "--shard-count", "--durations", "--durations-from", "--merge",
     "--expect-shards",
-    "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
+    "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report", "--history-html",
     "--world-up", "--world", "--world-down",
 }
 
