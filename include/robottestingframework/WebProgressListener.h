@@ -14,8 +14,10 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestSuite.h>
 
 namespace robottestingframework {
 
@@ -44,6 +46,10 @@ public:
     // {"states":[...],"durations":[...],"flakyRate":R} (the runner's --history). Give it
     // before the test's suite starts.
     void setTestHistory(const std::string& testId, const std::string& json);
+    // The suites the run will run, in order: each one and its tests are on the page from the
+    // start, also those that start later (side by side with -j N). Give it after
+    // setTestHistory and before the run starts; without it, suites show as they start.
+    void setPlan(const std::vector<const TestSuite*>& suites);
 
     // Every event of a run reaches the page as the record, whatever its kind: the one
     // forwarder (the named handlers of TestListener stay the adapter of RTF 2.x's listeners).

@@ -116,6 +116,15 @@ std::vector<std::string> summaryLines(const TestResultCollector& collector) {
                         std::to_string(collector.passedSuiteCount()) + " passed, " +
                         std::to_string(collector.failedSuiteCount()) + " failed)");
     }
+    // A failed fixture counts as a failure in the closing line (closingLine): the summary says
+    // the same number and what it is made of (issue 38: "2 failed" here, "3 failed" there).
+    if (collector.failedFixtureCount() > 0) {
+        const std::size_t tests = collector.failedCount();
+        const std::size_t fixtures = collector.failedFixtureCount();
+        lines.push_back("  failed: " + std::to_string(tests + fixtures) + " (" +
+                        std::to_string(tests) + (tests == 1 ? " test, " : " tests, ") +
+                        std::to_string(fixtures) + (fixtures == 1 ? " fixture)" : " fixtures)"));
+    }
     lines.push_back("  time:   " + seconds(collector.duration()));
     return lines;
 }

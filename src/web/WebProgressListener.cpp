@@ -40,6 +40,12 @@ void WebProgressListener::setTestHistory(const std::string& testId, const std::s
     }
 }
 
+void WebProgressListener::setPlan(const std::vector<const TestSuite*>& suites) {
+    if (state_->page) {
+        state_->page->setPlan(suites);
+    }
+}
+
 bool WebProgressListener::isListening() const {
     return state_->page != nullptr && state_->page->isListening();
 }

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <robottestingframework/TestListener.h>
+#include <robottestingframework/TestSuite.h>
 
 namespace robottestingframework {
 namespace web {
@@ -21,6 +23,8 @@ public:
     // The recent runs of the test "SUITE/TEST" (--history), as JSON the page draws beside it:
     // {"states":[...],"durations":[...],"flakyRate":R}. Given before the run starts.
     virtual void setTestHistory(const std::string& testId, const std::string& json) = 0;
+    // The run's suites and their tests, shown from the start (after setTestHistory).
+    virtual void setPlan(const std::vector<const TestSuite*>& suites) = 0;
 };
 
 // RTF_web's factory, found by this name: a page on host:port (0 picks a free one), never null.

@@ -115,30 +115,66 @@ void RunView::endRun() {
     publishRun();
 }
 
-void RunView::startSuite(const std::string& name, const std::vector<Planned>& tests) {
+RunView::TestView RunView::plannedTest(const std::string& suite, const Planned& test) const {
+    TestView view;
+    view.id = test.id;
+    view.name = test.name;
+    const auto history = history_.find(suite.empty() ? test.name : suite + "/" + test.name);
+    if (history != history_.end()) {
+        view.history = history->second;
+    }
+    return view;
+}
+
+void RunView::setPlan(const std::vector<PlannedSuite>& suites) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const PlannedSuite& planned : suites) {
+        SuiteView suite;
+        suite.name = planned.name;
+        suite.state = "waiting";
+        for (const Planned& test : planned.tests) {
+            suite.tests.push_back(plannedTest(planned.name, test));
+        }
+        suites_.push_back(std::move(suite));
+        publishSuite(suites_.size() - 1);
+    }
+    publishRun();
+}
+
+void RunView::startSuite(const std::string& name, const std::vector<Planned>& tests,
+                         std::uint64_t id) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (runState_ == "waiting") {
         // A suite run on its own, without a runner.
         runState_ = "running";
         runStarted_ = std::chrono::steady_clock::now();
     }
-    SuiteView suite;
+    // The planned suite of this name, when the plan named it and it has not started yet.
+    std::size_t index = none;
+    for (std::size_t i = 0; i < suites_.size() && index == none; ++i) {
+        if (suites_[i].state == "waiting" && suites_[i].name == name) {
+            index = i;
+        }
+    }
+    if (index == none) {
+        suites_.emplace_back();
+        index = suites_.size() - 1;
+    }
+    SuiteView& suite = suites_[index];
     suite.name = name;
+    suite.id = id;
+    suite.state = "running";
     suite.started = std::chrono::steady_clock::now();
     suite.startedAt = clock();
     for (const auto& test : tests) {
-        TestView view;
-        view.id = test.id;
-        view.name = test.name;
-        const auto history = history_.find(name.empty() ? test.name : name + "/" + test.name);
-        if (history != history_.end()) {
-            view.history = history->second;
+        const bool known = std::any_of(suite.tests.begin(), suite.tests.end(),
+                                       [&](const TestView& kept) { return kept.id == test.id; });
+        if (!known) {
+            suite.tests.push_back(plannedTest(name, test));
         }
-        suite.tests.push_back(std::move(view));
     }
-    suites_.push_back(std::move(suite));
-    openSuites_.push_back(suites_.size() - 1);
-    openSuite_ = suites_.size() - 1;
+    openSuites_.push_back(index);
+    openSuite_ = index;
     log("suite " + name + " started");
     publishSuite(openSuite_);
     publishRun();
@@ -149,19 +185,28 @@ void RunView::setTestHistory(const std::string& testId, const std::string& json)
     history_[testId] = json;
 }
 
-void RunView::endSuite() {
+void RunView::endSuite(const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
     if (openSuites_.empty()) {
         return;
     }
-    std::size_t index = openSuites_.back();
-    openSuites_.pop_back();
+    // Suites run side by side (-j N) end in any order: the latest open one of that name.
+    std::size_t at = openSuites_.size() - 1;
+    for (std::size_t i = openSuites_.size(); i > 0 && !name.empty(); --i) {
+        if (suites_[openSuites_[i - 1]].name == name) {
+            at = i - 1;
+            break;
+        }
+    }
+    const bool innermost = at + 1 == openSuites_.size();
+    const std::size_t index = openSuites_[at];
+    openSuites_.erase(openSuites_.begin() + static_cast<std::ptrdiff_t>(at));
     SuiteView& suite = suites_[index];
     suite.state = suite.failed ? "failed" : "passed";
     suite.duration = secondsSince(suite.started);
     openSuite_ = openSuites_.empty() ? none : openSuites_.back();
-    if (openSuite_ != none && suite.failed) {
-        suites_[openSuite_].failed = true;
+    if (innermost && openSuite_ != none && suite.failed) {
+        suites_[openSuite_].failed = true;  // a nested suite's failure is its parent's
     }
     log("suite " + suite.name + " " + suite.state);
     publishSuite(index);
@@ -179,14 +224,25 @@ std::optional<RunView::Place> RunView::findOpen(std::uint64_t id) const {
 
 void RunView::startTest(std::uint64_t id, const std::string& name) {
     std::lock_guard<std::mutex> lock(mutex_);
-    SuiteView& suite = openSuite();
+    // Its place among the planned tests of the open suites: with -j N several are open, and
+    // their events come interleaved.
     std::size_t index = none;
-    for (std::size_t i = 0; i < suite.tests.size(); ++i) {
-        if (suite.tests[i].id == id && suite.tests[i].state == "not run") {
-            index = i;
-            break;
+    std::size_t suiteIndex = none;
+    for (auto open = openSuites_.rbegin(); open != openSuites_.rend() && index == none; ++open) {
+        const std::vector<TestView>& tests = suites_[*open].tests;
+        for (std::size_t i = 0; i < tests.size(); ++i) {
+            if (tests[i].id == id && tests[i].state == "not run") {
+                index = i;
+                suiteIndex = *open;
+                break;
+            }
         }
     }
+    if (index == none) {
+        openSuite();
+        suiteIndex = openSuite_;
+    }
+    SuiteView& suite = suites_[suiteIndex];
     if (index == none) {
         // Not planned (a repetition, or a suite that did not list it).
         TestView view;
@@ -199,9 +255,9 @@ void RunView::startTest(std::uint64_t id, const std::string& name) {
     test.state = "running";
     test.started = std::chrono::steady_clock::now();
     test.startedAt = clock();
-    openTests_.push_back({id, {openSuite_, index}});
+    openTests_.push_back({id, {suiteIndex, index}});
     log("test " + name + " started");
-    publishTest(openSuite_, index);
+    publishTest(suiteIndex, index);
 }
 
 void RunView::endTest(std::uint64_t id) {
@@ -300,12 +356,24 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
     log("[" + message.kind + "] " + message.text);
     const std::optional<Place> place = findOpen(id);
     if (!place) {
-        SuiteView& suite = openSuite();
+        // A suite's own (its fixture's): the open suite of that id, else the innermost.
+        std::size_t index = none;
+        for (auto open = openSuites_.rbegin(); open != openSuites_.rend() && id != 0; ++open) {
+            if (suites_[*open].id == id) {
+                index = *open;
+                break;
+            }
+        }
+        if (index == none) {
+            openSuite();
+            index = openSuite_;
+        }
+        SuiteView& suite = suites_[index];
         if (isFailure(status)) {
             suite.failed = true;
         }
         if (keep(message, suite.messages, suite.hiddenReports)) {
-            publishSuite(openSuite_);
+            publishSuite(index);
         }
         return;
     }

@@ -32,8 +32,20 @@ public:
         std::uint64_t id;
         std::string name;
     };
-    void startSuite(const std::string& name, const std::vector<Planned>& tests);
-    void endSuite();
+    // The run's plan, given before it starts: every suite and its tests are on the page from
+    // the start ("waiting" suites, "not run" tests), also those a parallel run (-j N) starts
+    // later. A suite that starts takes the first waiting one of its name.
+    struct PlannedSuite {
+        std::string name;
+        std::vector<Planned> tests;
+    };
+    void setPlan(const std::vector<PlannedSuite>& suites);
+    // `id`: the suite's own (Test::getId()), which its fixture's messages carry; 0 for none.
+    void startSuite(const std::string& name, const std::vector<Planned>& tests,
+                    std::uint64_t id = 0);
+    // Ends the latest open suite named `name` (suites side by side end in any order); the
+    // innermost one when `name` is empty or not open.
+    void endSuite(const std::string& name = {});
     void startTest(std::uint64_t id, const std::string& name);
     void endTest(std::uint64_t id);
     void renameTest(std::uint64_t id, const std::string& name);
@@ -117,7 +129,8 @@ public:
 private:
     struct SuiteView {
         std::string name;
-        std::string state = "running";  // "running", "passed", "failed"
+        std::uint64_t id = 0;
+        std::string state = "running";  // "waiting" (planned), "running", "passed", "failed"
         bool failed = false;
         std::chrono::steady_clock::time_point started;
         double startedAt = 0;  // on the view's clock, as TestView's
@@ -130,6 +143,8 @@ private:
 
     // All below with mutex_ held.
     SuiteView& openSuite();
+    // A planned test of `suite`, with its recent runs when --history gave them.
+    TestView plannedTest(const std::string& suite, const Planned& test) const;
     struct Place {
         std::size_t suite;
         std::size_t test;

@@ -33,6 +33,15 @@ public:
     void setTestHistory(const std::string& testId, const std::string& json) override {
         view.setTestHistory(testId, json);
     }
+    void setPlan(const std::vector<const TestSuite*>& suites) override {
+        std::vector<RunView::PlannedSuite> planned;
+        for (const TestSuite* suite : suites) {
+            if (suite != nullptr) {
+                planned.push_back({suite->getName(), plannedTests(suite)});
+            }
+        }
+        view.setPlan(planned);
+    }
 
     // Reads the record: a message or a problem (the table's columns) is shown under its test
     // as it comes; the frames, output, retries, repetitions, measurements, attachments and
@@ -55,6 +64,13 @@ public:
     void addAttachment(const Test* test, const Attachment& attachment) override;
 
 private:
+    static std::vector<RunView::Planned> plannedTests(const TestSuite* suite) {
+        std::vector<RunView::Planned> tests;
+        for (const Test* test : suite->tests()) {
+            tests.push_back({test->getId(), shownAs(test, test->getName())});
+        }
+        return tests;
+    }
     static std::uint64_t idOf(const Test* test) { return test != nullptr ? test->getId() : 0; }
     // "tests/arith.lua (ArmTest)": the test's id in its suite and the name it gives itself
     // (docs/reference/test-ids.md), as the console shows it.
@@ -134,13 +150,11 @@ void ServedLivePage::renameTest(const Test* test, const std::string& name) {
 }
 
 void ServedLivePage::startTestSuite(const TestSuite* suite) {
-    std::vector<RunView::Planned> tests;
-    if (suite != nullptr) {
-        for (const Test* test : suite->tests()) {
-            tests.push_back({test->getId(), shownAs(test, test->getName())});
-        }
+    if (suite == nullptr) {
+        view.startSuite(std::string(), {});
+        return;
     }
-    view.startSuite(suite != nullptr ? suite->getName() : std::string(), tests);
+    view.startSuite(suite->getName(), plannedTests(suite), suite->getId());
 }
 
 void ServedLivePage::endTestSuite(const TestSuite* suite) {
@@ -149,11 +163,12 @@ void ServedLivePage::endTestSuite(const TestSuite* suite) {
 
 void ServedLivePage::startTestSuite(const Test* suite) {
     // A suite known only as a Test: its tests are learnt as they start.
-    view.startSuite(suite != nullptr ? suite->getName() : std::string(), {});
+    view.startSuite(suite != nullptr ? suite->getName() : std::string(), {},
+                    suite != nullptr ? suite->getId() : 0);
 }
 
-void ServedLivePage::endTestSuite(const Test* /*suite*/) {
-    view.endSuite();
+void ServedLivePage::endTestSuite(const Test* suite) {
+    view.endSuite(suite != nullptr ? suite->getName() : std::string());
 }
 
 void ServedLivePage::startTestRunner() {

@@ -152,7 +152,7 @@ REFUSES_EMPTY = {
     "--filter", "--keyword", "--cache-dir", "--shard-index", "--shard-count", "--durations", "--durations-from", "--merge",
     "--expect-shards",
     "--jobs", "--resources", "--plugin-path", "--color", "--history", "--history-report",
-    "--world-up", "--world", "--world-down", "--shared-worlds",
+    "--history-html", "--world-up", "--world", "--world-down", "--shared-worlds",
 }
 
 

@@ -371,18 +371,28 @@
       document.getElementById("timeline-box").hidden = true;
       return;
     }
-    // Lanes: a suite takes the first lane free when it starts (as the scheduler's slots are).
-    const lanes = [];
+    // Lanes: each suite its own, labelled by its name. Beyond maxSuiteLanes suites (the chart
+    // would be too tall) a suite takes the first lane free when it starts (as the scheduler's
+    // slots are), and the lane is labelled by its suites.
+    const maxSuiteLanes = 40;
+    const lanes = [];      // per lane: when it is free again
+    const laneNames = [];  // per lane: the suites in it
     const placed = suites.slice().sort((a, b) => a.start - b.start).map((s) => {
-      let lane = lanes.findIndex((end) => end <= s.start + 1e-4);
-      if (lane < 0) { lane = lanes.length; lanes.push(0); }
+      let lane = suites.length <= maxSuiteLanes ? -1
+          : lanes.findIndex((end) => end <= s.start + 1e-4);
+      if (lane < 0) { lane = lanes.length; lanes.push(0); laneNames.push([]); }
       lanes[lane] = s.start + s.duration;
+      laneNames[lane].push(s.name || "(no suite)");
       return [s, lane];
     });
+    const laneLabel = (names) => names[0] + (names.length > 1 ? " +" + (names.length - 1) : "");
+    const short = (text) => text.length > 22 ? text.slice(0, 21) + "…" : text;
     const end = Math.max(data.duration, ...suites.map((s) => s.start + s.duration),
                          ...worlds.map((w) => Math.max(w.stop, w.failed, w.ready, w.start)), 1e-3);
     const width = Math.max(box.clientWidth || 900, 600);
-    const left = 56, right = 12, laneHeight = 26;
+    const labels = laneNames.map(laneLabel).concat(worlds.map((w) => w.name));
+    const left = Math.min(170, 16 + 6.5 * Math.max(6, ...labels.map((l) => short(l).length)));
+    const right = 12, laneHeight = 26;
     const top = 18 + worlds.length * laneHeight;  // the worlds' lanes above the suites'
     const worldTop = 18;
     const scale = (width - left - right) / end;
@@ -402,27 +412,28 @@
       axis.appendChild(label);
     }
     chart.appendChild(axis);
-    lanes.forEach((_, lane) => {
-      const label = svg("text", { class: "lane-label", x: 4, y: top + lane * laneHeight + 16 });
-      label.textContent = "lane " + (lane + 1);
-      chart.appendChild(label);
-    });
     const titled = (node, text) => {
       const title = svg("title", {});
       title.textContent = text;
       node.appendChild(title);
       return node;
     };
+    laneNames.forEach((names, lane) => {
+      const label = svg("text", { class: "lane-label suite-lane",
+                                  x: 4, y: top + lane * laneHeight + 16 });
+      label.textContent = short(laneLabel(names));
+      chart.appendChild(titled(label, "suite " + names.join(", then ")));
+    });
     const rect = (cls, from, length, y, h, text) => titled(svg("rect", {
       class: cls, x: x(from), y: y, width: Math.max(length * scale, 1), height: h }), text);
     worlds.forEach((w, lane) => {
       const y = worldTop + lane * laneHeight + 3;
       const g = svg("g", { class: "world-bar" });
       g.dataset.world = w.name;
-      const label = svg("text", { class: "lane-label", x: 4, y: y + 13 });
-      label.textContent = "world";
-      g.appendChild(label);
       const name = "world " + w.name + (w.users ? " (shared by " + w.users + ")" : "");
+      const label = svg("text", { class: "lane-label world-lane", x: 4, y: y + 13 });
+      label.textContent = short(w.name);
+      g.appendChild(titled(label, name));
       const upTo = w.ready >= 0 ? w.ready : (w.failed >= 0 ? w.failed : end);
       g.appendChild(titled(svg("rect", { class: "world-starting", x: x(w.start), y: y,
                                          width: Math.max((upTo - w.start) * scale, 1),
@@ -472,9 +483,23 @@
       if (eachTest) {
         for (const t of s.tests) {
           if (t.duration <= 0 && t.state === "skipped") continue;
-          g.appendChild(rect("test t-" + colour(t.state), t.start, t.duration, y + 2, 16,
-              name + " / " + t.name + ": " + t.state + ", " + secs(t.duration) + " from " +
-              at(t.start) + (t.reason ? "\n" + t.reason : "")));
+          const text = name + " / " + t.name + ": " + t.state + ", " + secs(t.duration) +
+              " from " + at(t.start) + (t.reason ? "\n" + t.reason : "");
+          const bar = rect("test t-" + colour(t.state), t.start, t.duration, y + 2, 16, text);
+          if (colour(t.state) === "failing") {
+            // A failure stays visible beside long tests: at least 4 px wide, and a marker
+            // above it.
+            const shown = Math.max(t.duration * scale, 4);
+            bar.setAttribute("width", shown);
+            const mid = x(t.start) + shown / 2;
+            const marker = titled(svg("path", { class: "failure-marker",
+                d: `M${mid - 4},${y - 3} L${mid + 4},${y - 3} L${mid},${y + 3} Z` }), text);
+            marker.dataset.test = t.name;
+            g.appendChild(bar);
+            g.appendChild(marker);
+            continue;
+          }
+          g.appendChild(bar);
         }
       } else if (s.tests.length) {
         const from = s.start + s.setup;

@@ -29,6 +29,14 @@ std::unique_ptr<WebProgressListener> startWebPage(const Options& options) {
     return web;
 }
 
+std::vector<const TestSuite*> plannedSuites(RunPlan& plan) {
+    std::vector<const TestSuite*> suites;
+    for (std::size_t s = 0; s < plan.suiteCount(); ++s) {
+        suites.push_back(&plan.suite(s));
+    }
+    return suites;
+}
+
 void lingerOn(const WebProgressListener& web, double seconds) {
     platform::SignalPipe signals({SIGINT, SIGTERM});  // before saying Ctrl-C works
     std::fprintf(stdout, "%s: the final page stays at %s for %g s (Ctrl-C to quit)\n", programName,

@@ -111,6 +111,9 @@ int main(int argc, char** argv) {
             web->setTestHistory(strip.first, reporters::historyStripData(strip.second));
         }
     }
+    if (web) {
+        web->setPlan(plannedSuites(plan));
+    }
     ProgressSettings progress = progressOf(plan, planned.durations);
     RunListeners listeners(options, planned.reportSettings, web.get(), std::move(progress));
     planned.reportSettings.testFacts.clear();  // the HTML output has its own copy

@@ -252,6 +252,10 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
         {"--history-report", "N", Takes::MaybeOne, shards,
          "With --history: print the flakiest and the most slowed-down tests of its last N runs "
          "(default 30), and exit", &w.historyRuns},
+        {"--history-html", "FILE", Takes::One, shards,
+         "With --history-report: also write the report as an HTML page to FILE: each test's "
+         "outcomes and times over the runs, flaky rate, always failing, slowest, slow-downs and "
+         "measurements", &o.historyHtml},
         {"--history-import", "", Takes::Nothing, shards,
          "With --history: load the JUnit or CTRF REPORTs (the arguments after the options; this "
          "runner's or another tool's) into it, one run each, and exit", &w.historyImport},

@@ -304,6 +304,9 @@ std::string readCommands(CommandLineWords& words, const CLI::App& app, Options& 
         return std::string(words.historyImport ? "--history-import" : "--history-report") +
                " needs --history FILE";
     }
+    if (!options.historyHtml.empty() && !historyReport) {
+        return "--history-html needs --history-report";
+    }
     if (historyReport) {
         options.historyReport = true;
         const std::string& runs = words.historyRuns;

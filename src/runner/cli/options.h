@@ -81,6 +81,7 @@ struct Options {
     // load the REPORTs (JUnit or CTRF, the arguments after the options) into it and exit.
     std::string history;
     bool historyReport = false;
+    std::string historyHtml;  // --history-html: the report's HTML page, with --history-report
     unsigned int historyRuns = 30;
     std::vector<std::string> historyImports;
     OutputRequest merge;  // type empty: not merging

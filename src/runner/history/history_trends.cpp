@@ -1,6 +1,7 @@
 #include "runner/history/history_trends.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace robottestingframework {
 namespace runner {
@@ -40,6 +41,18 @@ double flakyRate(const TestHistory& history) {
     return runs == 0 ? 0 : static_cast<double>(flaky) / static_cast<double>(runs);
 }
 
+double noiseFloor(double before, const std::vector<double>& olderTimes) {
+    double spread = 0;
+    if (!olderTimes.empty()) {
+        std::vector<double> deviations;
+        for (const double time : olderTimes) {
+            deviations.push_back(std::fabs(time - before));
+        }
+        spread = 3 * median(deviations);
+    }
+    return std::max({absoluteNoiseSeconds, relativeNoise * before, spread});
+}
+
 Slowdown slowdownOf(const TestHistory& history) {
     std::vector<double> times;
     for (const TestHistoryEntry& entry : history.runs) {
@@ -52,7 +65,36 @@ Slowdown slowdownOf(const TestHistory& history) {
     }
     const std::size_t recent = std::max<std::size_t>(1, times.size() / 3);
     const auto split = times.end() - static_cast<std::ptrdiff_t>(recent);
-    return {median({times.begin(), split}), median({split, times.end()})};
+    const std::vector<double> older(times.begin(), split);
+    Slowdown slowdown;
+    slowdown.before = median(older);
+    slowdown.recent = median({split, times.end()});
+    slowdown.noise = noiseFloor(slowdown.before, older);
+    return slowdown;
+}
+
+bool alwaysFails(const TestHistory& history) {
+    std::size_t runs = 0;
+    for (const TestHistoryEntry& entry : history.runs) {
+        if (!counts(entry.state)) {
+            continue;
+        }
+        if (passing(entry.state)) {
+            return false;
+        }
+        ++runs;
+    }
+    return runs >= 2;
+}
+
+double medianSeconds(const TestHistory& history) {
+    std::vector<double> times;
+    for (const TestHistoryEntry& entry : history.runs) {
+        if (entry.state != "skipped") {
+            times.push_back(entry.duration);
+        }
+    }
+    return times.empty() ? 0 : median(times);
 }
 
 std::vector<FlakyTest> flakiestTests(const std::vector<TestHistory>& histories, std::size_t limit) {
@@ -74,8 +116,7 @@ std::vector<SlowedTest> mostSlowedTests(const std::vector<TestHistory>& historie
     std::vector<SlowedTest> found;
     for (const TestHistory& history : histories) {
         const Slowdown slowdown = slowdownOf(history);
-        if (slowdown.before > 0 && slowdown.recent >= 1.2 * slowdown.before &&
-            slowdown.recent - slowdown.before >= 0.05) {
+        if (slowdown.slowedDown()) {
             found.push_back({&history, slowdown});
         }
     }
@@ -83,6 +124,33 @@ std::vector<SlowedTest> mostSlowedTests(const std::vector<TestHistory>& historie
         return a.slowdown.ratio() > b.slowdown.ratio();
     });
     found.resize(std::min(found.size(), limit));
+    return found;
+}
+
+std::vector<const TestHistory*> alwaysFailingTests(const std::vector<TestHistory>& histories) {
+    std::vector<const TestHistory*> found;
+    for (const TestHistory& history : histories) {
+        if (alwaysFails(history)) {
+            found.push_back(&history);
+        }
+    }
+    std::stable_sort(found.begin(), found.end(),
+                     [](const TestHistory* a, const TestHistory* b) { return a->test < b->test; });
+    return found;
+}
+
+std::vector<const TestHistory*> slowestByMedian(const std::vector<TestHistory>& histories,
+                                                std::size_t limit) {
+    std::vector<std::pair<const TestHistory*, double>> timed;
+    for (const TestHistory& history : histories) {
+        timed.emplace_back(&history, medianSeconds(history));
+    }
+    std::stable_sort(timed.begin(), timed.end(),
+                     [](const auto& a, const auto& b) { return a.second > b.second; });
+    std::vector<const TestHistory*> found;
+    for (std::size_t i = 0; i < timed.size() && i < limit; ++i) {
+        found.push_back(timed[i].first);
+    }
     return found;
 }
 

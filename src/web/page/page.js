@@ -135,7 +135,10 @@ function suiteTitle(suite) {
   title.appendChild(element("span", stateClass(suite.state), suite.state));
   title.appendChild(document.createTextNode(" "));
   title.appendChild(element("span", "suite-name", suite.name));
-  if (suite.state !== "running") {
+  if (suite.state === "waiting") {
+    // Planned, not started yet (another suite runs first, or beside it with -j N).
+    title.appendChild(element("span", "where", "not started"));
+  } else if (suite.state !== "running") {
     title.appendChild(element("span", "where", seconds(suite.duration)));
   } else {
     // Before its first test the fixture sets up; after its last one it tears down.

@@ -15,6 +15,7 @@
 
 #include "build_paths.h"
 #include "core_test_helpers.h"
+#include "reporters/summary.h"
 
 using namespace rtf_test;
 namespace fs = std::filesystem;
@@ -231,4 +232,22 @@ TEST(JUnitOutputter, FailedRenameRemovesTheTemporaryFile) {
     EXPECT_FALSE(JUnitOutputter(run.collector).write(target.string(), &error));
     EXPECT_TRUE(has(error.getMessage(), target.string()));
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// Issue 38, friction 6: the summary said "2 failed" and the closing line "3 failed" (a fixture
+// failure counted in one only). The summary says the closing line's number and its parts.
+TEST(JUnitOutputter, TheSummaryCountsTheFailuresAsTheClosingLineDoes) {
+    MixedRun run;
+    const std::size_t failed = run.collector.failedCount() + run.collector.failedFixtureCount();
+    ASSERT_GT(run.collector.failedFixtureCount(), 0u);
+    const std::string closing = robottestingframework::reporters::closingLine(run.collector);
+    EXPECT_TRUE(has(closing, std::to_string(failed) + " failed")) << closing;
+    std::string summary;
+    for (const std::string& line : robottestingframework::reporters::summaryLines(run.collector)) {
+        summary += line + "\n";
+    }
+    EXPECT_TRUE(has(summary, "  failed: " + std::to_string(failed) + " (" +
+                                 std::to_string(run.collector.failedCount()) +
+                                 " tests, 1 fixture)"))
+        << summary;
 }

@@ -242,3 +242,62 @@ TEST(RunView, ATestsHistoryIsShownWithItByItsId) {
     EXPECT_EQ(tests[0]["history"]["flakyRate"], 0.5);
     EXPECT_FALSE(tests[1].contains("history"));
 }
+
+// Issue 38, friction 5: with -j 2 the page showed one suite of two and "of 5" of 6 tests.
+// The plan puts every suite and test on the page before anything starts, and suites side by
+// side (their events interleaved) each keep their own tests, messages and end.
+TEST(RunView, ThePlanShowsEverySuiteAndTestFromTheStart) {
+    RunView view(false);
+    view.setPlan({{"arm", {{1, "reach"}, {2, "grasp"}}}, {"base", {{3, "drive"}}}});
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    ASSERT_EQ(snapshot["suites"].size(), 2u);
+    EXPECT_EQ(snapshot["run"]["tests"], 3);
+    EXPECT_EQ(snapshot["suites"][0]["state"], "waiting");
+    EXPECT_EQ(snapshot["suites"][1]["state"], "waiting");
+    EXPECT_EQ(snapshot["suites"][1]["tests"][0]["state"], "not run");
+
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}, {2, "grasp"}}, 10);
+    view.startSuite("base", {{3, "drive"}}, 11);
+    view.startTest(1, "reach");
+    view.startTest(3, "drive");
+    view.addMessage(11, "error", TestMessage("base fixture lost"), TestStatus::Error);
+    view.addMessage(3, "failure", TestMessage("stuck"), TestStatus::Failed);
+    view.endTest(3);
+    view.endTest(1);
+    view.startTest(2, "grasp");  // arm's, though base started later
+    view.endTest(2);
+    view.endSuite("arm");  // before base, which started later
+    view.endSuite("base");
+    view.endRun();
+    snapshot = nlohmann::json::parse(view.snapshotJson());
+    ASSERT_EQ(snapshot["suites"].size(), 2u);
+    const auto& arm = snapshot["suites"][0];
+    const auto& base = snapshot["suites"][1];
+    EXPECT_EQ(arm["state"], "passed");
+    EXPECT_EQ(arm["tests"][0]["state"], "passed");
+    EXPECT_EQ(arm["tests"][1]["state"], "passed");
+    EXPECT_EQ(base["tests"].size(), 1u);
+    EXPECT_EQ(base["state"], "failed");
+    EXPECT_EQ(base["tests"][0]["state"], "failed");
+    ASSERT_EQ(base["messages"].size(), 1u);
+    EXPECT_EQ(base["messages"][0]["text"], "base fixture lost");
+    EXPECT_EQ(arm["messages"].size(), 0u);
+}
+
+TEST(RunView, ASuiteThePlanDidNotNameIsAddedAsItStarts) {
+    RunView view(false);
+    view.setPlan({{"arm", {{1, "reach"}}}});
+    view.startRun();
+    view.startSuite("extra", {{5, "other"}});
+    view.startTest(5, "other");
+    view.endTest(5);
+    view.endSuite("extra");
+    view.endRun();
+    const auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    ASSERT_EQ(snapshot["suites"].size(), 2u);
+    EXPECT_EQ(snapshot["suites"][0]["state"], "waiting");
+    EXPECT_EQ(snapshot["suites"][1]["name"], "extra");
+    EXPECT_EQ(snapshot["suites"][1]["tests"][0]["state"], "passed");
+    EXPECT_EQ(snapshot["run"]["tests"], 2);
+}

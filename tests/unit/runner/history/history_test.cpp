@@ -268,6 +268,46 @@ TEST(HistoryTrends, TheListsAreOrderedAndLeaveOutSteadyTests) {
     EXPECT_EQ(slowed[0].history->test, "c");
 }
 
+// Issue 38, friction 12: a 7x slow-down from 0.016 s to 0.112 s under -j 2 was noise.
+TEST(HistoryTrends, ASlowdownIsJudgedAgainstANoiseFloor) {
+    const std::vector<std::string> passed(9, "passed");
+    // Absolute: 96 ms slower is below the 0.1 s floor, however many times slower.
+    const Slowdown small = slowdownOf(
+        historyOf(passed, {0.016, 0.016, 0.016, 0.016, 0.016, 0.016, 0.112, 0.112, 0.112}));
+    EXPECT_GT(small.ratio(), 6);
+    EXPECT_DOUBLE_EQ(small.noise, 0.1);
+    EXPECT_FALSE(small.slowedDown());
+    // Relative: 10 s to 11.5 s is within 20 %.
+    EXPECT_FALSE(
+        slowdownOf(historyOf(passed, {10, 10, 10, 10, 10, 10, 11.5, 11.5, 11.5})).slowedDown());
+    // The test's own spread: older runs 1 s give or take 0.5 s make 1.5 s noise, not 2.5 s.
+    const Slowdown spread =
+        slowdownOf(historyOf(passed, {0.5, 1.5, 1, 0.5, 1.5, 1, 1.5, 1.5, 1.5}));
+    EXPECT_NEAR(spread.noise, 1.5, 1e-9);
+    EXPECT_FALSE(spread.slowedDown());
+    EXPECT_TRUE(slowdownOf(historyOf(passed, {1, 1, 1, 1, 1, 1, 2, 2, 2})).slowedDown());
+}
+
+TEST(HistoryTrends, ATestThatFailsEveryRunIsListedAsAlwaysFailing) {
+    std::vector<TestHistory> histories = {
+        historyOf({"failed", "failed", "skipped", "crashed"}, {1, 1, 0, 1}),
+        historyOf({"failed", "passed", "failed"}, {1, 1, 1}),
+        historyOf({"failed"}, {1}),  // one run says little
+        historyOf({"passed", "passed"}, {3, 3}),
+    };
+    histories[0].test = "a";
+    histories[1].test = "b";
+    histories[2].test = "c";
+    histories[3].test = "d";
+    const auto failing = alwaysFailingTests(histories);
+    ASSERT_EQ(failing.size(), 1u);
+    EXPECT_EQ(failing[0]->test, "a");
+    EXPECT_EQ(flakyRate(histories[0]), 0);  // why the flaky list left it out
+    const auto slowest = slowestByMedian(histories, 2);
+    ASSERT_EQ(slowest.size(), 2u);
+    EXPECT_EQ(slowest[0]->test, "d");
+}
+
 }  // namespace
 
 TEST_F(History, MeasurementsOfTheLastRunsAreReadPerTestWithTheirRunsPlace) {
