@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "reporters/text_safety.h"
+#include "core/text_safety.h"
 #include "runner/history/history_trends.h"
 
 namespace robottestingframework {
