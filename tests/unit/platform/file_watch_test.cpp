@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include <unistd.h>
+#include <chrono>
 
 namespace fs = std::filesystem;
 using robottestingframework::platform::FileWatch;
