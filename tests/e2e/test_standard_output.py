@@ -43,7 +43,7 @@ def test_each_kind_of_report_goes_to_standard_output_into_a_pipe(tmp_path, kind,
     # The console (its test lines and closing line) went to the standard error.
     assert "FailingTest" in run.stderr and "1 failed" in run.stderr, run
     # Nothing was written in the folder: no file named "-", no result.txt; only the cache of
-    # --lf, which a run with a failure writes (docs/new/selection-and-reruns.md).
+    # --lf, which a run with a failure writes (docs/how-to/selection-and-reruns.md).
     assert sorted(p.name for p in tmp_path.iterdir()) == [".rtf_cache"], list(tmp_path.iterdir())
 
 

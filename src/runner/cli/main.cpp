@@ -33,6 +33,7 @@
 #include "runner/cli/run_rounds.h"
 #include "runner/cli/slowest_tests.h"
 #include "runner/cli/standalone_command.h"
+#include "runner/cli/watch_command.h"
 #include "runner/cli/world_join.h"
 #include "runner/cli/world_keeper.h"
 #include "runner/plan/run_plan.h"
@@ -67,6 +68,9 @@ int main(int argc, char** argv) {
     }
     if (options.list || options.listVariables) {
         return listCommand(options, planned, inputs.overrides);
+    }
+    if (options.watch) {
+        return watchCommand(argc, argv, options);  // read and checked above: run in children
     }
     if (!options.worldUp.empty()) {
         return worldUpCommand(options, planned, inputs);

@@ -172,6 +172,10 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
         {"--timeout", "SECONDS", Takes::One, running,
          "Time limit of each test, set-up and tear-down included; a suite's <timeout> and a "
          "test's timeout=\"...\" win (default: none)", &o.timeout, numberRule(checkSeconds, "from 0 (no limit) to " + seconds)},
+        {"--watch", "", Takes::Nothing, running,
+         "Run again whenever a suite file, a test file or a plug-in changes, the tests that "
+         "failed first; Ctrl-C stops (inotify on Linux, polling elsewhere, not on Windows)",
+         &o.watch},
         {"--fail-fast", "", Takes::Nothing, running,
          "Stop the run at the first failure; the remaining tests are skipped", &o.failFast},
         {"--retries", "N", Takes::One, running,

@@ -53,6 +53,7 @@ struct Options {
     Isolation isolation = Isolation::Process;  // --isolation process|none
     bool privateNetworks = false;      // --network private: every suite in a network of its own
     double timeout = 0;                // --timeout SECONDS for every test; 0: none
+    bool watch = false;                // --watch: run again when a file changes
     bool failFast = false;             // --fail-fast: the first failure stops the run
     bool allowEmpty = false;           // --allow-empty: no test selected is a success
     unsigned int retries = 0;          // --retries N: a failing test runs again up to N times

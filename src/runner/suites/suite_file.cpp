@@ -19,6 +19,7 @@
 #include "platform/bounded_file.h"
 #include "runner/model/test_id.h"
 #include "runner/model/value_limits.h"
+#include "runner/suites/parametrize.h"
 
 namespace robottestingframework {
 namespace runner {
@@ -342,13 +343,21 @@ public:
                 suite.resources.push_back(readResource(node));
                 checkPoolOnce(suite.resources);
             } else if (name == "test") {
-                suite.tests.push_back(node.attribute("file")
-                                          ? readTestFile(node)
-                                          : readTest(node, expand(node, testPluginOf(node))));
-                TestSpec& added = suite.tests.back();
-                for (const auto& tag : suite.tags) {
-                    if (std::find(added.tags.begin(), added.tags.end(), tag) == added.tags.end()) {
-                        added.tags.push_back(tag);
+                const std::size_t first = suite.tests.size();
+                if (node.child("parametrize")) {
+                    readParametrized(node, suite.tests);
+                } else {
+                    suite.tests.push_back(node.attribute("file")
+                                              ? readTestFile(node)
+                                              : readTest(node, expand(node, testPluginOf(node))));
+                }
+                for (std::size_t i = first; i < suite.tests.size(); ++i) {
+                    TestSpec& added = suite.tests[i];
+                    for (const auto& tag : suite.tags) {
+                        if (std::find(added.tags.begin(), added.tags.end(), tag) ==
+                            added.tags.end()) {
+                            added.tags.push_back(tag);
+                        }
                     }
                 }
             } else {
@@ -718,7 +727,12 @@ private:
         // Most attributes are not given: nothing to expand (a suite of 10 000 tests read each
         // of them through the variable table).
         auto value = [&](pugi::xml_attribute attribute) {
-            return attribute ? expand(node, attribute.value()) : std::string();
+            if (!attribute) {
+                return std::string();
+            }
+            return expand(node, instance_ == nullptr
+                                    ? std::string(attribute.value())
+                                    : substituteAxes(attribute.value(), *instance_));
         };
         TestSpec test;
         test.where = where(node);
@@ -747,6 +761,94 @@ private:
             test.tags = splitList(value(given.tags));
         }
         return test;
+    }
+
+    // A <test> with <parametrize name="NAME">V1, V2</parametrize> children: one test per
+    // combination of the values, ${NAME} standing for the value in its plug-in and attributes,
+    // each named "BASE[LABEL]" (parametrize.h) so its id is its own.
+    void readParametrized(pugi::xml_node node, std::vector<TestSpec>& tests) {
+        if (node.attribute("file")) {
+            fail(node.child("parametrize"),
+                 "<parametrize> inside <test file=\"...\">; write the parametrized test in the "
+                 "suite, <test param=\"--speed ${speed}\">PLUGIN<parametrize "
+                 "name=\"speed\">10, 20</parametrize></test>");
+        }
+        std::vector<ParameterAxis> axes;
+        std::string plugin;
+        std::size_t count = 1;
+        for (pugi::xml_node child : node.children()) {
+            if (child.type() == pugi::node_pcdata || child.type() == pugi::node_cdata) {
+                plugin += child.value();
+                continue;
+            }
+            if (child.type() != pugi::node_element) {
+                continue;
+            }
+            if (std::string(child.name()) != "parametrize") {
+                fail(child, "<" + std::string(child.name()) +
+                                "> inside <test>; a <test> holds its plug-in as text and "
+                                "<parametrize name=\"NAME\">V1, V2</parametrize> elements");
+            }
+            checkAttributes(child, {"name"});
+            ParameterAxis axis;
+            axis.name = trim(child.attribute("name").value());
+            if (!variables::isVariableName(axis.name)) {
+                fail(child, "<parametrize name=\"" + axis.name +
+                                "\">: a name is letters, digits, _, - and ., not starting with "
+                                "a digit (e.g. <parametrize name=\"speed\">10, 20</parametrize>)");
+            }
+            for (const auto& other : axes) {
+                if (other.name == axis.name) {
+                    fail(child, "<parametrize name=\"" + axis.name +
+                                    "\"> given twice in one <test>; give each name once");
+                }
+            }
+            axis.values = parameterValues(textOf(child));
+            if (axis.values.empty()) {
+                fail(child, "<parametrize name=\"" + axis.name +
+                                "\"> without values; expected values separated by commas "
+                                "(e.g. 10, 20)");
+            }
+            count *= axis.values.size();
+            if (count > maxParametrizedInstances) {
+                fail(child, "<parametrize> makes more than " +
+                                std::to_string(maxParametrizedInstances) +
+                                " instances of one <test>; expected fewer values");
+            }
+            axes.push_back(std::move(axis));
+        }
+        plugin = trim(plugin);
+        if (plugin.empty()) {
+            fail(node,
+                 "<test> without a plug-in; write its file name as the element's text "
+                 "beside its <parametrize> elements");
+        }
+        const std::vector<ParameterInstance> instances = instancesOf(axes);
+        const std::size_t first = tests.size();
+        std::vector<std::string> params;
+        for (const auto& instance : instances) {
+            instance_ = &instance;
+            try {
+                tests.push_back(readTest(node, expand(node, substituteAxes(plugin, instance))));
+            } catch (...) {
+                instance_ = nullptr;
+                throw;
+            }
+            instance_ = nullptr;
+            params.push_back(tests.back().param.str());
+        }
+        // A name="..." that says the values names each instance itself.
+        const std::string named = node.attribute("name").value();
+        if (!named.empty() && usesAxis(named, instances.front())) {
+            return;
+        }
+        const std::vector<std::string> labels = instanceLabels(params, instances);
+        for (std::size_t i = 0; i < instances.size(); ++i) {
+            TestSpec& test = tests[first + i];
+            const std::string base =
+                test.name.empty() ? pluginIdPart(test.plugin, folder_) : test.name.str();
+            test.name = base + "[" + labels[i] + "]";
+        }
     }
 
     // <test file="tests/left_arm.xml" .../>: the file is found from this suite's folder and
@@ -827,6 +929,7 @@ private:
     std::string lastPlugin_;      // its plug-in
     bool haveLastPlugin_ = false;
     StringPool types_;  // "dll", "python", ...: one string each for all the tests
+    const ParameterInstance* instance_ = nullptr;  // the instance readParametrized reads
 };
 
 variables::VariableTable tableOf(const std::vector<variables::Variable>& given) {
