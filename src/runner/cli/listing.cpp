@@ -123,7 +123,8 @@ std::string listJson(const std::vector<SuiteSpec>& suites,
                  {"scope", fixture.scope == FixtureSpec::Scope::Run ? "run" : "suite"}});
             if (fixture.scope == FixtureSpec::Scope::Run) {
                 // What makes a shared world one (plan/shared_world.h): discover_tests gives the
-                // suites that need it one CTest fixture and one keeper (docs/how-to/ctest-worlds.md).
+                // suites that need it one CTest fixture and one keeper
+                // (docs/how-to/ctest-worlds.md).
                 const std::string file =
                     fixture.path.empty() ? fixture.plugin.str() : fixture.path.str();
                 const std::string identity = sharedWorldIdentity(fixture);
