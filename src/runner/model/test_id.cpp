@@ -16,24 +16,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// A param on one line, as an id must be: runs of white space become one space.
-std::string oneLine(const std::string& text) {
-    std::string out;
-    bool space = false;
-    for (char c : text) {
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
-            space = !out.empty();
-            continue;
-        }
-        if (space) {
-            out += ' ';
-            space = false;
-        }
-        out += c;
-    }
-    return out;
-}
-
 // "a/b/c" below "a" is "b/c"; empty when `path` is not below `folder`.
 std::string below(const fs::path& path, const fs::path& folder) {
     auto p = path.begin();
@@ -84,6 +66,23 @@ std::string outsidePart(const fs::path& normal, const std::string& suiteFolder) 
 }
 
 }  // namespace
+
+std::string oneLine(const std::string& text) {
+    std::string out;
+    bool space = false;
+    for (char c : text) {
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
+            space = !out.empty();
+            continue;
+        }
+        if (space) {
+            out += ' ';
+            space = false;
+        }
+        out += c;
+    }
+    return out;
+}
 
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder) {
     const fs::path written = fs::path(plugin).lexically_normal();

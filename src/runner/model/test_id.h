@@ -23,6 +23,9 @@ namespace runner {
 // reach the id).
 std::string pluginIdPart(const std::string& plugin, const std::string& suiteFolder);
 
+// A param on one line, as an id must be: runs of white space become one space, none at the ends.
+std::string oneLine(const std::string& text);
+
 // Gives each test of `suite` its LOCAL id (TestSpec::id), in document order. `suiteFolder` is the
 // folder the suite's relative plug-in paths start from.
 void assignTestIds(SuiteSpec& suite, const std::string& suiteFolder);

@@ -1,6 +1,5 @@
 #include "runner/plan/shared_world.h"
 
-#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -8,15 +7,12 @@
 
 #include <robottestingframework/Exception.h>
 
+#include "platform/clock.h"
+
 namespace robottestingframework {
 namespace runner {
 
 namespace {
-
-double steadySeconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 std::string seconds(double value) {
     char text[32];
@@ -149,7 +145,7 @@ double SharedWorld::startedAt() const {
 
 void SharedWorld::start() {
     // Called with state_ Starting, nothing locked: the others wait on cv_.
-    const double began = steadySeconds();
+    const double began = platform::monotonicSeconds();
     {
         std::lock_guard<std::mutex> lock(mutex_);
         startedAt_ = began;
@@ -182,7 +178,7 @@ void SharedWorld::start() {
             why = "setup returned false";
         }
     }
-    const double ready = steadySeconds();
+    const double ready = platform::monotonicSeconds();
     {
         std::lock_guard<std::mutex> lock(mutex_);
         if (up && interrupted_) {
@@ -289,7 +285,7 @@ std::string SharedWorld::stopNow() {
     if (!manager_) {
         return {};
     }
-    const double began = steadySeconds();
+    const double began = platform::monotonicSeconds();
     std::string why;
     {
         std::lock_guard<std::mutex> call(callMutex_);
@@ -302,7 +298,7 @@ std::string SharedWorld::stopNow() {
         upFor = began - startedAt_;
     }
     cv_.notify_all();
-    const double stopped = steadySeconds();
+    const double stopped = platform::monotonicSeconds();
     note("world '" + name_ + "' stopped after " + seconds(stopped - began) + " (up " +
              seconds(upFor) + ")" + (why.empty() ? "" : ": its stop failed: " + why),
          "stop", why.empty() ? why : "its stop failed: " + why, stopped);
@@ -395,7 +391,7 @@ void SharedWorld::fixtureCollapsed(TestMessage reason) {
         reason = reason_;
         told = active_;
     }
-    note(reason.getMessage(), "collapsed", reason.getMessage(), steadySeconds());
+    note(reason.getMessage(), "collapsed", reason.getMessage(), platform::monotonicSeconds());
     for (FixtureEvents* suite : told) {
         suite->fixtureCollapsed(reason);
     }

@@ -1,19 +1,12 @@
 #include "runner/schedule/suite_events.h"
 
-#include <chrono>
+#include "platform/clock.h"
 
 namespace robottestingframework {
 
 namespace runner {
 
-namespace {
-
-double steadySeconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::vector<SuiteEvents::Event> SuiteEvents::take() {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -30,7 +23,7 @@ void SuiteEvents::onEvent(const RunEvent& event) {
         events_.push_back(event);
         // A kept event carries when it happened: the collector times it so when it is published
         // later, and the reports' start times, durations and timeline lanes are the suite's own.
-        const double now = steadySeconds();
+        const double now = platform::monotonicSeconds();
         events_.back().happened = now;
         const ResultEvent::Kind kind = event.data.kind;
         const bool testEnded = kind == ResultEvent::Kind::EndTest;

@@ -1,5 +1,7 @@
 #include "runner/suites/parametrize.h"
 
+#include "runner/model/test_id.h"
+
 #include <unordered_set>
 
 namespace robottestingframework {
@@ -14,24 +16,6 @@ std::string trimmed(const std::string& text) {
         return {};
     }
     return text.substr(first, text.find_last_not_of(space) - first + 1);
-}
-
-// Runs of white space as one space, none at the ends: an id is one line.
-std::string oneLine(const std::string& text) {
-    std::string out;
-    bool space = false;
-    for (char c : text) {
-        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') {
-            space = !out.empty();
-            continue;
-        }
-        if (space) {
-            out += ' ';
-            space = false;
-        }
-        out += c;
-    }
-    return out;
 }
 
 }  // namespace
