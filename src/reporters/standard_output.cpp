@@ -1,10 +1,51 @@
 #include "reporters/standard_output.h"
 
+#include <cstdio>
+#include <iostream>
+
+#include "reporters/standard_output_descriptor.h"
+
 namespace robottestingframework {
 namespace reporters {
 
+namespace {
+
+// The standard output the reports write to when keepStandardOutputForReports() moved it.
+int reportsOutput = -1;
+
+void flushStreams() {
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(stdout);
+    std::fflush(stderr);
+}
+
+}  // namespace
+
 bool namesStandardOutput(const std::string& filename) {
     return filename == "-" || filename == "/dev/stdout";
+}
+
+int openStandardOutput() {
+    flushStreams();
+    return duplicateDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
+}
+
+bool keepStandardOutputForReports() {
+    if (reportsOutput >= 0) {
+        return true;
+    }
+    flushStreams();
+    const int kept = duplicateDescriptor(standardOutputDescriptor);
+    if (kept < 0) {
+        return false;
+    }
+    if (!pointDescriptor(standardErrorDescriptor, standardOutputDescriptor)) {
+        closeDescriptor(kept);
+        return false;
+    }
+    reportsOutput = kept;
+    return true;
 }
 
 }  // namespace reporters
