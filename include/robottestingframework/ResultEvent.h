@@ -100,6 +100,9 @@ bool isCheck(ResultEvent::Kind kind);
 bool isShown(const ResultEvent& event, bool passedChecks);
 // A passed check (hidden unless passed checks are kept).
 bool isHiddenCheck(const ResultEvent& event);
+// A failed check: its failure, with the same message, follows it (Asserter::testCheck), so
+// the console says that one line and not this one.
+bool isFailedCheck(const ResultEvent& event);
 // Whether the event is a line of its own under its test (failures, skips, crashes, a kind with
 // no handler of its own, a measurement or attachment that lost its data): the console, TAP
 // and the live page say it as it comes. Reports and checks are said as -v allows.

@@ -172,6 +172,11 @@ bool isHiddenCheck(const ResultEvent& event) {
     return row != nullptr && row->check && event.passed;
 }
 
+bool isFailedCheck(const ResultEvent& event) {
+    const KindRow* row = rowOf(event.kind);
+    return row != nullptr && row->check && !event.passed;
+}
+
 bool isCheck(ResultEvent::Kind kind) {
     const KindRow* row = rowOf(kind);
     return row != nullptr && row->check;

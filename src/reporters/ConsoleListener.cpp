@@ -57,8 +57,9 @@ void ConsoleListener::onEvent(const RunEvent& event) {
     }
     if (isMessage(data.kind)) {
         // A check is said with --detail; a report with -v, unless uncritical messages are
-        // hidden.
-        if (isCheck(data.kind) ? showChecks_ : verbose_ && !hideUncritical_) {
+        // hidden. A failed check is said once, by its failure that follows.
+        if (isCheck(data.kind) ? showChecks_ && !isFailedCheck(data)
+                               : verbose_ && !hideUncritical_) {
             say(event.test, data);
         }
         record_.onEvent(event);
@@ -182,6 +183,9 @@ void ConsoleListener::endTest(const Test* test) {
     for (const ResultEvent& event : record.eventsInOrder(scratch)) {
         if (isMessage(event.kind) && (!isCheck(event.kind) || !showChecks_)) {
             continue;
+        }
+        if (isFailedCheck(event)) {
+            continue;  // said once, by its failure that follows
         }
         message(labelOf(event.kind, event.passed), colourOf(event), event.message);
     }

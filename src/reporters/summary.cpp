@@ -135,6 +135,11 @@ std::string closingLine(const TestResultCollector& collector) {
     std::string line = std::to_string(collector.passedCount()) + " passed, " +
                        std::to_string(collector.failedCount() + collector.failedFixtureCount()) +
                        " failed";
+    // Interrupted tests count as failed (the exit status and CTest say so), and the line says
+    // how many of them were interrupted, as the summary does (issue 38, friction 6).
+    if (collector.countOf(TestStatus::Interrupted) > 0) {
+        line += " (" + std::to_string(collector.countOf(TestStatus::Interrupted)) + " interrupted)";
+    }
     if (collector.skippedCount() > 0) {
         line += ", " + std::to_string(collector.skippedCount()) + " skipped";
     }

@@ -76,7 +76,9 @@ public:
             return;
         }
         ++(failed ? failedShown_ : shown_);
-        TestMessage message(pointLabel(point), point.diagnostics, path_, point.line);
+        // The YAML's measurements and attachments are recorded as such, not pasted in the text.
+        TestMessage message(pointLabel(point), withoutTapRecords(point.diagnostics), path_,
+                            point.line);
         if (point.directive != TapPoint::Directive::None && !point.ok) {
             // TODO: expected to fail; SKIP: TAP 14 says a failing skipped point is no failure.
             Asserter::report(message, test_);

@@ -203,5 +203,35 @@ TapRecords readTapRecords(const std::string& diagnostics) {
     return records;
 }
 
+std::string withoutTapRecords(const std::string& diagnostics) {
+    // The block's keys are at the indent of its first line that says something.
+    std::size_t base = std::string::npos;
+    std::string kept;
+    bool skipping = false;
+    bool anyKept = false;
+    std::size_t at = 0;
+    while (at < diagnostics.size()) {
+        std::size_t end = diagnostics.find('\n', at);
+        end = end == std::string::npos ? diagnostics.size() : end + 1;
+        const std::string line = diagnostics.substr(at, end - at);
+        at = end;
+        const std::size_t indent = line.find_first_not_of(' ');
+        const bool blank =
+            indent == std::string::npos || line.find_first_not_of(" \t\r\n") == std::string::npos;
+        if (!blank) {
+            base = base == std::string::npos ? indent : base;
+            if (indent <= base) {
+                skipping = line.compare(indent, 13, "measurements:") == 0 ||
+                           line.compare(indent, 12, "attachments:") == 0;
+            }
+        }
+        if (!skipping) {
+            kept += line;
+            anyKept = anyKept || !blank;
+        }
+    }
+    return anyKept ? kept : std::string();
+}
+
 }  // namespace languages
 }  // namespace robottestingframework

@@ -41,5 +41,10 @@ struct TapRecords {
 
 TapRecords readTapRecords(const std::string& diagnostics);
 
+// The diagnostics without their top-level `measurements:` and `attachments:` keys (each with
+// its indented lines), which readTapRecords turns into measurements and attachments: the rest
+// is the point's detail ("" when nothing is left).
+std::string withoutTapRecords(const std::string& diagnostics);
+
 }  // namespace languages
 }  // namespace robottestingframework

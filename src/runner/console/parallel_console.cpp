@@ -98,7 +98,9 @@ public:
         if (isSaid(data)) {
             raise(event.test, data);
         } else if (isMessage(data.kind)) {
-            if (!isHiddenCheck(data) && (isCheck(data.kind) || console_.settings_.verbose)) {
+            // A failed check is said once, by its failure that follows.
+            if (!isHiddenCheck(data) && !isFailedCheck(data) &&
+                (isCheck(data.kind) || console_.settings_.verbose)) {
                 raise(event.test, data);
             }
         } else {

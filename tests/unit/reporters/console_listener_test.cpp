@@ -124,7 +124,10 @@ TEST(ConsoleListener, ShowChecksPrintsEveryCheck) {
     });
     const std::string text = consoleText({&a}, [](ConsoleListener& c) { c.showChecks(true); });
     EXPECT_TRUE(has(text, "check ok: fine"));
-    EXPECT_TRUE(has(text, "check FAILED: broken"));
+    // One line per failed check (issue 38, friction 9): its failure's.
+    EXPECT_FALSE(has(text, "check FAILED: broken"));
+    EXPECT_TRUE(has(text, "failure: broken"));
+    EXPECT_EQ(text.find("broken"), text.rfind("broken"));
 }
 
 TEST(ConsoleListener, NoColoursUnlessAskedFor) {

@@ -251,3 +251,13 @@ TEST(JUnitOutputter, TheSummaryCountsTheFailuresAsTheClosingLineDoes) {
                                  " tests, 1 fixture)"))
         << summary;
 }
+
+// Issue 38, friction 6 (through ctest: "1 interrupted" against "0 passed, 2 failed"): an
+// interrupted test counts as failed, and the closing line says how many were interrupted.
+TEST(JUnitOutputter, TheClosingLineSaysTheInterruptedTestsAmongTheFailed) {
+    MixedRun run;
+    ASSERT_EQ(run.collector.countOf(robottestingframework::TestStatus::Interrupted), 1u);
+    const std::string closing = robottestingframework::reporters::closingLine(run.collector);
+    const std::size_t failed = run.collector.failedCount() + run.collector.failedFixtureCount();
+    EXPECT_TRUE(has(closing, std::to_string(failed) + " failed (1 interrupted)")) << closing;
+}

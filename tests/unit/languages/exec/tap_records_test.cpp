@@ -6,6 +6,7 @@
 #include "languages/exec/tap_records.h"
 
 using robottestingframework::languages::readTapRecords;
+using robottestingframework::languages::withoutTapRecords;
 
 TEST(TapRecords, ReadsMeasurementsWithAndWithoutLimits) {
     const auto records = readTapRecords(
@@ -66,4 +67,20 @@ TEST(TapRecords, YamlInfinityIsKeptToBeRefusedByName) {
     const auto records = readTapRecords("measurements:\n  - name: x\n    value: .inf\n");
     ASSERT_EQ(records.measurements.size(), 1u);
     EXPECT_TRUE(std::isinf(records.measurements[0].value));
+}
+
+// Issue 38, friction 9: the YAML's measurements and attachments are not pasted in the point's
+// text; the other keys stay its detail.
+TEST(TapRecords, WithoutTapRecordsKeepsOnlyTheOtherKeys) {
+    EXPECT_EQ(withoutTapRecords("  message: \"fine\"\n"
+                                "  measurements:\n"
+                                "    - name: tracking error\n"
+                                "      value: 0.012\n"
+                                "  other: 1\n"
+                                "  attachments:\n"
+                                "    - path: plot.svg\n"),
+              "  message: \"fine\"\n  other: 1\n");
+    EXPECT_EQ(withoutTapRecords("measurements:\n  - name: rate\n    value: 99.5\n"), "");
+    EXPECT_EQ(withoutTapRecords("note: fast enough\n"), "note: fast enough\n");
+    EXPECT_EQ(withoutTapRecords(""), "");
 }

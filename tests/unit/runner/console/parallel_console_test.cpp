@@ -88,14 +88,17 @@ TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("dropped the cup"));
+        // A failed check, as Asserter::testCheck gives it: the check, then its failure.
         events.addCheck(&grip, TestMessage("force within limits"), false);
+        events.addFailure(&grip, TestMessage("force within limits"));
         events.addCheck(&grip, TestMessage("a passed check"), true);
         events.endTest(&grip);
     });
+    // One line per failed check (issue 38, friction 9): its failure's, not "check FAILED".
     EXPECT_EQ(console.text(),
               "  FAILED      arm :: grip  (T)\n"
               "      failure: dropped the cup\n"
-              "      check FAILED: force within limits\n");
+              "      failure: force within limits\n");
 }
 
 TEST(ParallelConsole, TheWorstStateOfATestIsItsWord) {
