@@ -70,21 +70,23 @@ private:
 
 }  // namespace
 
-TEST(ParallelConsole, APassedTestIsOneLineNamingItsSuiteAndTest) {
+TEST(ParallelConsole, APassedTestIsOneLineNamingItsIdAsFilterTakesIt) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });
-    EXPECT_EQ(console.text(), "  passed      arm :: reach  (T)\n");
+    EXPECT_EQ(console.text(), "  passed      arm/reach  (T)\n");
 }
 
 TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("dropped the cup"));
@@ -93,7 +95,7 @@ TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
         events.endTest(&grip);
     });
     EXPECT_EQ(console.text(),
-              "  FAILED      arm :: grip  (T)\n"
+              "  FAILED      arm/grip  (T)\n"
               "      failure: dropped the cup\n"
               "      check FAILED: force within limits\n");
 }
@@ -102,13 +104,14 @@ TEST(ParallelConsole, TheWorstStateOfATestIsItsWord) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addTimeout(&grip, TestMessage("after 2 s"));
         events.addFailure(&grip, TestMessage("late"));
         events.endTest(&grip);
     });
-    EXPECT_EQ(console.text().substr(0, 25), "  TIMED OUT   arm :: grip");
+    EXPECT_EQ(console.text().substr(0, 22), "  TIMED OUT   arm/grip");
 }
 
 TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
@@ -116,7 +119,9 @@ TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
     TestSuite arm("arm");
     TestSuite leg("leg");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     rtf_test::LambdaTest walk("walk");
+    walk.setKey("walk");
     console.show(arm, [&](TestResult& events) { events.startTest(&reach); });
     console.show(leg, [&](TestResult& events) {
         events.startTest(&walk);
@@ -125,9 +130,9 @@ TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
     });
     console.show(arm, [&](TestResult& events) { events.endTest(&reach); });
     EXPECT_EQ(console.text(),
-              "  ERROR       leg :: walk  (T)\n"
+              "  ERROR       leg/walk  (T)\n"
               "      error: no floor\n"
-              "  passed      arm :: reach  (T)\n");
+              "  passed      arm/reach  (T)\n");
 }
 
 TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
@@ -136,6 +141,7 @@ TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("slipped"));
@@ -145,10 +151,10 @@ TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
         events.endTest(&grip);
     });
     EXPECT_EQ(console.text(),
-              "  RETRY       arm :: grip  (T)\n"
+              "  RETRY       arm/grip  (T)\n"
               "      failure: slipped\n"
-              "  retry       arm :: grip: attempt 2 of 2\n"
-              "  FLAKY       arm :: grip  (T)\n");
+              "  retry       arm/grip: attempt 2 of 2\n"
+              "  FLAKY       arm/grip  (T)\n");
 }
 
 TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
@@ -157,6 +163,7 @@ TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addCrash(&grip, TestMessage("signal 11"));
@@ -167,9 +174,8 @@ TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
         events.endTest(&grip);
     });
     const std::string text = console.text();
-    EXPECT_NE(text.find("  RETRY       arm :: grip  (T)\n"), std::string::npos) << text;
-    EXPECT_NE(text.find("  CRASHED     arm :: grip  (T)\n      crash: signal 11\n"),
-              std::string::npos)
+    EXPECT_NE(text.find("  RETRY       arm/grip  (T)\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("  CRASHED     arm/grip  (T)\n      crash: signal 11\n"), std::string::npos)
         << text;
 }
 
@@ -179,12 +185,13 @@ TEST(ParallelConsole, AnInterruptedTestIsNeverARetry) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addInterrupted(&grip, TestMessage("Ctrl-C"));
         events.endTest(&grip);
     });
-    EXPECT_EQ(console.text(), "  INTERRUPTED arm :: grip  (T)\n      interrupted: Ctrl-C\n");
+    EXPECT_EQ(console.text(), "  INTERRUPTED arm/grip  (T)\n      interrupted: Ctrl-C\n");
 }
 
 TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
@@ -194,17 +201,18 @@ TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
         Console console(settings);
         TestSuite suite("arm");
         rtf_test::LambdaTest reach("reach");
+        reach.setKey("reach");
         console.show(suite, [&](TestResult& events) {
             events.startTest(&reach);
             events.addReport(&reach, TestMessage("at 3 cm"));
             events.addOutput(&reach, "line one\nline two\n");
             events.endTest(&reach);
         });
-        EXPECT_EQ(console.text(), verbose ? "  passed      arm :: reach  (T)\n"
+        EXPECT_EQ(console.text(), verbose ? "  passed      arm/reach  (T)\n"
                                             "      report: at 3 cm\n"
                                             "      | line one\n"
                                             "      | line two\n"
-                                          : "  passed      arm :: reach  (T)\n");
+                                          : "  passed      arm/reach  (T)\n");
     }
 }
 
@@ -230,13 +238,14 @@ TEST(ParallelConsole, ColoursWrapTheStatusWord) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });
     const std::string text = console.text();
     EXPECT_EQ(text.rfind("  \033[", 0), 0u) << text;
-    EXPECT_NE(text.find("passed     \033[0m arm :: reach"), std::string::npos) << text;
+    EXPECT_NE(text.find("passed     \033[0m arm/reach"), std::string::npos) << text;
 }
 
 TEST(ParallelConsole, ANoteIsALineNamingTheRunner) {
@@ -249,6 +258,7 @@ TEST(ParallelConsole, WithoutATerminalATestThatStartsShowsNothing) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     console->note("x");
     EXPECT_EQ(console.text(), "robottestingframework-testrunner: x\n");
@@ -265,6 +275,7 @@ TEST(ParallelConsole, OnATerminalTheProgressLineIsErasedForEachLineAndDrawnAgain
     Console withProgress(settings, console.stream());
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     withProgress->note("x");
     EXPECT_EQ(std::regex_replace(console.text(), std::regex("\\(\\d+\\.\\d s\\)"), "(T)"),
@@ -283,6 +294,7 @@ TEST(ParallelConsole, TheEndOfTheRunErasesTheProgressLineAndEndsWithTheClosingLi
     Console withProgress(settings, console.stream());
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     withProgress->note("x");
     withProgress->endTestRunner();
