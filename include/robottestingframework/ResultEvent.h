@@ -118,6 +118,8 @@ bool isAttachment(const ResultEvent& event);
 bool tripsFailFast(ResultEvent::Kind kind);
 // Whether a worker saying it is quoted when the worker dies (its last words).
 bool isLastWords(ResultEvent::Kind kind);
+// Whether a shared world's start saying it is said again to each suite that joins the world.
+bool isReplayed(ResultEvent::Kind kind);
 // The kind's colour in the console: none, the check's outcome, a warning, a problem.
 enum class KindTone : unsigned char { Plain, Outcome, Warn, Bad };
 KindTone toneOf(ResultEvent::Kind kind);

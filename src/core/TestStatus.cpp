@@ -58,6 +58,8 @@ namespace {
 //   skips, ...; a message is said as -v and the check column allow);
 // - failFast: it trips --fail-fast (a retry takes it back);
 // - lastWords: what a worker said last, quoted when it dies;
+// - replayed: what a shared world's start said, said again to each suite that joins it (under
+//   the suite's world test): its reports, output, attachments and measurements;
 // - carries: its data (a measurement, an attachment); without it, it is said as any other;
 // - tone: its colour in the console;
 // - passedLabel / failedLabel: its word when it passed / failed (null: `word`), as the
@@ -73,6 +75,7 @@ struct KindRow {
     bool said;
     bool failFast;
     bool lastWords;
+    bool replayed;
     Carries carries;
     KindTone tone;
     const char* passedLabel;
@@ -86,29 +89,29 @@ constexpr bool Y = true;
 constexpr bool n = false;
 // clang-format off
 constexpr KindRow kindRows[] = {
-//   kind              word            state                   frame msg chk said ff  last carries               tone         passed      failed                       failedName
-    {Kind::StartRunner, "start-runner", TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndRunner,   "end-runner",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::StartSuite,  "start-suite",  TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndSuite,    "end-suite",    TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::StartTest,   "start-test",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndTest,     "end-test",     TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Report,      "report",       TestStatus::Passed,      n,   Y,  n,  n,   n,  Y,   none,                 T::Plain,    nullptr,    nullptr,                     nullptr},
-    {Kind::Check,       "check",        TestStatus::Passed,      n,   Y,  Y,  n,   n,  Y,   none,                 T::Outcome,  "check ok", "check FAILED",              "check failed"},
-    {Kind::Failure,     "failure",      TestStatus::Failed,      n,   n,  n,  Y,   Y,  Y,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Error,       "error",        TestStatus::Error,       n,   n,  n,  Y,   Y,  Y,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Skipped,     "skipped",      TestStatus::Skipped,     n,   n,  n,  Y,   n,  n,   none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
-    {Kind::Crash,       "crash",        TestStatus::Crashed,     n,   n,  n,  Y,   Y,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Timeout,     "timeout",      TestStatus::TimedOut,    n,   n,  n,  Y,   Y,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Interrupted, "interrupted",  TestStatus::Interrupted, n,   n,  n,  Y,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Output,      "output",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Rename,      "rename",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Retry,       "retry",        TestStatus::Passed,      n,   n,  n,  n,   Y,  n,   none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
-    {Kind::Repetition,  "repetition",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Measurement, "measurement",  TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Carries::Measurement, T::Bad,      nullptr,    "measurement OUTSIDE LIMITS", nullptr},
-    {Kind::Attachment,  "attachment",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Carries::Attachment,  T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::World,       "world",        TestStatus::Passed,      n,   n,  n,  n,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Probe,       "probe",        TestStatus::Failed,      n,   n,  n,  Y,   n,  n,   none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+//   kind              word            state                   frame msg chk said ff  last rep carries               tone         passed      failed                       failedName
+    {Kind::StartRunner, "start-runner", TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndRunner,   "end-runner",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartSuite,  "start-suite",  TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndSuite,    "end-suite",    TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartTest,   "start-test",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndTest,     "end-test",     TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Report,      "report",       TestStatus::Passed,      n,   Y,  n,  n,   n,  Y,   Y, none,                 T::Plain,    nullptr,    nullptr,                     nullptr},
+    {Kind::Check,       "check",        TestStatus::Passed,      n,   Y,  Y,  n,   n,  Y,   n, none,                 T::Outcome,  "check ok", "check FAILED",              "check failed"},
+    {Kind::Failure,     "failure",      TestStatus::Failed,      n,   n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Error,       "error",        TestStatus::Error,       n,   n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Skipped,     "skipped",      TestStatus::Skipped,     n,   n,  n,  Y,   n,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Crash,       "crash",        TestStatus::Crashed,     n,   n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Timeout,     "timeout",      TestStatus::TimedOut,    n,   n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Interrupted, "interrupted",  TestStatus::Interrupted, n,   n,  n,  Y,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Output,      "output",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Rename,      "rename",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Retry,       "retry",        TestStatus::Passed,      n,   n,  n,  n,   Y,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Repetition,  "repetition",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Measurement, "measurement",  TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, Carries::Measurement, T::Bad,      nullptr,    "measurement OUTSIDE LIMITS", nullptr},
+    {Kind::Attachment,  "attachment",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, Carries::Attachment,  T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::World,       "world",        TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Probe,       "probe",        TestStatus::Failed,      n,   n,  n,  Y,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
 };
 // clang-format on
 
@@ -229,6 +232,11 @@ bool tripsFailFast(ResultEvent::Kind kind) {
 bool isLastWords(ResultEvent::Kind kind) {
     const KindRow* row = rowOf(kind);
     return row != nullptr && row->lastWords;
+}
+
+bool isReplayed(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr && row->replayed;
 }
 
 KindTone toneOf(ResultEvent::Kind kind) {

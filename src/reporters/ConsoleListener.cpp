@@ -130,7 +130,8 @@ void ConsoleListener::startTest(const Test* test) {
     record_.startTest(test);
     test_ = test != nullptr ? test->getId() : 0;
     if (verbose_ && test != nullptr) {
-        line("  run         " + reporters::shownAs(test->getKey(), test->getName()));
+        const std::string suite = record_.suites().empty() ? "" : record_.suites().back().name;
+        line("  run         " + reporters::shownId(suite, test->getKey(), test->getName()));
     }
 }
 
@@ -173,7 +174,7 @@ void ConsoleListener::endTest(const Test* test) {
         text += word;
     }
     text += ' ';
-    reporters::appendShownAs(text, record.key, record.name);
+    reporters::appendShownId(text, record_.suites().back().name, record.key, record.name);
     text.append("  (").append(reporters::seconds(record.duration)).append(")");
     line(std::move(text));
     if (verbose_) {

@@ -77,6 +77,26 @@ void appendShownAs(std::string& text, const std::string& key, const std::string&
     text.append(visibleText(key)).append(" (").append(visibleText(name)).append(")");
 }
 
+void appendShownId(std::string& text, const std::string& suite, const std::string& key,
+                   const std::string& name) {
+    if (key.empty() || suite.empty()) {
+        appendShownAs(text, key, name);
+        return;
+    }
+    text += visibleText(suite);
+    text += '/';
+    text += visibleText(key);
+    if (!name.empty() && key != name && name[0] != '/') {
+        text.append(" (").append(visibleText(name)).append(")");
+    }
+}
+
+std::string shownId(const std::string& suite, const std::string& key, const std::string& name) {
+    std::string text;
+    appendShownId(text, suite, key, name);
+    return text;
+}
+
 std::string seconds(double value) {
     // Printed for every test: integer formatting of the milliseconds is much cheaper than %f.
     const double millis = value * 1000.0 + 0.5;

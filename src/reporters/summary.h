@@ -45,6 +45,12 @@ std::vector<std::string> outputLines(const std::string& text);
 std::string shownAs(const std::string& key, const std::string& name);
 // The same appended to `text`: the console's line of each test, with no string of its own.
 void appendShownAs(std::string& text, const std::string& key, const std::string& name);
+// How the consoles name a test, the same at every -j: the id --filter takes, "SUITE/KEY"
+// (docs/reference/test-ids.md), then the name it gives itself as shownAs does
+// ("robot/tests/arith.lua (ArmTest)"). Without a key, as shownAs.
+void appendShownId(std::string& text, const std::string& suite, const std::string& key,
+                   const std::string& name);
+std::string shownId(const std::string& suite, const std::string& key, const std::string& name);
 // "0.002 s".
 std::string seconds(double value);
 

@@ -43,7 +43,7 @@ def test_a_kind_with_only_its_table_rows_reaches_every_reporter(
 
     # The console (-j 1: the console listener; -j 2: the parallel console), under its word.
     for name in probes:
-        assert re.search(rf"^  FAILED\s+(\S+ :: )?{name}  \(", r.stdout, re.M), r.stdout
+        assert re.search(rf"^  FAILED\s+(\S+/)?{name}  \(", r.stdout, re.M), r.stdout
     assert r.stdout.count(f"probe: {PROBE}") == 2, r.stdout
     assert "2 failed" in r.stdout, r.stdout
 

@@ -100,7 +100,7 @@ def check_passed(run, junit, names):
     assert run.returncode == 0, run
     for name in set(names):
         # "passed  ID (NAME)  (0.1 s)", or "passed  NAME  (0.1 s)" when the id is the name.
-        lines = re.findall(rf"^\s*passed\s+(?:.*? \()?{re.escape(name)}\)?\s+\(", run.stdout,
+        lines = re.findall(rf"^\s*passed\s+(?:\S+/)?(?:.*? \()?{re.escape(name)}\)?\s+\(", run.stdout,
                            re.MULTILINE)
         assert len(lines) == names.count(name), f"{name}: {lines}\n{run}"
     assert re.search(rf"^{len(names)} passed, 0 failed$", run.stdout, re.MULTILINE), run

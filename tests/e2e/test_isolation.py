@@ -29,7 +29,8 @@ def console_line(output, name):
     for line in output.splitlines():
         words = line.split()
         if len(words) >= 2 and name in line and line.startswith("  ") and "(" in line:
-            if line.split("  (")[0].rstrip().endswith(" " + name):
+            shown = line.split("  (")[0].rstrip()  # "  passed      SUITE/ID (NAME)"
+            if shown.endswith(" " + name) or shown.endswith("/" + name):
                 return line
     raise AssertionError(f"no console line for {name}:\n{output}")
 

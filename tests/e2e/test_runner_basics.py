@@ -13,14 +13,14 @@ def closing_line(run):
 def test_passing_plugin_exits_zero(tmp_path):
     run = run_runner("--test", plugin("passing_test"), cwd=tmp_path)
     assert run.returncode == 0, run
-    assert re.search(r"^\s*passed\s+passing_test.so \(PassingTest\)", run.stdout, re.M), run
+    assert re.search(r"^\s*passed\s+(?:.+/)?passing_test.so \(PassingTest\)", run.stdout, re.M), run
     assert closing_line(run) == "1 passed, 0 failed", run
 
 
 def test_failing_plugin_exits_one_and_shows_the_failure(tmp_path):
     run = run_runner("-t", plugin("passing_test"), "-t", plugin("failing_test"), cwd=tmp_path)
     assert run.returncode == 1, run
-    assert re.search(r"^\s*FAILED\s+failing_test.so \(FailingTest\)", run.stdout, re.M), run
+    assert re.search(r"^\s*FAILED\s+(?:.+/)?failing_test.so \(FailingTest\)", run.stdout, re.M), run
     assert "two and two make five" in run.stdout, run
     assert closing_line(run) == "1 passed, 1 failed", run
 

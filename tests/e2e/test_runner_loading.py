@@ -13,7 +13,7 @@ def test_missing_plugin_is_a_failed_test_with_the_places_searched(tmp_path, suit
 </suite>""")
     run = run_runner("-s", suite.name, cwd=tmp_path)
     assert run.returncode == 1, run
-    assert re.search(r"^\s*FAILED\s+no_such_motor_test\b", run.stdout, re.M), run
+    assert re.search(r"^\s*FAILED\s+(?:.+/)?no_such_motor_test\b", run.stdout, re.M), run
     assert "cannot load no_such_motor_test" in run.stdout, run
     assert "libno_such_motor_test.so" in run.stdout, run   # the spellings tried
     # The suite's folder was searched, and is said as a path, not as "." (the suite was named

@@ -173,11 +173,11 @@ def test_jobs_n_runs_suites_at_once_one_line_per_finished_test(tmp_path):
     for name in spans:  # ...but never three
         at = spans[name][0] + 0.01
         assert sum(1 for s in spans.values() if s[0] <= at <= s[1]) <= 2, spans
-    lines = [line for line in r.stdout.splitlines() if " :: " in line]
+    lines = [line for line in r.stdout.splitlines() if re.match(r"\s+passed\s+\S+/", line)]
     assert len(lines) == 8, r.stdout
     for name in ("s1", "s2", "s3", "s4"):
         for i in range(2):
-            assert sum(1 for line in lines if re.match(rf"\s+passed\s+{name} :: {name}-t{i}  \(", line)) == 1, r.stdout
+            assert sum(1 for line in lines if re.match(rf"\s+passed\s+{name}/{name}-t{i}  \(", line)) == 1, r.stdout
     assert "\r" not in r.stdout  # no live status line on a pipe
     assert "8 passed, 0 failed" in r.stdout, r
 

@@ -24,11 +24,10 @@ def program(folder, name, text):
 # --- 6. The console's time of a test is the report's -------------------------------------------
 
 def console_times(stdout):
-    """{test id: seconds} of the console's test lines (-j 1: "passed  id  (t)", -j N:
-    "passed  suite :: id  (t)")."""
+    """{test id: seconds} of the console's test lines ("passed  suite/id  (t)" at every -j)."""
     times = {}
     for line in stdout.splitlines():
-        found = re.search(r"(?:::|passed)\s+(sleep_\w+)\s+\((\d+\.\d{3}) s\)\s*$", line)
+        found = re.search(r"passed\s+\w+/(sleep_\w+)\s+\((\d+\.\d{3}) s\)\s*$", line)
         if found:
             times[found.group(1)] = float(found.group(2))
     return times

@@ -85,11 +85,11 @@ def test_every_output_names_a_test_by_its_one_id(tmp_path):
                    "-o", "tap:r.tap", "-o", "html:r.html", "-o", "text:r.txt", cwd=folder)
     assert r.returncode == 1, r
     local = [i.split("/", 1)[1] for i in IDS]
-    # The console: the id, then the name the test gives itself.
-    assert "FAILED      tests/limits.py (joint limits)  (" in r.stdout, r.stdout
+    # The console: the id as --filter takes it, then the name the test gives itself.
+    assert "FAILED      arm-bench/tests/limits.py (joint limits)  (" in r.stdout, r.stdout
     # A script's default name (its absolute path) is not shown beside the id.
-    assert "passed      tests/check.py[--speed 1]  (" in r.stdout, r.stdout
-    assert "FAILED      repeated.py  (" in r.stdout, r.stdout
+    assert "passed      arm-bench/tests/check.py[--speed 1]  (" in r.stdout, r.stdout
+    assert "FAILED      arm-bench/repeated.py  (" in r.stdout, r.stdout
     result_lines = [line for line in r.stdout.splitlines() if re.match(r"^  (passed|FAILED) ", line)]
     assert len(result_lines) == 7 and not any(str(tmp_path) in line for line in result_lines), \
         r.stdout

@@ -47,7 +47,7 @@ def result_lines(text):
     """(word, name) of each per-test line of the console or text report, in order."""
     found = []
     for line in text.splitlines():
-        m = re.match(r"^  (\S+(?: OUT)?)\s+(.*?)  \(\d+\.\d+ s\)$", line)
+        m = re.match(r"^  (\S+(?: OUT)?)\s+(?:[^/ ]+/)?(.*?)  \(\d+\.\d+ s\)$", line)
         if m and not line.startswith("  suite"):
             found.append((m.group(1), m.group(2)))
     return found

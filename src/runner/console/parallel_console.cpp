@@ -76,7 +76,7 @@ public:
         } else {
             text += word;
         }
-        text += " " + suiteName() + " :: " + shownAs(test) + "  (" + reporters::seconds(took) + ")";
+        text += " " + shownId(test) + "  (" + reporters::seconds(took) + ")";
         console_.line(text);
         for (const auto& said : open.lines) {
             console_.line(said);
@@ -129,7 +129,7 @@ public:
         if (ProgressLine* progress = console_.settings_.progress) {
             progress->testRetried(test);
         }
-        console_.line("  retry       " + suiteName() + " :: " + shownAs(test) + ": " +
+        console_.line("  retry       " + shownId(test) + ": " +
                       reporters::shownMessage(msg, "          "));
         Open& open = open_()[test];
         const unsigned int attempts = open.attempts + 1;
@@ -165,7 +165,18 @@ private:
     std::map<const Test*, Open>& open_() { return console_.open_; }
     // The suite's name as the console shows it (control characters escaped).
     std::string suiteName() const { return reporters::visibleText(suite_.getName()); }
-    // "tests/arith.lua (ArmTest)": its id, and the name it gave itself beside.
+    // "robot/tests/arith.lua (ArmTest)": its id as --filter takes it, the same as the -j1
+    // console's, and the name it gave itself beside.
+    std::string shownId(const Test* test) {
+        if (test == nullptr) {
+            return "";
+        }
+        auto found = open_().find(test);
+        const bool renamed = found != open_().end() && !found->second.name.empty();
+        return reporters::shownId(suite_.getName(), test->getKey(),
+                                  renamed ? found->second.name : test->getName());
+    }
+    // The same without the suite: the progress line says its suite apart ("arm :: reach").
     std::string shownAs(const Test* test) {
         if (test == nullptr) {
             return "";

@@ -212,19 +212,11 @@ void SharedWorld::replay(std::size_t from, std::size_t to, TestResult& result, c
         }
     }
     for (RunEvent& event : events) {
-        switch (event.data.kind) {
-            case ResultEvent::Kind::Report:
-            case ResultEvent::Kind::Output:
-            case ResultEvent::Kind::Attachment:
-            case ResultEvent::Kind::Measurement:
-            case ResultEvent::Kind::Probe:
-                event.test = owner;
-                event.suite = nullptr;
-                event.happened = 0;
-                result.publish(event);
-                break;
-            default:
-                break;
+        if (isReplayed(event.data.kind)) {  // the column of the kinds' table
+            event.test = owner;
+            event.suite = nullptr;
+            event.happened = 0;
+            result.publish(event);
         }
     }
 }

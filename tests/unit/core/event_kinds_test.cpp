@@ -101,6 +101,19 @@ TEST(EventKinds, TheFramesAreTheStartsAndEnds) {
                                                 "end-suite", "start-test", "end-test"}));
 }
 
+// What a shared world's start said is said again to each suite that joins it: its messages,
+// output and data, never a frame nor a state of the test that started it (the table's column).
+TEST(EventKinds, ASharedWorldReplaysItsMessagesOutputAndDataOnly) {
+    std::set<Kind> replayed;
+    for (int k = 0; k <= static_cast<int>(ResultEvent::lastKind); ++k) {
+        if (isReplayed(static_cast<Kind>(k))) {
+            replayed.insert(static_cast<Kind>(k));
+        }
+    }
+    EXPECT_EQ(replayed, (std::set<Kind>{Kind::Report, Kind::Output, Kind::Attachment,
+                                        Kind::Measurement, Kind::Probe}));
+}
+
 TEST(EventKinds, EveryKindCallsExactlyOneNamedHandler) {
     Named test("t");
     TestSuite suite("s");

@@ -75,6 +75,18 @@ TEST(ConsoleListener, PrintsALinePerTestWithStatusAndDuration) {
     EXPECT_TRUE(has(text, " s)\n"));
 }
 
+// Issue 38: the line names the test by the id --filter takes ("SUITE/KEY"), the same as the -j N
+// console's, with the name the test gave itself beside it when that differs.
+TEST(ConsoleListener, ATestWithAnIdIsNamedByItAsFilterTakesIt) {
+    LambdaTest a("t.py"), b("Gripper");
+    a.setKey("t.py[--speed 80]");
+    b.setKey("tests/gripper.py");
+    const std::string text = consoleText({&a, &b}, [](ConsoleListener&) {}, true);
+    EXPECT_TRUE(has(text, "  passed      arm tests/t.py[--speed 80] (t.py)  (0.")) << text;
+    EXPECT_TRUE(has(text, "  passed      arm tests/tests/gripper.py (Gripper)  (0.")) << text;
+    EXPECT_TRUE(has(text, "  run         arm tests/tests/gripper.py (Gripper)\n")) << text;
+}
+
 TEST(ConsoleListener, FailuresAreShownWithTheirSourceLocation) {
     LambdaTest b("camera", [] { ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("no image"); });
     const std::string text = consoleText({&b});

@@ -70,21 +70,23 @@ private:
 
 }  // namespace
 
-TEST(ParallelConsole, APassedTestIsOneLineNamingItsSuiteAndTest) {
+TEST(ParallelConsole, APassedTestIsOneLineNamingItsIdAsFilterTakesIt) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });
-    EXPECT_EQ(console.text(), "  passed      arm :: reach  (T)\n");
+    EXPECT_EQ(console.text(), "  passed      arm/reach  (T)\n");
 }
 
 TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("dropped the cup"));
@@ -96,7 +98,7 @@ TEST(ParallelConsole, AFailedTestShowsItsMessagesUnderItsLine) {
     });
     // One line per failed check (issue 38, friction 9): its failure's, not "check FAILED".
     EXPECT_EQ(console.text(),
-              "  FAILED      arm :: grip  (T)\n"
+              "  FAILED      arm/grip  (T)\n"
               "      failure: dropped the cup\n"
               "      failure: force within limits\n");
 }
@@ -105,13 +107,14 @@ TEST(ParallelConsole, TheWorstStateOfATestIsItsWord) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addTimeout(&grip, TestMessage("after 2 s"));
         events.addFailure(&grip, TestMessage("late"));
         events.endTest(&grip);
     });
-    EXPECT_EQ(console.text().substr(0, 25), "  TIMED OUT   arm :: grip");
+    EXPECT_EQ(console.text().substr(0, 22), "  TIMED OUT   arm/grip");
 }
 
 TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
@@ -119,7 +122,9 @@ TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
     TestSuite arm("arm");
     TestSuite leg("leg");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     rtf_test::LambdaTest walk("walk");
+    walk.setKey("walk");
     console.show(arm, [&](TestResult& events) { events.startTest(&reach); });
     console.show(leg, [&](TestResult& events) {
         events.startTest(&walk);
@@ -128,9 +133,9 @@ TEST(ParallelConsole, TestsOfSeveralSuitesInterleaveWholeLines) {
     });
     console.show(arm, [&](TestResult& events) { events.endTest(&reach); });
     EXPECT_EQ(console.text(),
-              "  ERROR       leg :: walk  (T)\n"
+              "  ERROR       leg/walk  (T)\n"
               "      error: no floor\n"
-              "  passed      arm :: reach  (T)\n");
+              "  passed      arm/reach  (T)\n");
 }
 
 TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
@@ -139,6 +144,7 @@ TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addFailure(&grip, TestMessage("slipped"));
@@ -148,10 +154,10 @@ TEST(ParallelConsole, AFailureWithRetriesLeftIsARetryAndALaterPassIsFlaky) {
         events.endTest(&grip);
     });
     EXPECT_EQ(console.text(),
-              "  RETRY       arm :: grip  (T)\n"
+              "  RETRY       arm/grip  (T)\n"
               "      failure: slipped\n"
-              "  retry       arm :: grip: attempt 2 of 2\n"
-              "  FLAKY       arm :: grip  (T)\n");
+              "  retry       arm/grip: attempt 2 of 2\n"
+              "  FLAKY       arm/grip  (T)\n");
 }
 
 TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
@@ -160,6 +166,7 @@ TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addCrash(&grip, TestMessage("signal 11"));
@@ -170,9 +177,8 @@ TEST(ParallelConsole, AFailureWithoutRetriesLeftIsFinal) {
         events.endTest(&grip);
     });
     const std::string text = console.text();
-    EXPECT_NE(text.find("  RETRY       arm :: grip  (T)\n"), std::string::npos) << text;
-    EXPECT_NE(text.find("  CRASHED     arm :: grip  (T)\n      crash: signal 11\n"),
-              std::string::npos)
+    EXPECT_NE(text.find("  RETRY       arm/grip  (T)\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("  CRASHED     arm/grip  (T)\n      crash: signal 11\n"), std::string::npos)
         << text;
 }
 
@@ -182,12 +188,13 @@ TEST(ParallelConsole, AnInterruptedTestIsNeverARetry) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest grip("grip");
+    grip.setKey("grip");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&grip);
         events.addInterrupted(&grip, TestMessage("Ctrl-C"));
         events.endTest(&grip);
     });
-    EXPECT_EQ(console.text(), "  INTERRUPTED arm :: grip  (T)\n      interrupted: Ctrl-C\n");
+    EXPECT_EQ(console.text(), "  INTERRUPTED arm/grip  (T)\n      interrupted: Ctrl-C\n");
 }
 
 TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
@@ -197,17 +204,18 @@ TEST(ParallelConsole, ReportsAndOutputAreShownOnlyWhenVerbose) {
         Console console(settings);
         TestSuite suite("arm");
         rtf_test::LambdaTest reach("reach");
+        reach.setKey("reach");
         console.show(suite, [&](TestResult& events) {
             events.startTest(&reach);
             events.addReport(&reach, TestMessage("at 3 cm"));
             events.addOutput(&reach, "line one\nline two\n");
             events.endTest(&reach);
         });
-        EXPECT_EQ(console.text(), verbose ? "  passed      arm :: reach  (T)\n"
+        EXPECT_EQ(console.text(), verbose ? "  passed      arm/reach  (T)\n"
                                             "      report: at 3 cm\n"
                                             "      | line one\n"
                                             "      | line two\n"
-                                          : "  passed      arm :: reach  (T)\n");
+                                          : "  passed      arm/reach  (T)\n");
     }
 }
 
@@ -233,13 +241,14 @@ TEST(ParallelConsole, ColoursWrapTheStatusWord) {
     Console console(settings);
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) {
         events.startTest(&reach);
         events.endTest(&reach);
     });
     const std::string text = console.text();
     EXPECT_EQ(text.rfind("  \033[", 0), 0u) << text;
-    EXPECT_NE(text.find("passed     \033[0m arm :: reach"), std::string::npos) << text;
+    EXPECT_NE(text.find("passed     \033[0m arm/reach"), std::string::npos) << text;
 }
 
 TEST(ParallelConsole, ANoteIsALineNamingTheRunner) {
@@ -252,6 +261,7 @@ TEST(ParallelConsole, WithoutATerminalATestThatStartsShowsNothing) {
     Console console;
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     console.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     console->note("x");
     EXPECT_EQ(console.text(), "robottestingframework-testrunner: x\n");
@@ -268,6 +278,7 @@ TEST(ParallelConsole, OnATerminalTheProgressLineIsErasedForEachLineAndDrawnAgain
     Console withProgress(settings, console.stream());
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     withProgress->note("x");
     EXPECT_EQ(std::regex_replace(console.text(), std::regex("\\(\\d+\\.\\d s\\)"), "(T)"),
@@ -286,6 +297,7 @@ TEST(ParallelConsole, TheEndOfTheRunErasesTheProgressLineAndEndsWithTheClosingLi
     Console withProgress(settings, console.stream());
     TestSuite suite("arm");
     rtf_test::LambdaTest reach("reach");
+    reach.setKey("reach");
     withProgress.show(suite, [&](TestResult& events) { events.startTest(&reach); });
     withProgress->note("x");
     withProgress->endTestRunner();
