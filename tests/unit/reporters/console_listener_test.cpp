@@ -81,7 +81,8 @@ TEST(ConsoleListener, ATestWithAnIdIsNamedByItAsFilterTakesIt) {
     LambdaTest a("t.py"), b("Gripper");
     a.setKey("t.py[--speed 80]");
     b.setKey("tests/gripper.py");
-    const std::string text = consoleText({&a, &b}, [](ConsoleListener&) {}, true);
+    const std::string text = consoleText(
+        {&a, &b}, [](ConsoleListener&) {}, true);
     EXPECT_TRUE(has(text, "  passed      arm tests/t.py[--speed 80] (t.py)  (0.")) << text;
     EXPECT_TRUE(has(text, "  passed      arm tests/tests/gripper.py (Gripper)  (0.")) << text;
     EXPECT_TRUE(has(text, "  run         arm tests/tests/gripper.py (Gripper)\n")) << text;
