@@ -77,7 +77,7 @@ def test_every_run_is_appended_and_the_report_finds_the_flaky_test(tmp_path, iso
     r = run_runner("--history", "h.db", "--history-report", cwd=folder)
     assert r.returncode == 0, r
     assert "in the last 3 runs" in r.stdout, r
-    flakiest = r.stdout.split("Flakiest tests", 1)[1].split("Most slowed", 1)[0]
+    flakiest = r.stdout.split("Flakiest tests", 1)[1].split("Tests that failed every run", 1)[0]
     # Passed, failed, passed: two changes of outcome in three runs.
     assert "66.7 %  hist/flip" in flakiest, r
     assert "hist/ok" not in flakiest, r

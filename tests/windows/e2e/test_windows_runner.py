@@ -132,16 +132,20 @@ def test_history_is_appended_reported_and_shown_in_the_html_report(tmp_path):
         assert run.returncode == 1, run  # a test failed, each time
         assert "history" not in run.stderr, run
 
-    # Test ids as on Linux: the suite's name, then the test as the suite names it.
-    passing, failing = "Windows suite/../plugins/passing_test.dll", "Windows suite/failing_test"
-    assert history_rows(suites / "h.db") == [(passing, "passed"), (failing, "failed")] * 2
+    # Test ids as on Linux: the suite's name, then the test as the suite names it, a plug-in
+    # beside the suite's folder said from the folder both share (no ".." in an id).
+    passing, failing = "Windows suite/plugins/passing_test.dll", "Windows suite/failing_test"
+    assert history_rows(suites / "h.db") == [(failing, "failed"), (passing, "passed")] * 2
 
     report = run_runner("--history", "h.db", "--history-report", cwd=suites)
     assert report.returncode == 0, report
     assert "2 tests in the last 2 runs" in report.stdout, report
     # The same outcome both times: neither test is flaky.
-    flakiest = report.stdout.split("Flakiest tests", 1)[1].split("Most slowed", 1)[0]
+    flakiest = report.stdout.split("Flakiest tests", 1)[1].split("Tests that failed", 1)[0]
     assert "Windows suite/" not in flakiest, report
+    # The failing test failed both runs: listed as such, not as flaky.
+    always = report.stdout.split("Tests that failed every run", 1)[1].split("Most slowed", 1)[0]
+    assert failing in always and passing not in always, report
 
     html = suites / "r.html"
     assert "window.rtfTrends = " in html.read_text()  # trends.js, which draws the strips
