@@ -169,14 +169,14 @@ def marked(mark):
     return found
 
 
-@pytest.mark.skipif(not private_networks_work(), reason="no user namespaces here")
-@pytest.mark.parametrize("how", ["SIGKILL", "Ctrl-C"])
-def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project, how):
+def kill_ctest_while_a_test_runs(project, how, running, jobs, pattern):
+    """Starts ctest on the tests `pattern` selects, waits for the test that touches `running`,
+    checks that exactly one keeper and a world's server are up, stops ctest with SIGKILL or
+    Ctrl-C (SIGINT to its group, as a terminal's foreground job gets it) and checks that no
+    process carrying this run's mark is left after 10 s."""
     mark = uuid.uuid4().hex
-    running = project / "running"
     running.unlink(missing_ok=True)
-    # In a session of its own, as a terminal's foreground job: Ctrl-C signals its group.
-    ctest_run = subprocess.Popen(["ctest", "--test-dir", str(project), "-j", "2", "-R", r"^hang\."],
+    ctest_run = subprocess.Popen(["ctest", "--test-dir", str(project), "-j", jobs, "-R", pattern],
                                  stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                                  env={**os.environ, "RTF_E2E_MARK": mark},
                                  start_new_session=True)
@@ -209,6 +209,12 @@ def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project, how):
                 os.kill(pid, signal.SIGKILL)
             except OSError:
                 pass
+
+
+@pytest.mark.skipif(not private_networks_work(), reason="no user namespaces here")
+@pytest.mark.parametrize("how", ["SIGKILL", "Ctrl-C"])
+def test_ctest_killed_while_a_test_runs_leaves_nothing_behind(project, how):
+    kill_ctest_while_a_test_runs(project, how, project / "running", "2", r"^hang\.")
 
 
 def test_the_world_options_say_what_is_wrong(project, prefix):
@@ -281,43 +287,9 @@ def test_ctest_R_brings_the_shared_world_of_one_test(project):
 
 @pytest.mark.parametrize("how", ["SIGKILL", "Ctrl-C"])
 def test_ctest_killed_in_a_shared_world_leaves_nothing_behind(project, how):
-    mark = uuid.uuid4().hex
-    running = project / "shared_running"
-    running.unlink(missing_ok=True)
-    ctest_run = subprocess.Popen(["ctest", "--test-dir", str(project), "-j", "3",
-                                  "-R", r"^shared\.|^shared_hang\."],
-                                 stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                                 env={**os.environ, "RTF_E2E_MARK": mark},
-                                 start_new_session=True)
-    try:
-        deadline = time.monotonic() + 60
-        while not running.exists() and time.monotonic() < deadline:
-            time.sleep(0.05)
-        assert running.exists(), "the test never ran"
-        alive = marked(mark)
-        keepers = [pid for pid, (command, _) in alive.items() if "--world-up" in command]
-        assert len(keepers) == 1, alive  # the shared world's keeper, no suite's own
-        assert any(world for _, world in alive.values()), alive  # the world's server
-        if how == "SIGKILL":
-            os.kill(ctest_run.pid, signal.SIGKILL)
-        else:
-            os.killpg(ctest_run.pid, signal.SIGINT)
-        ctest_run.wait(timeout=20)
-        deadline = time.monotonic() + 10
-        left = marked(mark)
-        while left and time.monotonic() < deadline:
-            time.sleep(0.1)
-            left = marked(mark)
-        assert not left, f"left behind: {left}"
-    finally:
-        if ctest_run.poll() is None:
-            ctest_run.kill()
-            ctest_run.wait()
-        for pid in marked(mark):
-            try:
-                os.kill(pid, signal.SIGKILL)
-            except OSError:
-                pass
+    # One keeper: the shared world's, no suite's own.
+    kill_ctest_while_a_test_runs(project, how, project / "shared_running", "3",
+                                 r"^shared\.|^shared_hang\.")
 
 
 def own_starts(build):
