@@ -347,6 +347,27 @@ def test_a_history_that_cannot_be_written_loses_no_report(tmp_path, isolation):
     assert r.returncode == 0, r
 
 
+def test_reading_a_history_leaves_no_sqlite_file_beside_it(tmp_path):
+    """Clutter (issue 38, the first hour): --history-report, --history-html and
+    --durations-from read the history; SQLite makes its -wal and -shm files beside a WAL
+    database to read it, and a read-only connection never removes them. After any command,
+    the folder holds the history file alone."""
+    folder = make_suite(tmp_path / "suite")
+    r = run_runner("--suite", "hist.xml", "--history", "h.db", "--no-output", cwd=folder)
+    assert r.returncode == 0, r
+    beside = sorted(p.name for p in folder.glob("h.db*"))
+    assert beside == ["h.db"], beside
+    for args in (["--history", "h.db", "--history-report"],
+                 ["--history", "h.db", "--history-report", "--history-html", "h.html"],
+                 ["--suite", "hist.xml", "--durations-from", "h.db", "--no-output"],
+                 ["--suite", "hist.xml", "--history", "h.db", "--no-output"]):
+        r = run_runner(*args, cwd=folder)
+        assert r.returncode == 0, (args, r)
+        beside = sorted(p.name for p in folder.glob("h.db*"))
+        assert beside == ["h.db"], (args, beside)
+    assert history_rows(folder / "h.db", "hist/ok") == [("passed", 1)] * 2
+
+
 def test_history_commands_need_a_history_file(tmp_path):
     for args in (["--history-report"], ["--history-import", "r.xml"],
                  ["--history", "h.db", "--history-report", "0"],

@@ -254,8 +254,8 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          "state, time and attempts; the HTML report then shows each test's last 30 runs",
          &o.history},
         {"--history-report", "N", Takes::MaybeOne, shards,
-         "With --history: print the flakiest and the most slowed-down tests of its last N runs "
-         "(default 30), and exit", &w.historyRuns},
+         "With --history: print the flakiest tests, those that failed every run and the most "
+         "slowed-down ones of its last N runs (default 30), and exit", &w.historyRuns},
         {"--history-html", "FILE", Takes::One, shards,
          "With --history-report: also write the report as an HTML page to FILE: each test's "
          "outcomes and times over the runs, flaky rate, always failing, slowest, slow-downs and "

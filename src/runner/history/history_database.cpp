@@ -88,8 +88,12 @@ std::string folderOf(const std::string& path) {
 
 HistoryDatabase::HistoryDatabase(const std::string& path, Mode mode) : path_(path) {
     checkHistoryFileKind(path);  // never a device: SQLite would leave PATH-journal beside it
+    // A reader opens the file for writing too (never creating it) and writes nothing: SQLite
+    // makes -wal and -shm files beside a WAL database to read it, and only a connection that
+    // may write removes them when it closes (a read-only one would leave them in the user's
+    // folder after every --history-report). A file the user may not write is opened read-only.
     const int flags =
-        mode == Mode::Append ? SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE : SQLITE_OPEN_READONLY;
+        mode == Mode::Append ? SQLITE_OPEN_READWRITE | SQLITE_OPEN_CREATE : SQLITE_OPEN_READWRITE;
     open(path, flags);
     try {
         if (!readFacts()) {
