@@ -165,12 +165,20 @@ std::string HtmlReporter::testData(const TestRecord& test, const SuiteRecord& su
     }
     out += ",\"messages\":[";
     bool firstMessage = true;
-    for (const ResultEvent& event : events) {
+    for (std::size_t i = 0; i < events.size(); ++i) {
+        const ResultEvent& event = events[i];
         if (!isShown(event, settings_.passedChecks)) {
             continue;
         }
         if (carriesAnything(event.kind)) {
             continue;  // in their own table and links
+        }
+        // A failed check is followed by the failure it makes, with the same words: said once,
+        // as the text report and the console say it.
+        if (isFailedCheck(event) && i + 1 < events.size() &&
+            stateOf(events[i + 1].kind) == TestStatus::Failed &&
+            events[i + 1].message.getMessage() == event.message.getMessage()) {
+            continue;
         }
         out += (firstMessage ? "" : ",") + messageData(event);
         firstMessage = false;

@@ -382,6 +382,16 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
         test.worst = status;
     }
     message.repetition = test.repetition;
+    // A failed check is followed by the failure it makes, with the same words: said once, as
+    // the failure (as the console and the reports say it).
+    if (status == TestStatus::Failed && !test.messages.empty() &&
+        test.messages.back().kind == "check failed" && test.messages.back().text == message.text &&
+        test.messages.back().where == message.where &&
+        test.messages.back().repetition == message.repetition) {
+        test.messages.back().kind = message.kind;
+        publishTest(place->suite, place->test);
+        return;
+    }
     if (keep(message, test.messages, test.hiddenReports)) {
         publishTest(place->suite, place->test);
     }

@@ -238,6 +238,37 @@ TEST(HtmlReporter, ASuitesFixtureTimesAreBeforeItsFirstTestAndAfterItsLast) {
         << test;
 }
 
+// Issue 38's second trial: a failed check and the failure it makes were two lines of a test's
+// details ("check failed: at target", "failure: at target"); the failure says it once.
+TEST(HtmlReporter, AFailedCheckAndItsFailureAreOneLine) {
+    TestResultCollector collector;
+    TestResult result;
+    result.addListener(&collector);
+    LambdaTest fail("fail", [] {
+        ROBOTTESTINGFRAMEWORK_TEST_CHECK(false, "at target");
+        ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("gripper stuck");
+    });
+    TestSuite suite("arm");
+    suite.addTest(&fail);
+    result.startTestRunner();
+    suite.run(result);
+    result.endTestRunner();
+    HtmlReporter html(collector, {});
+    const SuiteRecord& record = collector.suites().at(0);
+    const std::string test = html.testData(record.tests.at(0), record);
+    const auto count = [&test](const std::string& part) {
+        std::size_t n = 0;
+        for (std::size_t at = test.find(part); at != std::string::npos;
+             at = test.find(part, at + 1)) {
+            ++n;
+        }
+        return n;
+    };
+    EXPECT_EQ(count("\"text\":\"at target"), 1u) << test;
+    EXPECT_EQ(count("\"label\":\"check failed\""), 0u) << test;
+    EXPECT_EQ(count("\"text\":\"gripper stuck"), 1u) << test;
+}
+
 // write() hands the document on to its file 64 KiB at a time (the runner never holds a whole
 // report): every format's file is its document() byte for byte, pieces longer than a block
 // (a test's big output) included, and a file that cannot be written leaves nothing behind.

@@ -301,3 +301,32 @@ TEST(RunView, ASuiteThePlanDidNotNameIsAddedAsItStarts) {
     EXPECT_EQ(snapshot["suites"][1]["tests"][0]["state"], "passed");
     EXPECT_EQ(snapshot["run"]["tests"], 2);
 }
+
+// Issue 38's second trial: a failed check and the failure it makes, with the same words, were
+// two lines of the page ("check failed: ..." then "failure: ..."); they are one, the failure.
+// A failure with other words stays a line of its own.
+TEST(RunView, AFailedCheckAndItsFailureAreOneLine) {
+    RunView view(false);
+    view.startRun();
+    view.startSuite("arm", {{1, "reach"}});
+    view.startTest(1, "reach");
+    view.addMessage(1, "check failed", TestMessage("at target", "", "reach.cpp", 12),
+                    TestStatus::Passed);
+    view.addMessage(1, "failure", TestMessage("at target", "", "reach.cpp", 12),
+                    TestStatus::Failed);
+    view.addMessage(1, "check failed", TestMessage("gripper open", "", "reach.cpp", 13),
+                    TestStatus::Passed);
+    view.addMessage(1, "failure", TestMessage("gripper stuck", "", "reach.cpp", 14),
+                    TestStatus::Failed);
+    view.endTest(1);
+    view.endSuite();
+    view.endRun();
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const auto& reach = snapshot["suites"][0]["tests"][0];
+    EXPECT_EQ(reach["state"], "failed");
+    ASSERT_EQ(reach["messages"].size(), 3u) << reach.dump();
+    EXPECT_EQ(reach["messages"][0]["kind"], "failure");
+    EXPECT_EQ(reach["messages"][0]["text"], "at target");
+    EXPECT_EQ(reach["messages"][1]["kind"], "check failed");
+    EXPECT_EQ(reach["messages"][2]["text"], "gripper stuck");
+}
