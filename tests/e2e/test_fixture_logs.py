@@ -145,3 +145,35 @@ def test_two_suites_of_one_world_file_each_keep_their_own_logs(tmp_path, isolati
         for attachment in suite["attachments"]:
             seen[(suite["name"], attachment["name"])] = (tmp_path / attachment["path"]).read_text()
     assert seen == expected
+
+
+def test_two_world_files_of_one_name_each_keep_their_own_logs(tmp_path):
+    # Issue 38's second trial: two suites' folders, each with its own world.xml, both
+    # <world name="robot">, run at once (-j 2): both wrote rtf-logs/robot/*.log (the log folder
+    # is the world's name), each suite's attachment the other's lines. As for one world file
+    # started by two suites, each suite's logs go to rtf-logs/robot/<suite>/.
+    for name in ("left", "right"):
+        folder = tmp_path / name
+        folder.mkdir()
+        (folder / "world.xml").write_text(
+            '<world name="robot">\n'
+            f'  <process name="robot" command="/bin/sh -c \'echo {name} robot up; '
+            f'exec sleep 30\'">\n    <ready timeout="20s"><output>^{name} robot up$'
+            '</output></ready>\n  </process>\n</world>\n')
+        (folder / "slow.py").write_text("import time\n\n\nclass TestCase:\n    def run(self):\n"
+                                        "        time.sleep(1.5)\n")
+        (folder / "suite.xml").write_text(
+            f'<suite name="{name}">\n  <fixture type="process">world.xml</fixture>\n'
+            '  <test name="slow">slow.py</test>\n</suite>\n')
+    r = run_runner("-j", "2", "--suite", "left/suite.xml", "--suite", "right/suite.xml",
+                   "-o", "json:r.json", cwd=tmp_path, timeout=150)
+    assert r.returncode == 0, r
+    for suite in ("left", "right"):
+        assert (tmp_path / "rtf-logs" / "robot" / suite / "robot.log").read_text() == \
+            f"{suite} robot up\n"
+    seen = {}
+    for suite in validate_ctrf(tmp_path / "r.json")["results"]["extra"]["robotology.rtf"][
+            "suites"]:
+        for attachment in suite["attachments"]:
+            seen[suite["name"]] = (tmp_path / attachment["path"]).read_text()
+    assert seen == {"left": "left robot up\n", "right": "right robot up\n"}

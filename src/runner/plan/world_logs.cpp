@@ -1,5 +1,7 @@
 #include "runner/plan/world_logs.h"
 
+#include "runner/plan/run_plan.h"
+
 #include <map>
 #include <set>
 #include <string>
@@ -18,15 +20,17 @@ std::string quoted(const std::string& word) {
     return text + "'";
 }
 
-// The world file a process fixture starts: its resolved path, else as written.
+// The world a process fixture starts, by the name that makes its log folder (<logdir> is
+// rtf-logs/<name> by default): two world files of one name (world.xml in two suites' folders)
+// would write one folder as one file would.
 std::string worldOf(const FixtureSpec& fixture) {
-    return fixture.path.empty() ? fixture.plugin.str() : fixture.path.str();
+    return worldNameOf(fixture.path.empty() ? fixture.plugin.str() : fixture.path.str());
 }
 
 }  // namespace
 
 void separateWorldLogs(std::vector<SuiteSpec>& suites) {
-    std::map<std::string, std::set<std::size_t>> startedBy;  // world file -> suites
+    std::map<std::string, std::set<std::size_t>> startedBy;  // world name -> suites
     for (std::size_t s = 0; s < suites.size(); ++s) {
         for (const auto& fixture : suites[s].fixtures) {
             if (fixture.type == "process" && fixture.scope == FixtureSpec::Scope::Suite) {

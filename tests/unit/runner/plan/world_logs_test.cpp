@@ -54,3 +54,18 @@ TEST(WorldLogs, OtherFixturesAreLeftAlone) {
     EXPECT_EQ(suites[0].fixtures[0].param, "");
     EXPECT_EQ(suites[1].fixtures[0].param, "");
 }
+
+// Issue 38's second trial: two suites' folders each with its world.xml, both <world
+// name="robot"> (or both without a name: the stem), wrote rtf-logs/robot/ both; they are one
+// world by its log folder, so each suite gets its instance.
+TEST(WorldLogs, WorldFilesOfOneNameAreOneWorld) {
+    SuiteSpec left = suiteStarting("left", "world.xml");
+    left.fixtures[0].path = "/lab/left/world.xml";
+    SuiteSpec right = suiteStarting("right", "world.xml");
+    right.fixtures[0].path = "/lab/right/world.xml";
+    std::vector<SuiteSpec> suites{left, right, suiteStarting("alone", "other.xml")};
+    separateWorldLogs(suites);
+    EXPECT_EQ(suites[0].fixtures[0].param, "--instance 'left'");
+    EXPECT_EQ(suites[1].fixtures[0].param, "--instance 'right'");
+    EXPECT_EQ(suites[2].fixtures[0].param, "");
+}
