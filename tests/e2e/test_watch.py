@@ -51,6 +51,9 @@ def test_a_change_runs_again_failed_first_and_ctrl_c_leaves_nothing(tmp_path):
     try:
         assert wait_for(lambda: "waiting for a change" in text()), text()
         assert "1 passed, 1 failed" in text(), text()
+        # s.xml, t.sh and ok.sh, each once (the suite given on the command line was counted
+        # twice, "of 4 files", in the second first-hour trial).
+        assert "waiting for a change of 3 files" in text(), text()
         assert len(os.listdir(temporary)) == 1  # the last run's report, for the failed first
         (tmp_path / "broken").unlink()
         save(tmp_path / "t.sh", '#!/bin/sh\n[ ! -e broken ]\n# edited\n')
@@ -61,6 +64,7 @@ def test_a_change_runs_again_failed_first_and_ctrl_c_leaves_nothing(tmp_path):
         save(tmp_path / "s.xml", '<suite name="s"><test type="exec">ok.sh</test></suite>')
         assert wait_for(lambda: text().count("waiting for a change") == 3), text()
         assert "s.xml changed" in text() and "1 passed, 0 failed" in text().split("run 3")[1]
+        assert "waiting for a change of 2 files" in text().split("run 3")[1], text()
         os.killpg(proc.pid, signal.SIGINT)  # what Ctrl-C does: the terminal's whole group
         assert proc.wait(timeout=30) == 0, text()
     finally:

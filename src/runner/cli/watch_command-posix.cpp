@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
@@ -115,8 +116,16 @@ int watchCommand(int argc, char** argv, Options& options) {
         if (readRunInputs(options, inputs)) {
             files = watchedFiles(inputs.suites);
         }
+        // The suites of the command line too (one that does not parse is read again when it
+        // changes), once: the plan names them by their absolute path.
         for (const auto& suite : options.suites) {
-            files.push_back(suite);
+            std::error_code ignored;
+            const std::string absolute =
+                std::filesystem::absolute(suite, ignored).lexically_normal().string();
+            if (std::find(files.begin(), files.end(), absolute) == files.end() &&
+                std::find(files.begin(), files.end(), suite) == files.end()) {
+                files.push_back(suite);
+            }
         }
         watch.watch(files, error);
         std::printf("%s --watch: waiting for a change of %zu files (Ctrl-C stops)\n", programName,
