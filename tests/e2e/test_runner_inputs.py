@@ -237,3 +237,27 @@ def test_importing_one_report_twice_adds_it_once(tmp_path):
     with sqlite3.connect(tmp_path / "h.db") as db:
         assert db.execute("SELECT count(*) FROM runs").fetchone() == (1,)
         assert db.execute("SELECT count(*) FROM results").fetchone() == (1,)
+
+
+def test_a_suites_folder_passes_over_world_files_and_reports(tmp_path):
+    """Issue 38's second trial: the tutorial's folder (suite.xml beside world.xml) after a run
+    with -o junit:lab.xml: `--suites .` stopped at "./lab.xml:2: the root element is
+    <testsuites>" (and at world.xml's <world>), exit 2. World files and JUnit reports in a
+    --suites folder are passed over; a root element that is no known format is still exit 2."""
+    (tmp_path / "world.xml").write_text(
+        '<world name="lab">\n  <process name="p" command="/bin/sh -c \'echo up; exec sleep 30\'">'
+        '\n    <ready timeout="20s"><output>^up$</output></ready>\n  </process>\n</world>\n')
+    (tmp_path / "ok.sh").write_text("#!/bin/sh\nexit 0\n")
+    (tmp_path / "ok.sh").chmod(0o755)
+    (tmp_path / "suite.xml").write_text(
+        '<suite name="lab">\n  <fixture type="process">world.xml</fixture>\n'
+        '  <test>ok.sh</test>\n</suite>\n')
+    for round in (1, 2):  # the second run finds the first one's report in the folder
+        r = run_runner("--suites", ".", "-o", "junit:lab.xml", cwd=tmp_path)
+        assert r.returncode == 0, (round, r)
+        assert "1 passed, 0 failed" in r.stdout, r
+    r = run_runner("--suites", ".", "--list", cwd=tmp_path)
+    assert r.returncode == 0 and "1 test in 1 suite" in r.stdout, r
+    (tmp_path / "typo.xml").write_text("<suiet name='x'/>\n")
+    r = run_runner("--suites", ".", "--list", cwd=tmp_path)
+    assert r.returncode == 2 and "typo.xml:1" in r.stderr, r

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 
 #include "languages/test_loader.h"
@@ -26,6 +27,47 @@ bool hidden(const fs::path& path) {
 
 bool isSuiteFile(const std::string& path) {
     return fs::path(path).extension() == ".xml";
+}
+
+// The name of the root element of the XML file at `path`, read from its first 64 KiB past the
+// declaration, comments, processing instructions and a DOCTYPE; empty when none is found.
+std::string rootElementOf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string text(64 * 1024, '\0');
+    in.read(&text[0], static_cast<std::streamsize>(text.size()));
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    std::size_t at = text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+    while (at < text.size()) {
+        at = text.find('<', at);
+        if (at == std::string::npos || at + 1 >= text.size()) {
+            return {};
+        }
+        const char next = text[at + 1];
+        if (next == '?') {
+            at = text.find("?>", at);
+        } else if (text.compare(at, 4, "<!--") == 0) {
+            at = text.find("-->", at);
+        } else if (next == '!') {
+            at = text.find('>', at);  // a DOCTYPE (without an internal subset)
+        } else {
+            const std::size_t end = text.find_first_of(" \t\r\n/>", at + 1);
+            return text.substr(at + 1, end == std::string::npos ? end : end - at - 1);
+        }
+        if (at == std::string::npos) {
+            return {};
+        }
+        ++at;
+    }
+    return {};
+}
+
+// An XML file of a --suites folder that is not a suite but another file this runner reads or
+// writes beside suites: a world file of the process fixture, a JUnit report (-o junit:...).
+// Such files are passed over; any other root element is read as a suite (and is an error
+// naming the file when it is not one).
+bool isOtherRunnerFile(const std::string& path) {
+    const std::string root = rootElementOf(path);
+    return root == "world" || root == "testsuites" || root == "testsuite";
 }
 
 bool isTestFile(const std::string& path) {
@@ -121,6 +163,7 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
     std::vector<std::string> suiteFiles = options.suites;
     for (const auto& folder : options.suiteDirs) {
         auto files = listFolder(folder, options.recursive, isSuiteFile);
+        files.erase(std::remove_if(files.begin(), files.end(), isOtherRunnerFile), files.end());
         if (files.empty()) {
             warnings.push_back(folder + ": warning: no suite files (*.xml) in this folder");
         }

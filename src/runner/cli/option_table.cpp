@@ -91,7 +91,9 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
         {"-s,--suite", "FILE", Takes::Repeatable, inputs,
          "Run the suite in the XML FILE (repeatable)", &o.suites, {}, true},
         {"--suites", "DIR", Takes::Repeatable, inputs,
-         "Run every suite (*.xml) in the folder DIR", &o.suiteDirs, {}, true},
+         "Run every suite (*.xml) in the folder DIR; world files and JUnit reports there are "
+         "passed over",
+         &o.suiteDirs, {}, true},
         {"-r,--recursive", "", Takes::Nothing, inputs,
          "--tests and --suites look in sub-folders too", &o.recursive, {}, true},
         {"-p,--param", "TEXT", Takes::One, inputs,

@@ -217,3 +217,30 @@ TEST_F(TestSources, TheSuitesSeeTheCommandLinesVariables) {
     ASSERT_EQ(suites[0].tests.size(), 1u);
     EXPECT_EQ(suites[0].tests[0].param, "--robot icubSim");
 }
+
+// Issue 38's second trial: the tutorial's folder holds suite.xml beside its world.xml, and a
+// run with -o junit:lab.xml leaves lab.xml there; `--suites .` then stopped with exit 2 at
+// "the root element is <world>" (or <testsuites>). A --suites folder passes over XML files
+// whose root says they are another format this runner reads or writes; any other root is
+// still an error, and a file named with --suite is read whatever it holds.
+TEST_F(TestSources, ASuitesFolderPassesOverWorldFilesAndJUnitReports) {
+    suiteFile("suites/suite.xml", "lab");
+    write("suites/world.xml",
+          "<?xml version=\"1.0\"?>\n<!-- a world -->\n<world name=\"lab\">\n"
+          "  <process name=\"p\" command=\"true\"/>\n</world>\n");
+    write("suites/lab.xml",
+          "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites tests=\"1\">"
+          "<testsuite name=\"lab\"/></testsuites>\n");
+    write("suites/one.xml", "<testsuite name=\"x\" tests=\"0\"/>\n");
+    Options options;
+    options.suiteDirs = {folder("suites")};
+    std::vector<std::string> warnings;
+    EXPECT_EQ(namesOf(readSources(options, warnings)), (std::vector<std::string>{"lab"}));
+    EXPECT_TRUE(warnings.empty());
+
+    write("suites/typo.xml", "<suiet name=\"x\"/>\n");
+    EXPECT_THROW(readSources(options, warnings), SuiteFileError);
+    Options named;
+    named.suites = {(dir_ / "suites" / "world.xml").string()};
+    EXPECT_THROW(readSources(named, warnings), SuiteFileError);
+}
