@@ -350,8 +350,9 @@
     found.sort((a, b) => b[0].duration - a[0].duration);
     slowest.textContent = "";
     for (const [t, suite] of found.slice(0, 10)) {
-      slowest.appendChild(el("li", "", secs(t.duration) + "  " + t.name +
-          (suite.name ? "  (" + suite.name + ")" : "")));
+      // The id, as --filter takes it and the console prints it.
+      slowest.appendChild(el("li", "", secs(t.duration) + "  " +
+          (t.fullId || t.name + (suite.name ? "  (" + suite.name + ")" : ""))));
     }
   };
   filter.addEventListener("change", render);
