@@ -19,9 +19,9 @@ namespace isolation {
 // Script tests (Python, Lua, Ruby) are not forked from the server itself: the first request of
 // a language starts a language server, a child that pre-starts that runtime (the interpreter
 // initialised, its `robottestingframework` module ready, no user code loaded) and then serves
-// that language's requests exactly as the server does, each worker a fork of it. So a test
-// still gets a fresh module state and a process of its own, without paying for the start of
-// the interpreter. The language server is refused (and its tests take the plain path, the
+// that language's requests as the server does, each worker a fork of it (two spares forked
+// ahead, each rehearsing a test: kLanguageSpares). So a test still gets a fresh module state
+// and a process of its own, without paying for the start of the interpreter. The language server is refused (and its tests take the plain path, the
 // worker starting the runtime) when the runtime cannot be pre-started or leaves a thread running
 // besides the one that forks (a fork keeps only the calling thread; Ruby's VM thread runs the
 // language server's loop itself, see LanguageModule::host), or when RTF_PRESTART=0. A request
