@@ -301,6 +301,7 @@ def python_figures(table, runner, folder, files, forked_python, forked_why, roun
             table.line(floor_figure, fmt_time(floor.seconds),
                        f"pytest, {files} files {fmt_time(ref.seconds)}",
                        floor.seconds / ref.seconds, "(stated: python3 forks, runs, waits)", True)
+            table.cpu(floor_figure, floor, ref, "pytest")
     figure = f"{files} Python files, isolated vs --forked"
     if forked_python is None:
         (table.skipped if quick else table.failed)(figure, forked_why)
