@@ -162,6 +162,11 @@ void prepareChild(pid_t server) {
 // one more for when that test ends before the next fork does.
 constexpr std::size_t kAnnouncedSpares = 2;
 
+// Spares a language server keeps: one rehearsing (waitAsSpare) while the other waits for the
+// next test, so that the fork and the rehearsal of the one after it run beside that test
+// rather than between two tests.
+constexpr std::size_t kLanguageSpares = 2;
+
 struct Spare {
     pid_t pid = -1;
     FileDescriptor link;
@@ -350,7 +355,7 @@ int serve(int control, const std::string& language, bool verbose) {
     std::string packet;
     std::vector<FileDescriptor> fds;
     std::vector<bool> ready;
-    Spare spare;
+    std::deque<Spare> spares;  // forked here, oldest first (ready soonest)
     std::map<std::string, LanguageServer> languageServers;
     bool prestart = language.empty() && prestartWanted();
     // The fork server (not a language server) hands spares to the runner ahead of time: a test's
@@ -364,9 +369,14 @@ int serve(int control, const std::string& language, bool verbose) {
     auto handToSpare = [&](const std::string& request, std::vector<FileDescriptor>& passed) {
         pid_t pid = -1;
         for (int attempt = 0; attempt < 2 && pid < 0; ++attempt) {
-            if (spare.pid < 0 && !makeSpare(spare, self, language)) {
-                break;
+            if (spares.empty()) {
+                Spare made;
+                if (!makeSpare(made, self, language)) {
+                    break;
+                }
+                spares.push_back(std::move(made));
             }
+            Spare& spare = spares.front();
             std::vector<int> handed{passed[0].get(), passed[1].get()};
             for (std::size_t i = 3; i < passed.size(); ++i) {
                 handed.push_back(passed[i].get());  // a private network's
@@ -376,8 +386,7 @@ int serve(int control, const std::string& language, bool verbose) {
             } else {
                 ::kill(spare.pid, SIGKILL);  // a broken spare; reaped as an orphan
             }
-            spare.link.reset();
-            spare.pid = -1;
+            spares.pop_front();
         }
         if (pid < 0) {
             sendStatus(passed[2].get(), WireKind::Exited, -1);
@@ -415,9 +424,13 @@ int serve(int control, const std::string& language, bool verbose) {
             endedUnclaimed.erase(next.pid);  // an earlier process's, with the same pid
             announced.insert(next.pid);
         }
-        if (!announce && spare.pid < 0) {
+        while (!announce && spares.size() < kLanguageSpares) {
             ::sched_yield();
-            makeSpare(spare, self, language);
+            Spare made;
+            if (!makeSpare(made, self, language)) {
+                break;
+            }
+            spares.push_back(std::move(made));
         }
         std::vector<int> watched{control, signals.fd()};
         std::vector<LanguageServer*> servers;
@@ -465,10 +478,10 @@ int serve(int control, const std::string& language, bool verbose) {
                     platform::signalProcessGroup(pid, SIGKILL);
                     endedUnclaimed[pid] = status;
                 }
-                if (pid == spare.pid) {
-                    spare.pid = -1;  // the spare died waiting (killed from outside)
-                    spare.link.reset();
-                }
+                // A spare that died waiting (killed from outside).
+                spares.erase(std::remove_if(spares.begin(), spares.end(),
+                                            [pid](const Spare& s) { return s.pid == pid; }),
+                             spares.end());
                 for (auto& entry : languageServers) {
                     if (entry.second.pid == pid) {
                         lost(entry.second);
@@ -535,7 +548,7 @@ int serve(int control, const std::string& language, bool verbose) {
             handToSpare(packet, fds);
         }
     }
-    spare.link.reset();
+    spares.clear();
     killEverything();
     return 0;
 }

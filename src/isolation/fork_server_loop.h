@@ -19,15 +19,15 @@ namespace isolation {
 // Script tests (Python, Lua, Ruby) are not forked from the server itself: the first request of
 // a language starts a language server, a child that pre-starts that runtime (the interpreter
 // initialised, its `robottestingframework` module ready, no user code loaded) and then serves
-// that language's requests exactly as the server does, each worker a fork of it. So a test
-// still gets a fresh module state and a process of its own, without paying for the start of
-// the interpreter. The language server is refused (and its tests take the plain path, the
-// worker starting the runtime) when the runtime cannot be pre-started or leaves a thread running
-// besides the one that forks (a fork keeps only the calling thread; Ruby's VM thread runs the
-// language server's loop itself, see LanguageModule::host), or when RTF_PRESTART=0. A request
-// stays the server's until its language server says it took it, so one sent as that process
-// dies takes the plain path. With `verbose`, which languages got one (or why not) is said on
-// stderr.
+// that language's requests as the server does, each worker a fork of it (two spares forked
+// ahead, each rehearsing a test: kLanguageSpares). So a test still gets a fresh module state
+// and a process of its own, without paying for the start of the interpreter. The language
+// server is refused (and its tests take the plain path, the worker starting the runtime) when
+// the runtime cannot be pre-started or leaves a thread running besides the one that forks (a
+// fork keeps only the calling thread; Ruby's VM thread runs the language server's loop itself,
+// see LanguageModule::host), or when RTF_PRESTART=0. A request stays the server's until its
+// language server says it took it, so one sent as that process dies takes the plain path. With
+// `verbose`, which languages got one (or why not) is said on stderr.
 //
 // Serves requests read from `control` (a packet socket) until the runner closes it or dies.
 // Returns the process exit code.

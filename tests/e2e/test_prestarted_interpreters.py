@@ -46,6 +46,9 @@ PYTHON_LEAKS = {
     "a_test.py": """import builtins
 import json
 import os
+import sys
+import threading
+import types
 import robottestingframework
 import state
 
@@ -59,12 +62,18 @@ class TestCase:
         builtins.leaked = True
         robottestingframework.leaked = True
         robottestingframework.testCheck = lambda *args: None
+        sys.modules["rtf_leak_probe"] = types.ModuleType("rtf_leak_probe")
+        sys.path.append("/rtf-leak-probe")
+        os.environ["RTF_LEAK_PROBE"] = "set by a_test"
+        threading.Thread(target=threading.Event().wait, daemon=True).start()
         with open(os.environ["RTF_PIDS"], "a") as f:
             f.write("%d %d\\n" % (os.getpid(), os.getppid()))
 """,
     "b_test.py": """import builtins
 import json
 import os
+import sys
+import threading
 import state
 
 
@@ -78,6 +87,10 @@ class TestCase:
             ("a standard module's attribute", hasattr(json, "leaked")),
             ("a builtin", hasattr(builtins, "leaked")),
             ("robottestingframework's attribute", hasattr(robottestingframework, "leaked")),
+            ("a sys.modules entry", "rtf_leak_probe" in sys.modules),
+            ("a sys.path entry", "/rtf-leak-probe" in sys.path),
+            ("an environment variable", "RTF_LEAK_PROBE" in os.environ),
+            ("a thread", threading.active_count() != 1),
         ] if leaked]
         if seen:
             raise RuntimeError("leaked from the previous test: " + ", ".join(seen))
@@ -103,6 +116,43 @@ def test_python_tests_run_in_forks_of_one_prestarted_interpreter_and_share_nothi
                                            for line in pids.read_text().splitlines()]
     assert first != second
     assert parent1 == parent2 == server, "both tests are forks of the pre-started interpreter"
+
+
+# The pre-started interpreter keeps two spares (forks waiting for a test) besides the test that
+# runs, and has not imported threading (whose hook would run in every fork): a test that imports
+# it, after the fork, finds it fresh.
+SPARES_PROBE = """import os
+import sys
+import time
+import robottestingframework
+
+parent = os.getppid()
+threading_before = "threading" in sys.modules
+
+
+def children():
+    with open("/proc/%d/task/%d/children" % (parent, parent)) as f:
+        return f.read().split()
+
+
+class TestCase:
+    def run(self):
+        seen = children()
+        for _ in range(500):  # the spares are forked as this test starts
+            if len(seen) >= 3:
+                break
+            time.sleep(0.01)
+            seen = children()
+        robottestingframework.testCheck(len(seen) == 3, "the test and two spares: %s" % seen)
+        robottestingframework.testCheck(not threading_before, "threading not imported before")
+"""
+
+
+def test_the_prestarted_interpreter_keeps_two_spares_and_imports_no_threading(tmp_path):
+    r, junit = run_suite(tmp_path, {"probe.py": SPARES_PROBE})
+    assert r.returncode == 0, r
+    assert junit_state(junit["probe.py"]) == "passed", r
+    assert [language for language, _ in PRESTARTED.findall(r.stderr)] == ["python"], r
 
 
 def test_rtf_prestart_0_runs_each_python_test_in_its_own_interpreter(tmp_path):

@@ -220,6 +220,13 @@ class Scope:
 
 py::object g_scopeType;  // Scope, above
 
+// Set in a spare of a pre-started interpreter once it rehearsed (rehearseInFork): the process
+// runs one script, the test's or the fixture's, and ends. Its Scope is then entered at the first
+// call and left as it is: there is no other script to hide it from, and leaving and entering
+// again around each call (sys.modules copied, compared and restored each time) is work, and
+// pages copied, for nothing.
+bool g_oneScript = false;
+
 // A script's print() goes to sys.stdout, whose buffer the interpreter empties only at exit, which
 // never comes (the interpreter is never finalized; a worker ends with _exit): flushed after each
 // call into a script, so what it printed reaches the capture before the test ends, whatever
@@ -412,20 +419,34 @@ os._exit = _guard()
 )PY";
 
 // Every thread started while a test's call runs, or by a thread of a test, carries that test
-// (endedOwner reads it).
+// (endedOwner reads it). Stamped where threading.Thread.start starts its thread, the function of
+// _thread it took when it was imported: wrapped here, before any test imports threading, so that
+// the pre-started interpreter does not import threading itself. threading registers a hook that
+// runs in every fork (its _after_fork: about 0.4 ms of each Python test's process, most of it
+// pages copied); a test that uses threads imports it, after the fork. When threading is imported
+// already (a sitecustomize did), its own reference is wrapped. Python 3.13 starts threads with
+// start_joinable_thread: both names are wrapped where they exist.
 const char* const kThreadOwnerSource = R"PY(
-import threading
+import sys
+import _thread
 import robottestingframework as _rtf
-def _stamped(start=threading.Thread.start, current=threading.current_thread):
-    def start_stamped(self, *args, **kwargs):
-        owner = getattr(current(), "_rtf_test", None)
-        if owner is None:
-            owner = _rtf._running_test()
-        if owner is not None:
-            self._rtf_test = owner
-        return start(self, *args, **kwargs)
+def _stamping(start, modules=sys.modules):
+    def start_stamped(function, *args, **kwargs):
+        threading = modules.get("threading")
+        thread = getattr(function, "__self__", None)
+        if threading is not None and isinstance(thread, threading.Thread):
+            owner = getattr(threading.current_thread(), "_rtf_test", None)
+            if owner is None:
+                owner = _rtf._running_test()
+            if owner is not None:
+                thread._rtf_test = owner
+        return start(function, *args, **kwargs)
     return start_stamped
-threading.Thread.start = _stamped()
+_threading = sys.modules.get("threading")
+for _module, _prefix in ((_threading, "_"), (_thread, "")) if _threading else ((_thread, ""),):
+    for _name in ("start_new_thread", "start_joinable_thread"):
+        if hasattr(_module, _prefix + _name):
+            setattr(_module, _prefix + _name, _stamping(getattr(_module, _prefix + _name)))
 )PY";
 
 void stampThreads() {
@@ -578,6 +599,9 @@ pid_t forkInterpreter() {
 }
 
 void rehearseInFork() {
+    struct Dedicated {
+        ~Dedicated() { g_oneScript = true; }  // after the rehearsal's own script left its Scope
+    } dedicated;
     py::gil_scoped_acquire gil;
     try {
         rehearse();
@@ -749,15 +773,21 @@ ScriptModule::~ScriptModule() {
 }
 
 ScriptModule::Call::Call(ScriptModule& script) : script_(script) {
-    script_.scope_.attr("enter")();
+    if (!g_oneScript || !script_.entered_) {
+        script_.scope_.attr("enter")();
+        script_.entered_ = true;
+    }
 }
 
 ScriptModule::Call::~Call() {
     // Never throws: a script may have messed sys.path or sys.modules up.
-    try {
-        script_.scope_.attr("leave")();
-    } catch (py::error_already_set&) {
-        PyErr_Clear();
+    if (!g_oneScript) {
+        try {
+            script_.scope_.attr("leave")();
+        } catch (py::error_already_set&) {
+            PyErr_Clear();
+        }
+        script_.entered_ = false;
     }
     flushStandardStreams();
 }

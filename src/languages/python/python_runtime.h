@@ -29,7 +29,8 @@ bool prestartInterpreter(std::string& error);
 // fork() with the interpreter's own hooks (os.register_at_fork, its locks, threading's state),
 // as os.fork() does; the GIL is released again on both sides.
 pid_t forkInterpreter();
-// In a fork waiting for its test: rehearses a test (script_module_interface.h).
+// In a fork waiting for its test: rehearses a test (script_module_interface.h). From then on the
+// process runs one script (see ScriptModule).
 void rehearseInFork();
 
 // Wakes the script running on `thread` (a PyThread ident) out of a blocking call (time.sleep,
@@ -60,7 +61,8 @@ private:
 // A script file loaded as a fresh module of its own (unique name). Its folder is on sys.path,
 // its module and the neighbour modules it imported from that folder are in sys.modules only
 // while one of its calls runs (a Call): many scripts can be loaded at once without seeing each
-// other's neighbours, and nothing of them stays behind.
+// other's neighbours, and nothing of them stays behind. In a fork of a pre-started interpreter,
+// which runs one script and ends, they stay from its first call on (rehearseInFork).
 class ScriptModule {
 public:
     // nullptr and `error` set (a syntax error as Python shows it, or the traceback of the
@@ -91,6 +93,7 @@ private:
 
     py::object module_;
     py::object scope_;  // its folder and neighbour modules, see kScopeSource
+    bool entered_ = false;
 };
 
 // Forgets any assertion raised so far (at the start of a call into a script).

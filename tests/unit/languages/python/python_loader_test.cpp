@@ -268,6 +268,37 @@ class TestCase:
     EXPECT_EQ(runScript("python", first).status, TestStatus::Passed);
 }
 
+// A thread a test starts carries that test (its id and name), stamped where threading starts it:
+// through _thread's start function, wrapped before any test imports threading, and by a thread
+// of a thread too.
+TEST(PythonLoader, AThreadATestStartsCarriesTheTest) {
+    std::string path = writeScript(scriptFolder(), "threads.py", R"(import threading
+import robottestingframework
+
+class TestCase:
+    def run(self):
+        seen = []
+        def inner():
+            seen.append(getattr(threading.current_thread(), "_rtf_test", None))
+        def outer():
+            seen.append(getattr(threading.current_thread(), "_rtf_test", None))
+            thread = threading.Thread(target=inner)
+            thread.start()
+            thread.join()
+        thread = threading.Thread(target=outer)
+        thread.start()
+        thread.join()
+        robottestingframework.testCheck(len(seen) == 2 and seen[0] is not None, "stamped")
+        robottestingframework.testCheck(seen[0] == seen[1], "its thread's thread too")
+        robottestingframework.testCheck(str(seen[0][1]).endswith("threads.py"), str(seen))
+)");
+    ScriptRun run = runScript("python", path);
+    ASSERT_TRUE(run.loaded) << run.loadError;
+    const ResultEvent* failure = run.find(Kind::Failure);
+    EXPECT_EQ(failure, nullptr) << failure->message.getMessage();
+    EXPECT_EQ(run.status, TestStatus::Passed);
+}
+
 TEST(PythonLoader, ExceptionInTearDownIsAnError) {
     std::string path = writeScript(scriptFolder(), "teardown.py", R"(class TestCase:
     def run(self):
