@@ -74,7 +74,8 @@ TestMessage repetitionMessage(unsigned int index, unsigned int count);
 
 // The tables of event kinds, one row per kind, in TestStatus.cpp: adding a kind is adding its
 // rows there; the listeners, relays and the wire format need nothing else. What sends an event
-// makes it by name (src/core/events.h, beside the table): no other file spells a kind.
+// makes it by name (src/core/events.h, beside the table), and the relays ask the columns below:
+// in src/, only the table and RTF 2.x's adapter (TestListener::onEvent) spell a kind.
 
 // "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats, and
 // the word the console, TAP and live page put before a message).
