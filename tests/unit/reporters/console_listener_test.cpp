@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -16,11 +17,11 @@ using namespace rtf_test;
 
 namespace {
 
-// Runs `tests` in a suite through a console listener writing to a file; returns the text.
-// `collector`: the run's collector the console reads (as the runner's does), added before it;
-// nullptr: the console keeps records of its own (as RTF 2.x's users make it).
-std::string consoleText(
-    std::vector<Test*> tests,
+// Runs `suites` through a console listener writing to a file; returns the text. `collector`:
+// the run's collector the console reads (as the runner's does), added before it; nullptr: the
+// console keeps records of its own (as RTF 2.x's users make it).
+std::string consoleTextOf(
+    const std::vector<TestSuite*>& suites,
     std::function<void(ConsoleListener&)> configure = [](ConsoleListener&) {}, bool verbose = false,
     TestResultCollector* collector = nullptr) {
     const std::string path = (scratchDir() / "console.txt").string();
@@ -29,12 +30,10 @@ std::string consoleText(
     ConsoleListener console(verbose);
     console.setStream(file);
     configure(console);
-    TestSuite suite("arm tests");
-    for (Test* test : tests) {
-        suite.addTest(test);
-    }
     TestRunner runner;
-    runner.addTest(&suite);
+    for (TestSuite* suite : suites) {
+        runner.addTest(suite);
+    }
     TestResult result;
     if (collector != nullptr) {
         result.addListener(collector);
@@ -47,6 +46,18 @@ std::string consoleText(
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+// Runs `tests` in a suite "arm tests" (consoleTextOf).
+std::string consoleText(
+    std::vector<Test*> tests,
+    std::function<void(ConsoleListener&)> configure = [](ConsoleListener&) {}, bool verbose = false,
+    TestResultCollector* collector = nullptr) {
+    TestSuite suite("arm tests");
+    for (Test* test : tests) {
+        suite.addTest(test);
+    }
+    return consoleTextOf({&suite}, std::move(configure), verbose, collector);
 }
 
 std::string lastLine(const std::string& text) {
@@ -245,29 +256,14 @@ TEST(ConsoleListener, ReadingTheRunsCollectorPrintsWhatItsOwnRecordsDo) {
 // A suite passes or fails by its own tests, whichever records the console reads: the first
 // suite's failure does not make the second one's line say FAILED.
 TEST(ConsoleListener, ReadingTheRunsCollectorEachSuiteSaysItsOwnState) {
-    const std::string path = (scratchDir() / "console-suites.txt").string();
-    std::FILE* file = std::fopen(path.c_str(), "w");
-    ASSERT_NE(file, nullptr);
-    TestResultCollector collector;
-    ConsoleListener console;
-    console.setStream(file);
-    console.readRecordsOf(&collector);
-    TestResult result;
-    result.addListener(&collector);
-    result.addListener(&console);
     LambdaTest failing("a", [] { ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("no"); }), passing("b");
     TestSuite first("first"), second("second");
     first.addTest(&failing);
     second.addTest(&passing);
-    TestRunner runner;
-    runner.addTest(&first);
-    runner.addTest(&second);
-    runner.run(result);
-    std::fclose(file);
-    std::ifstream in(path);
-    std::stringstream text;
-    text << in.rdbuf();
-    EXPECT_TRUE(has(text.str(), "  suite FAILED  first")) << text.str();
-    EXPECT_TRUE(has(text.str(), "  suite passed  second")) << text.str();
-    EXPECT_EQ(lastLine(text.str()), "1 passed, 1 failed") << text.str();
+    TestResultCollector collector;
+    const std::string text = consoleTextOf(
+        {&first, &second}, [](ConsoleListener&) {}, false, &collector);
+    EXPECT_TRUE(has(text, "  suite FAILED  first")) << text;
+    EXPECT_TRUE(has(text, "  suite passed  second")) << text;
+    EXPECT_EQ(lastLine(text), "1 passed, 1 failed") << text;
 }
