@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResultCollector.h>
@@ -20,8 +21,13 @@ public:
     // Beyond RTF 2.x: show every check (the runner's --detail).
     void showChecks(bool show) {
         showChecks_ = show;
-        record_.setKeepChecks(show);  // checks are printed at the end of a test only then
+        own_.setKeepChecks(show);  // checks are printed at the end of a test only then
     }
+    // Beyond RTF 2.x: reads the run's records from `collector` instead of keeping records of
+    // its own (nullptr, the default: its own). `collector` must hear every event before this
+    // listener (added first to the same TestResult), keep checks when they are shown
+    // (showChecks), and outlive the run: the runner's console reads the run's collector.
+    void readRecordsOf(const TestResultCollector* collector) { shared_ = collector; }
     // Beyond RTF 2.x: where to print (stdout by default), and whether to use colours.
     void setStream(std::FILE* stream);
     void setColors(bool colors) { colors_ = colors; }
@@ -42,10 +48,10 @@ public:
     void retryTest(const Test* test, TestMessage msg) override;
     void addOutput(const Test* test, const std::string& text) override;
     void renameTest(const Test* test, const std::string& name) override;
-    // Reads the record: a message or a problem (the table's columns) is said and recorded; the
-    // frames, output and retries go to the handlers above. Its own record times each event
-    // when it happened (as the run's collector does): a test's time on the console is the
-    // reports' time.
+    // Reads the record: a message or a problem (the table's columns) is said (and recorded, in
+    // its own records); the frames, output and retries go to the handlers above. Its own
+    // records time each event when it happened (as the run's collector does): a test's time on
+    // the console is the reports' time.
     void onEvent(const RunEvent& event) override;
 
 private:
@@ -57,6 +63,8 @@ private:
     bool printNow(const Test* test) const;
     // Writes `text` and its newline in one call (flushed on a terminal).
     void line(std::string text);
+    // The records it reads: the run's collector (readRecordsOf), else its own.
+    const TestResultCollector& records() const { return shared_ != nullptr ? *shared_ : own_; }
 
     std::FILE* stream_;
     bool tty_ = false;
@@ -67,8 +75,13 @@ private:
     bool showSummary_ = true;
     bool colors_ = false;
     unsigned int retries_ = 0;
-    // Enough of the current test to print its line at the end, and counts for the summary.
-    TestResultCollector record_;
+    // Without the run's collector: enough of the current test to print its line at the end, and
+    // counts for the summary.
+    TestResultCollector own_;
+    const TestResultCollector* shared_ = nullptr;
+    // For each open suite, how many suites had failed when it started (its inner suites'
+    // failures added): it failed when the count grew by its end.
+    std::vector<std::size_t> failedSuitesAt_;
 };
 
 }  // namespace robottestingframework

@@ -73,7 +73,9 @@ std::string repetitionId(std::uint64_t testId, unsigned int index);
 TestMessage repetitionMessage(unsigned int index, unsigned int count);
 
 // The tables of event kinds, one row per kind, in TestStatus.cpp: adding a kind is adding its
-// rows there; the listeners, relays and the wire format need nothing else.
+// rows there; the listeners, relays and the wire format need nothing else. What sends an event
+// makes it by name (src/core/events.h, beside the table), and the relays ask the columns below:
+// in src/, only the table and RTF 2.x's adapter (TestListener::onEvent) spell a kind.
 
 // "start-runner", "report", "check", ... (stable names, used by the JSON and wire formats, and
 // the word the console, TAP and live page put before a message).
@@ -83,6 +85,16 @@ const char* toString(ResultEvent::Kind kind);
 // something about a test. A relay that frames a test itself (a worker's events about the
 // runner's stand-in) forwards only the others.
 bool isFrame(ResultEvent::Kind kind);
+// Of the frames: the start and the end of a test.
+bool startsTest(ResultEvent::Kind kind);
+bool endsTest(ResultEvent::Kind kind);
+// The start of a repetition of its test (`repetition` of `repetitions`): inside its test, not a
+// frame (relays forward it).
+bool startsRepetition(ResultEvent::Kind kind);
+// Its message's text is what the test printed (kept as the test's output, not as a message).
+bool isOutput(ResultEvent::Kind kind);
+// Its message's text is the test's new name.
+bool renamesTest(ResultEvent::Kind kind);
 
 // The state an event gives the test it is about (a failure: Failed, a crash: Crashed, ...);
 // Passed for the events that leave the state as it is. A test's state is the highest one its

@@ -259,13 +259,12 @@ private:
     static constexpr std::size_t none = static_cast<std::size_t>(-1);
 
     double now() const;
-    // Keeps one event of `test` where it belongs (its record, else the open suite's), copying
-    // only what it keeps: a passed check it does not keep is dropped unseen. `measurement` and
-    // `attachment`: what the event carries, if anything. A test's measurement goes to its
-    // record as a MeasurementRecord (the event log and a suite keep the event).
-    void record(ResultEvent::Kind kind, const Test* test, TestMessage&& msg, bool passed = true,
-                const Measurement* measurement = nullptr,
-                std::shared_ptr<const Attachment> attachment = nullptr);
+    // Keeps `made` (made by name, src/core/events.h), about `test`, where it belongs (its record,
+    // else the open suite's), moving only what it keeps: a passed check it does not keep is
+    // dropped unseen. `measurement`: what a measurement carries (the event's own is not read);
+    // a test's goes to its record as a MeasurementRecord (the event log and a suite keep the
+    // event).
+    void record(const Test* test, ResultEvent&& made, const Measurement* measurement = nullptr);
     OpenTest* findOpen(const Test* test);
     SuiteRecord& currentSuite();
     // Cuts a test's output to its tail once the run's output budget is spent.

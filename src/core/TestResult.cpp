@@ -6,6 +6,8 @@
 #include <string>
 #include <utility>
 
+#include "core/events.h"
+
 namespace robottestingframework {
 
 namespace {
@@ -56,111 +58,98 @@ void TestResult::publish(const RunEvent& event) {
 
 namespace {
 
-RunEvent eventOf(ResultEvent::Kind kind, const Test* test, TestMessage msg = TestMessage()) {
-    RunEvent event;
-    event.data.kind = kind;
-    event.data.message = std::move(msg);
-    event.test = test;
-    return event;
+RunEvent eventOf(ResultEvent data, const Test* test) {
+    return RunEvent{std::move(data), test};
 }
 
 }  // namespace
 
-using Kind = ResultEvent::Kind;
-
 void TestResult::addReport(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Report, test, bounded(std::move(msg))));
+    publish(eventOf(events::report(bounded(std::move(msg))), test));
 }
 
 void TestResult::addError(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Error, test, bounded(std::move(msg))));
+    publish(eventOf(events::error(bounded(std::move(msg))), test));
 }
 
 void TestResult::addFailure(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Failure, test, bounded(std::move(msg))));
+    publish(eventOf(events::failure(bounded(std::move(msg))), test));
 }
 
 void TestResult::startTest(const Test* test) {
-    publish(eventOf(Kind::StartTest, test));
+    publish(eventOf(events::startTest(), test));
 }
 
 void TestResult::endTest(const Test* test) {
-    publish(eventOf(Kind::EndTest, test));
+    publish(eventOf(events::endTest(), test));
 }
 
 void TestResult::startTestSuite(const TestSuite* suite) {
-    RunEvent event = eventOf(Kind::StartSuite, suite);
+    RunEvent event = eventOf(events::startSuite(), suite);
     event.suite = suite;
     publish(event);
 }
 
 void TestResult::endTestSuite(const TestSuite* suite) {
-    RunEvent event = eventOf(Kind::EndSuite, suite);
+    RunEvent event = eventOf(events::endSuite(), suite);
     event.suite = suite;
     publish(event);
 }
 
 void TestResult::startTestRunner() {
-    publish(eventOf(Kind::StartRunner, nullptr));
+    publish(eventOf(events::startRunner(), nullptr));
 }
 
 void TestResult::endTestRunner() {
-    publish(eventOf(Kind::EndRunner, nullptr));
+    publish(eventOf(events::endRunner(), nullptr));
 }
 
 void TestResult::addCheck(const Test* test, TestMessage msg, bool passed) {
-    RunEvent event = eventOf(Kind::Check, test, bounded(std::move(msg)));
-    event.data.passed = passed;
-    publish(event);
+    publish(eventOf(events::check(bounded(std::move(msg)), passed), test));
 }
 
 void TestResult::addSkipped(const Test* test, TestMessage reason) {
-    publish(eventOf(Kind::Skipped, test, bounded(std::move(reason))));
+    publish(eventOf(events::skipped(bounded(std::move(reason))), test));
 }
 
 void TestResult::addCrash(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Crash, test, bounded(std::move(msg))));
+    publish(eventOf(events::crash(bounded(std::move(msg))), test));
 }
 
 void TestResult::addTimeout(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Timeout, test, bounded(std::move(msg))));
+    publish(eventOf(events::timeout(bounded(std::move(msg))), test));
 }
 
 void TestResult::retryTest(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Retry, test, bounded(std::move(msg))));
+    publish(eventOf(events::retry(bounded(std::move(msg))), test));
 }
 
 void TestResult::startRepetition(const Test* test, unsigned int index, unsigned int count) {
-    RunEvent event = eventOf(Kind::Repetition, test);
-    event.data.repetition = index;
-    event.data.repetitions = count;
-    publish(event);
+    publish(eventOf(events::repetition(index, count), test));
 }
 
 void TestResult::addMeasurement(const Test* test, const Measurement& measurement, bool passed) {
-    RunEvent event =
-        eventOf(Kind::Measurement, test, TestMessage(describeMeasurement(measurement)));
-    event.data.passed = passed;
-    event.data.measurement = std::make_shared<const Measurement>(measurement);
-    publish(event);
+    publish(eventOf(events::measurement(std::make_shared<const Measurement>(measurement), passed,
+                                        TestMessage(describeMeasurement(measurement))),
+                    test));
 }
 
 void TestResult::addAttachment(const Test* test, const Attachment& attachment) {
-    RunEvent event = eventOf(Kind::Attachment, test, TestMessage(describeAttachment(attachment)));
-    event.data.attachment = std::make_shared<const Attachment>(attachment);
-    publish(event);
+    publish(eventOf(events::attachment(std::make_shared<const Attachment>(attachment),
+                                       TestMessage(describeAttachment(attachment))),
+                    test));
 }
 
 void TestResult::addInterrupted(const Test* test, TestMessage msg) {
-    publish(eventOf(Kind::Interrupted, test, bounded(std::move(msg))));
+    publish(eventOf(events::interrupted(bounded(std::move(msg))), test));
 }
 
 void TestResult::addOutput(const Test* test, const std::string& text) {
-    publish(eventOf(Kind::Output, test, TestMessage(text)));
+    publish(eventOf(events::output(text), test));
 }
 
 void TestResult::renameTest(const Test* test, const std::string& name) {
-    publish(eventOf(Kind::Rename, test, TestMessage(name)));
+    publish(eventOf(events::rename(name), test));
 }
 
 }  // namespace robottestingframework

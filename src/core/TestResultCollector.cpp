@@ -9,21 +9,18 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/events.h"
+
 namespace robottestingframework {
 
 namespace {
 
-using Kind = ResultEvent::Kind;
-
-ResultEvent makeEvent(Kind kind, const Test* test, TestMessage msg, bool passed, double time) {
-    ResultEvent event;
-    event.kind = kind;
+// `event` about `test` (its name and id), received at `time`.
+ResultEvent stamped(ResultEvent event, const Test* test, double time) {
     if (test != nullptr) {
         event.testName = test->getName();
         event.testId = test->getId();
     }
-    event.message = std::move(msg);
-    event.passed = passed;
     event.time = time;
     return event;
 }
@@ -53,14 +50,11 @@ Measurement MeasurementRecord::measurement() const {
 }
 
 ResultEvent MeasurementRecord::event(const TestRecord& test) const {
-    ResultEvent made;
-    made.kind = Kind::Measurement;
+    auto measured = std::make_shared<const Measurement>(measurement());
+    TestMessage described(describeMeasurement(*measured));
+    ResultEvent made = events::measurement(std::move(measured), passed, std::move(described));
     made.testName = test.name;
     made.testId = test.id;
-    auto measured = std::make_shared<const Measurement>(measurement());
-    made.message = TestMessage(describeMeasurement(*measured));
-    made.measurement = std::move(measured);
-    made.passed = passed;
     made.time = time;
     made.repetition = repetition;
     return made;
@@ -253,7 +247,7 @@ void TestResultCollector::onEvent(const RunEvent& event) {
     const RunEvent* outer = delivering_;  // a handler may publish again (a subclass's own)
     delivering_ = &event;
     try {
-        if (event.data.kind == Kind::World) {
+        if (isWorldPhase(event.data.kind)) {
             recordWorld(event.data);
         }
         TestListener::onEvent(event);
@@ -303,15 +297,15 @@ const RunEvent* TestResultCollector::timeAs(const RunEvent* event) {
     return before;
 }
 
-void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg, bool passed,
-                                 const Measurement* measurement,
-                                 std::shared_ptr<const Attachment> attachment) {
+void TestResultCollector::record(const Test* test, ResultEvent&& made,
+                                 const Measurement* measurement) {
+    const ResultEvent::Kind kind = made.kind;
     // A test's own event goes to its record (and its repetition); anything else open (a
     // fixture's report from a watcher thread, a collapse) belongs to the suite.
     const OpenTest* open = findOpen(test);
     TestRecord* owner = open != nullptr ? &suites_[open->suite].tests[open->index] : nullptr;
     const bool logged = keepEvents_ && keepLog_;
-    if (owner != nullptr && kind == Kind::Check && !keepChecks_ && !logged) {
+    if (owner != nullptr && isCheck(kind) && !keepChecks_ && !logged) {
         return;  // most events of a passing test are checks: nothing of them is copied
     }
     if (owner != nullptr && measurement != nullptr) {
@@ -327,27 +321,26 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg,
         measured.time = now();
         measured.repetition = open->repetition;
         measured.position = static_cast<std::uint32_t>(owner->events.size());
-        measured.passed = passed;
+        measured.passed = made.passed;
         owner->measurements.push_back(std::move(measured));
         if (!logged) {
             return;
         }
-        ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
+        ResultEvent event = stamped(std::move(made), test, now());
         event.measurement = std::make_shared<const Measurement>(*measurement);
         event.repetition = open->repetition;
         events_.push_back(std::move(event));
         return;
     }
-    ResultEvent event = makeEvent(kind, test, std::move(msg), passed, now());
+    ResultEvent event = stamped(std::move(made), test, now());
     if (measurement != nullptr) {
         event.measurement = std::make_shared<const Measurement>(*measurement);
     }
-    event.attachment = std::move(attachment);
     if (owner != nullptr) {
         event.repetition = open->repetition;
-        if (kind == Kind::Output) {
+        if (isOutput(kind)) {
             owner->output += event.message.getMessage();
-        } else if (kind != Kind::Check || keepChecks_) {
+        } else if (!isCheck(kind) || keepChecks_) {
             owner->status = std::max(owner->status, stateOf(kind));
             if (event.repetition != 0 && !owner->repetitions.empty()) {
                 TestStatus& state = owner->repetitions.back().status;
@@ -357,7 +350,7 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg,
         }
     } else if (!openSuites_.empty()) {
         SuiteRecord& suite = suites_[openSuites_.back().index];
-        if (kind == Kind::Output) {
+        if (isOutput(kind)) {
             suite.output += event.message.getMessage();
         } else {
             if (isFailure(stateOf(kind))) {
@@ -372,47 +365,52 @@ void TestResultCollector::record(Kind kind, const Test* test, TestMessage&& msg,
 }
 
 void TestResultCollector::addReport(const Test* test, TestMessage msg) {
-    record(Kind::Report, test, std::move(msg));
+    record(test, events::report(std::move(msg)));
 }
 
 void TestResultCollector::addError(const Test* test, TestMessage msg) {
-    record(Kind::Error, test, std::move(msg));
+    record(test, events::error(std::move(msg)));
 }
 
 void TestResultCollector::addFailure(const Test* test, TestMessage msg) {
-    record(Kind::Failure, test, std::move(msg));
+    record(test, events::failure(std::move(msg)));
 }
 
 void TestResultCollector::addCheck(const Test* test, TestMessage msg, bool passed) {
-    record(Kind::Check, test, std::move(msg), passed);
+    record(test, events::check(std::move(msg), passed));
 }
 
 void TestResultCollector::addSkipped(const Test* test, TestMessage reason) {
-    record(Kind::Skipped, test, std::move(reason));
+    record(test, events::skipped(std::move(reason)));
 }
 
 void TestResultCollector::addCrash(const Test* test, TestMessage msg) {
-    record(Kind::Crash, test, std::move(msg));
+    record(test, events::crash(std::move(msg)));
 }
 
 void TestResultCollector::addTimeout(const Test* test, TestMessage msg) {
-    record(Kind::Timeout, test, std::move(msg));
+    record(test, events::timeout(std::move(msg)));
 }
 
 void TestResultCollector::addInterrupted(const Test* test, TestMessage msg) {
-    record(Kind::Interrupted, test, std::move(msg));
+    record(test, events::interrupted(std::move(msg)));
 }
 
 void TestResultCollector::addOutput(const Test* test, const std::string& text) {
-    record(Kind::Output, test, TestMessage(text));
+    record(test, events::output(text));
 }
 
 void TestResultCollector::addEvent(const Test* test, const ResultEvent& event) {
-    if (event.kind == Kind::World) {
+    if (isWorldPhase(event.kind)) {
         return;  // kept by onEvent, in worlds()
     }
-    record(event.kind, test, TestMessage(event.message), event.passed, event.measurement.get(),
-           event.attachment);
+    // Kept as any other: its kind, message and outcome, and what it carries.
+    ResultEvent kept;
+    kept.kind = event.kind;
+    kept.message = event.message;
+    kept.passed = event.passed;
+    kept.attachment = event.attachment;
+    record(test, std::move(kept), event.measurement.get());
 }
 
 void TestResultCollector::addMeasurement(const Test* test, const Measurement& measurement,
@@ -421,15 +419,17 @@ void TestResultCollector::addMeasurement(const Test* test, const Measurement& me
     // record keeps a MeasurementRecord, which describes itself when a report asks.
     const OpenTest* open = findOpen(test);
     const bool eventKept = open == nullptr || (keepEvents_ && keepLog_);
-    record(Kind::Measurement, test,
-           eventKept ? TestMessage(describeMeasurement(measurement)) : TestMessage(), passed,
+    record(test,
+           events::measurement(
+               nullptr, passed,
+               eventKept ? TestMessage(describeMeasurement(measurement)) : TestMessage()),
            &measurement);
 }
 
 void TestResultCollector::addAttachment(const Test* test, const Attachment& attachment) {
     // Few (a test's files, a fixture's logs): each record keeps its own copy.
-    record(Kind::Attachment, test, TestMessage(describeAttachment(attachment)), true, nullptr,
-           std::make_shared<const Attachment>(attachment));
+    record(test, events::attachment(std::make_shared<const Attachment>(attachment),
+                                    TestMessage(describeAttachment(attachment))));
 }
 
 void TestResultCollector::renameTest(const Test* test, const std::string& name) {
@@ -458,7 +458,7 @@ void TestResultCollector::startRepetition(const Test* test, unsigned int index,
         owner.repetitions.push_back(repetition);
         open->repetition = index;
     }
-    record(Kind::Report, test, repetitionMessage(index, count));
+    record(test, events::report(repetitionMessage(index, count)));
 }
 
 void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
@@ -467,7 +467,7 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
         return;
     }
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::Report, test, msg, true, now()));
+        events_.push_back(stamped(events::report(msg), test, now()));
     }
     // The failed attempt stops counting: the test's state is its last attempt's.
     TestRecord& record = suites_[lastEnded_.suite].tests[lastEnded_.index];
@@ -500,7 +500,7 @@ void TestResultCollector::retryTest(const Test* test, TestMessage msg) {
 void TestResultCollector::startTest(const Test* test) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::StartTest, test, TestMessage(), true, time));
+        events_.push_back(stamped(events::startTest(), test, time));
     }
     if (test != nullptr && retrying_.id != 0 && retrying_.id == test->getId()) {
         OpenTest reopened = retrying_;
@@ -531,7 +531,7 @@ void TestResultCollector::startTest(const Test* test) {
 void TestResultCollector::endTest(const Test* test) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::EndTest, test, TestMessage(), true, time));
+        events_.push_back(stamped(events::endTest(), test, time));
     }
     const std::uint64_t id = test != nullptr ? test->getId() : 0;
     for (std::size_t i = openTests_.size(); i > 0; --i) {
@@ -587,7 +587,7 @@ void TestResultCollector::keepWithinBudget(std::string& output) {
 void TestResultCollector::startTestSuite(const TestSuite* suite) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::StartSuite, suite, TestMessage(), true, time));
+        events_.push_back(stamped(events::startSuite(), suite, time));
     }
     if (!keepEvents_ && openSuites_.empty() && openTests_.empty()) {
         suites_.clear();
@@ -611,7 +611,7 @@ void TestResultCollector::startTestSuite(const TestSuite* suite) {
 void TestResultCollector::endTestSuite(const TestSuite* suite) {
     const double time = now();
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::EndSuite, suite, TestMessage(), true, time));
+        events_.push_back(stamped(events::endSuite(), suite, time));
     }
     if (openSuites_.empty()) {
         return;
@@ -666,14 +666,14 @@ void TestResultCollector::startTestRunner() {
     start_ = now();
     end_ = -1;
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::StartRunner, nullptr, TestMessage(), true, start_));
+        events_.push_back(stamped(events::startRunner(), nullptr, start_));
     }
 }
 
 void TestResultCollector::endTestRunner() {
     end_ = now();
     if (keepEvents_ && keepLog_) {
-        events_.push_back(makeEvent(Kind::EndRunner, nullptr, TestMessage(), true, end_));
+        events_.push_back(stamped(events::endRunner(), nullptr, end_));
     }
 }
 

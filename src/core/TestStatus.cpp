@@ -2,6 +2,9 @@
 #include <robottestingframework/TestStatus.h>
 
 #include <cstddef>
+#include <utility>
+
+#include "core/events.h"
 
 namespace robottestingframework {
 
@@ -51,7 +54,11 @@ namespace {
 // The one table of event kinds, one row per kind, in Kind order. Its columns:
 // - word: the kind's stable name (JSON, wire format), the word before a message;
 // - state: the state it gives its test;
-// - frame: it frames the run (start/end of the runner, a suite, a test);
+// - frame: what it frames: nothing, the run (start/end of the runner or a suite), a test (its
+//   start, its end), or a repetition of its test (its start: inside its test, so the relays
+//   forward it as any other event);
+// - text: what its message holds: a message, what the test printed, the test's new name, or a
+//   shared world's phase;
 // - message: a test's message (report, check): the reports keep it whatever -v says;
 // - check: a passed one is hidden unless passed checks are kept;
 // - said: a line of its own under its test in the console, TAP and live page (failures,
@@ -65,11 +72,14 @@ namespace {
 // - passedLabel / failedLabel: its word when it passed / failed (null: `word`), as the
 //   console, text and TAP reports show it; failedName: as the HTML report and live page do.
 enum class Carries : unsigned char { Nothing, Measurement, Attachment };
+enum class Frame : unsigned char { No, Run, TestStart, TestEnd, Repetition };
+enum class Text : unsigned char { Message, Printed, NewName, WorldPhase };
 struct KindRow {
     ResultEvent::Kind kind;
     const char* word;
     TestStatus state;
-    bool frame;
+    Frame frame;
+    Text text;
     bool message;
     bool check;
     bool said;
@@ -85,33 +95,36 @@ struct KindRow {
 using Kind = ResultEvent::Kind;
 using T = KindTone;
 constexpr Carries none = Carries::Nothing;
+constexpr Frame run = Frame::Run;
+constexpr Frame no = Frame::No;
+constexpr Text msg = Text::Message;
 constexpr bool Y = true;
 constexpr bool n = false;
 // clang-format off
 constexpr KindRow kindRows[] = {
-//   kind              word            state                   frame msg chk said ff  last rep carries               tone         passed      failed                       failedName
-    {Kind::StartRunner, "start-runner", TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndRunner,   "end-runner",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::StartSuite,  "start-suite",  TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndSuite,    "end-suite",    TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::StartTest,   "start-test",   TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::EndTest,     "end-test",     TestStatus::Passed,      Y,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Report,      "report",       TestStatus::Passed,      n,   Y,  n,  n,   n,  Y,   Y, none,                 T::Plain,    nullptr,    nullptr,                     nullptr},
-    {Kind::Check,       "check",        TestStatus::Passed,      n,   Y,  Y,  n,   n,  Y,   n, none,                 T::Outcome,  "check ok", "check FAILED",              "check failed"},
-    {Kind::Failure,     "failure",      TestStatus::Failed,      n,   n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Error,       "error",        TestStatus::Error,       n,   n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Skipped,     "skipped",      TestStatus::Skipped,     n,   n,  n,  Y,   n,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
-    {Kind::Crash,       "crash",        TestStatus::Crashed,     n,   n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Timeout,     "timeout",      TestStatus::TimedOut,    n,   n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Interrupted, "interrupted",  TestStatus::Interrupted, n,   n,  n,  Y,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Output,      "output",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Rename,      "rename",       TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Retry,       "retry",        TestStatus::Passed,      n,   n,  n,  n,   Y,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
-    {Kind::Repetition,  "repetition",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Measurement, "measurement",  TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, Carries::Measurement, T::Bad,      nullptr,    "measurement OUTSIDE LIMITS", nullptr},
-    {Kind::Attachment,  "attachment",   TestStatus::Passed,      n,   n,  n,  n,   n,  n,   Y, Carries::Attachment,  T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::World,       "world",        TestStatus::Passed,      n,   n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
-    {Kind::Probe,       "probe",        TestStatus::Failed,      n,   n,  n,  Y,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+//   kind              word            state                   frame              text              msg chk said ff  last rep carries               tone         passed      failed                       failedName
+    {Kind::StartRunner, "start-runner", TestStatus::Passed,      run,               msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndRunner,   "end-runner",   TestStatus::Passed,      run,               msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartSuite,  "start-suite",  TestStatus::Passed,      run,               msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndSuite,    "end-suite",    TestStatus::Passed,      run,               msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::StartTest,   "start-test",   TestStatus::Passed,      Frame::TestStart,  msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::EndTest,     "end-test",     TestStatus::Passed,      Frame::TestEnd,    msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Report,      "report",       TestStatus::Passed,      no,                msg,              Y,  n,  n,   n,  Y,   Y, none,                 T::Plain,    nullptr,    nullptr,                     nullptr},
+    {Kind::Check,       "check",        TestStatus::Passed,      no,                msg,              Y,  Y,  n,   n,  Y,   n, none,                 T::Outcome,  "check ok", "check FAILED",              "check failed"},
+    {Kind::Failure,     "failure",      TestStatus::Failed,      no,                msg,              n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Error,       "error",        TestStatus::Error,       no,                msg,              n,  n,  Y,   Y,  Y,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Skipped,     "skipped",      TestStatus::Skipped,     no,                msg,              n,  n,  Y,   n,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Crash,       "crash",        TestStatus::Crashed,     no,                msg,              n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Timeout,     "timeout",      TestStatus::TimedOut,    no,                msg,              n,  n,  Y,   Y,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Interrupted, "interrupted",  TestStatus::Interrupted, no,                msg,              n,  n,  Y,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Output,      "output",       TestStatus::Passed,      no,                Text::Printed,    n,  n,  n,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Rename,      "rename",       TestStatus::Passed,      no,                Text::NewName,    n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Retry,       "retry",        TestStatus::Passed,      no,                msg,              n,  n,  n,   Y,  n,   n, none,                 T::Warn,     nullptr,    nullptr,                     nullptr},
+    {Kind::Repetition,  "repetition",   TestStatus::Passed,      Frame::Repetition, msg,              n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Measurement, "measurement",  TestStatus::Passed,      no,                msg,              n,  n,  n,   n,  n,   Y, Carries::Measurement, T::Bad,      nullptr,    "measurement OUTSIDE LIMITS", nullptr},
+    {Kind::Attachment,  "attachment",   TestStatus::Passed,      no,                msg,              n,  n,  n,   n,  n,   Y, Carries::Attachment,  T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::World,       "world",        TestStatus::Passed,      no,                Text::WorldPhase, n,  n,  n,   n,  n,   n, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
+    {Kind::Probe,       "probe",        TestStatus::Failed,      no,                msg,              n,  n,  Y,   n,  n,   Y, none,                 T::Bad,      nullptr,    nullptr,                     nullptr},
 };
 // clang-format on
 
@@ -142,9 +155,43 @@ const char* toString(ResultEvent::Kind kind) {
     return row != nullptr ? row->word : "unknown";
 }
 
-bool isFrame(ResultEvent::Kind kind) {
+namespace {
+
+Frame frameOf(ResultEvent::Kind kind) {
     const KindRow* row = rowOf(kind);
-    return row != nullptr && row->frame;
+    return row != nullptr ? row->frame : Frame::No;
+}
+
+Text textOf(ResultEvent::Kind kind) {
+    const KindRow* row = rowOf(kind);
+    return row != nullptr ? row->text : Text::Message;
+}
+
+}  // namespace
+
+bool isFrame(ResultEvent::Kind kind) {
+    const Frame frame = frameOf(kind);
+    return frame == Frame::Run || frame == Frame::TestStart || frame == Frame::TestEnd;
+}
+
+bool startsTest(ResultEvent::Kind kind) {
+    return frameOf(kind) == Frame::TestStart;
+}
+
+bool endsTest(ResultEvent::Kind kind) {
+    return frameOf(kind) == Frame::TestEnd;
+}
+
+bool startsRepetition(ResultEvent::Kind kind) {
+    return frameOf(kind) == Frame::Repetition;
+}
+
+bool isOutput(ResultEvent::Kind kind) {
+    return textOf(kind) == Text::Printed;
+}
+
+bool renamesTest(ResultEvent::Kind kind) {
+    return textOf(kind) == Text::NewName;
 }
 
 std::string repetitionId(std::uint64_t testId, unsigned int index) {
@@ -254,11 +301,11 @@ const char* labelOf(ResultEvent::Kind kind, bool passed) {
 }
 
 bool isWorldPhase(ResultEvent::Kind kind) {
-    return kind == Kind::World;
+    return textOf(kind) == Text::WorldPhase;
 }
 
 const ResultEvent& shownEvent(const ResultEvent& event, ResultEvent& scratch) {
-    if (event.kind != Kind::Repetition) {
+    if (!startsRepetition(event.kind)) {
         return event;
     }
     scratch.kind = Kind::Report;
@@ -277,5 +324,119 @@ const char* nameOf(ResultEvent::Kind kind, bool passed) {
     }
     return !passed && row->failedName != nullptr ? row->failedName : row->word;
 }
+
+namespace events {
+
+// The makers by name, one per kind that something sends (the table above says what each is).
+
+namespace {
+
+ResultEvent made(Kind kind, TestMessage msg = TestMessage()) {
+    ResultEvent event;
+    event.kind = kind;
+    event.message = std::move(msg);
+    return event;
+}
+
+}  // namespace
+
+ResultEvent startRunner() {
+    return made(Kind::StartRunner);
+}
+
+ResultEvent endRunner() {
+    return made(Kind::EndRunner);
+}
+
+ResultEvent startSuite() {
+    return made(Kind::StartSuite);
+}
+
+ResultEvent endSuite() {
+    return made(Kind::EndSuite);
+}
+
+ResultEvent startTest() {
+    return made(Kind::StartTest);
+}
+
+ResultEvent endTest() {
+    return made(Kind::EndTest);
+}
+
+ResultEvent report(TestMessage msg) {
+    return made(Kind::Report, std::move(msg));
+}
+
+ResultEvent check(TestMessage msg, bool passed) {
+    ResultEvent event = made(Kind::Check, std::move(msg));
+    event.passed = passed;
+    return event;
+}
+
+ResultEvent failure(TestMessage msg) {
+    return made(Kind::Failure, std::move(msg));
+}
+
+ResultEvent error(TestMessage msg) {
+    return made(Kind::Error, std::move(msg));
+}
+
+ResultEvent skipped(TestMessage reason) {
+    return made(Kind::Skipped, std::move(reason));
+}
+
+ResultEvent crash(TestMessage msg) {
+    return made(Kind::Crash, std::move(msg));
+}
+
+ResultEvent timeout(TestMessage msg) {
+    return made(Kind::Timeout, std::move(msg));
+}
+
+ResultEvent interrupted(TestMessage msg) {
+    return made(Kind::Interrupted, std::move(msg));
+}
+
+ResultEvent output(const std::string& text) {
+    return made(Kind::Output, TestMessage(text));
+}
+
+ResultEvent rename(const std::string& name) {
+    return made(Kind::Rename, TestMessage(name));
+}
+
+ResultEvent retry(TestMessage msg) {
+    return made(Kind::Retry, std::move(msg));
+}
+
+ResultEvent repetition(unsigned int index, unsigned int count) {
+    ResultEvent event = made(Kind::Repetition);
+    event.repetition = index;
+    event.repetitions = count;
+    return event;
+}
+
+ResultEvent measurement(std::shared_ptr<const Measurement> measured, bool passed,
+                        TestMessage described) {
+    ResultEvent event = made(Kind::Measurement, std::move(described));
+    event.passed = passed;
+    event.measurement = std::move(measured);
+    return event;
+}
+
+ResultEvent attachment(std::shared_ptr<const Attachment> attached, TestMessage described) {
+    ResultEvent event = made(Kind::Attachment, std::move(described));
+    event.attachment = std::move(attached);
+    return event;
+}
+
+ResultEvent world(const std::string& name, const std::string& phase, const std::string& detail) {
+    ResultEvent event = made(Kind::World, TestMessage(phase, detail));
+    event.testName = name;
+    return event;
+}
+
+}  // namespace events
 
 }  // namespace robottestingframework

@@ -50,11 +50,11 @@ void EventRelay::relay(const WireRecord& record) {
     if (record.kind != WireKind::Event || ended_) {
         return;
     }
-    if (record.event == Kind::Rename) {
+    if (renamesTest(record.event)) {
         rename(record.message.getMessage());
         return;
     }
-    if (record.event == Kind::Repetition) {
+    if (startsRepetition(record.event)) {
         if (record.repetition == 0 || record.repetition > record.repetitions) {
             return;  // garbage from a broken worker: not a repetition
         }
@@ -65,11 +65,11 @@ void EventRelay::relay(const WireRecord& record) {
     if (!record.name.empty() && record.name != self_.getName()) {
         rename(record.name);
     }
-    if (record.event == Kind::StartTest) {
+    if (startsTest(record.event)) {
         start();
         return;
     }
-    if (record.event == Kind::EndTest) {
+    if (endsTest(record.event)) {
         return;  // held back: the runner may still have something to say (a crash after it)
     }
     start();
@@ -89,13 +89,10 @@ void EventRelay::rename(const std::string& name) {
     }
 }
 
-void EventRelay::add(Kind kind, const TestMessage& message) {
+void EventRelay::add(const ResultEvent& event) {
     start();
-    WireRecord record;
-    record.event = kind;
-    record.message = message;
-    relayEvent(record, &self_, result_);
-    note(kind, message);
+    relayEvent(eventRecord(event, std::string()), &self_, result_);
+    note(event.kind, event.message);
 }
 
 void EventRelay::end(const std::string& output) {

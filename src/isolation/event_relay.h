@@ -25,7 +25,8 @@ public:
     // reports), a critical error is set on the stand-in.
     void relay(const WireRecord& record);
     // What the runner adds itself: a crash, a timeout, an interruption, an error.
-    void add(ResultEvent::Kind kind, const TestMessage& message);
+    // Made by name (core/events.h: events::crash(...), ...).
+    void add(const ResultEvent& event);
     // Sends the output tail (if any) and the one endTest.
     void end(const std::string& output);
 

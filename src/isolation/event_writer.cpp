@@ -30,21 +30,15 @@ void EventWriter::hold(const WireRecord& record) {
     encode(record, held_);
 }
 
-void EventWriter::sendEvent(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
-                            bool passed) {
-    RunEvent event;
-    event.data.kind = kind;
-    event.data.message = msg;
-    event.data.passed = passed;
-    event.test = test;
-    onEvent(event);
+void EventWriter::sendEvent(const ResultEvent& event, const Test* test) {
+    onEvent(RunEvent{event, test});
 }
 
 void EventWriter::onEvent(const RunEvent& event) {
     const WireRecord record = eventRecord(event.data, nameOf(event.test));
     // Transport only: the runner holds a test's end back until the worker finished anyway, so
     // its record waits to share a write with the next one (the Finished record).
-    if (event.data.kind == ResultEvent::Kind::EndTest) {
+    if (endsTest(event.data.kind)) {
         hold(record);
     } else {
         send(record);

@@ -21,9 +21,8 @@ public:
     // Holds a record until the next send: for records whose loss in a crash costs nothing
     // (the runner frames the test itself), so that they share a write with the next one.
     void hold(const WireRecord& record);
-    // Sends an event of `kind` about `test` that the worker itself says.
-    void sendEvent(ResultEvent::Kind kind, const Test* test, const TestMessage& msg,
-                   bool passed = true);
+    // Sends `event` (made by name, core/events.h) about `test`: what the worker itself says.
+    void sendEvent(const ResultEvent& event, const Test* test);
 
     void onEvent(const RunEvent& event) override;
 

@@ -9,6 +9,7 @@
 
 #include <robottestingframework/TestResult.h>
 
+#include "core/events.h"
 #include "isolation/event_writer.h"
 #include "isolation/worker.h"
 #include "languages/test_loader.h"
@@ -36,12 +37,9 @@ std::string describeCurrentException() {
 // it was before the process aborts, so the report has more than "SIGABRT".
 [[noreturn]] void onTerminate() {
     if (activeWriter != nullptr && std::current_exception()) {
-        WireRecord record;
-        record.kind = WireKind::Event;
-        record.event = ResultEvent::Kind::Error;
-        record.name = activeName;
-        record.message = TestMessage("std::terminate called", describeCurrentException());
-        activeWriter->send(record);
+        activeWriter->send(eventRecord(
+            events::error(TestMessage("std::terminate called", describeCurrentException())),
+            activeName));
     }
     std::abort();
 }
@@ -67,17 +65,10 @@ int runTestWorker(const WorkRequest& request, int channel) {
         error = describeCurrentException();
     }
     if (!loaded || loaded->get() == nullptr) {
-        WireRecord record;
-        record.kind = WireKind::Event;
-        record.name = activeName;
-        record.event = ResultEvent::Kind::StartTest;
-        writer.send(record);
-        record.event = ResultEvent::Kind::Failure;
-        record.message = TestMessage("cannot load " + request.path, error);
-        writer.send(record);
-        record.event = ResultEvent::Kind::EndTest;
-        record.message = TestMessage();
-        writer.send(record);
+        writer.send(eventRecord(events::startTest(), activeName));
+        writer.send(eventRecord(events::failure(TestMessage("cannot load " + request.path, error)),
+                                activeName));
+        writer.send(eventRecord(events::endTest(), activeName));
         writer.send(WireRecord{WireKind::Finished, {}, {}, {}, true, 0});
         return 0;
     }
@@ -115,8 +106,8 @@ int runTestWorker(const WorkRequest& request, int channel) {
         test->run(result);
     } catch (...) {
         // TestCase::run catches what the test throws; this is for what escapes it anyway.
-        writer.sendEvent(ResultEvent::Kind::Error, test, TestMessage(describeCurrentException()));
-        writer.sendEvent(ResultEvent::Kind::EndTest, test, TestMessage());
+        writer.sendEvent(events::error(TestMessage(describeCurrentException())), test);
+        writer.sendEvent(events::endTest(), test);
     }
     if (stopWatcher.joinable()) {
         stopSignal->wake();

@@ -42,7 +42,7 @@ enum class WireKind : std::uint8_t {
 
 struct WireRecord {
     WireKind kind = WireKind::Event;
-    ResultEvent::Kind event = ResultEvent::Kind::Report;
+    ResultEvent::Kind event{};  // an Event record's kind (the others carry none)
     std::string name;
     TestMessage message;
     bool flag = true;

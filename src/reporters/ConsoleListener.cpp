@@ -36,9 +36,9 @@ const char* colourOf(const ResultEvent& event) {
 
 ConsoleListener::ConsoleListener(bool verbose) : verbose_(verbose) {
     // It only needs the open test and the counts; finished records are dropped.
-    record_.setKeepEvents(false);
-    record_.setCountTestsNotRun(true);  // its closing line counts the skipped lines it printed
-    record_.setKeepChecks(showChecks_);
+    own_.setKeepEvents(false);
+    own_.setCountTestsNotRun(true);  // its closing line counts the skipped lines it printed
+    own_.setKeepChecks(showChecks_);
     setStream(stdout);
 }
 
@@ -51,7 +51,9 @@ void ConsoleListener::onEvent(const RunEvent& event) {
     ResultEvent scratch;
     const ResultEvent& data = shownEvent(event.data, scratch);
     if (isSaid(data)) {
-        record_.onEvent(event);
+        if (shared_ == nullptr) {
+            own_.onEvent(event);
+        }
         say(event.test, data);
         return;
     }
@@ -62,17 +64,23 @@ void ConsoleListener::onEvent(const RunEvent& event) {
                                : verbose_ && !hideUncritical_) {
             say(event.test, data);
         }
-        record_.onEvent(event);
+        if (shared_ == nullptr) {
+            own_.onEvent(event);
+        }
         return;
     }
-    const RunEvent* before = record_.timeAs(&event);
+    if (shared_ != nullptr) {
+        TestListener::onEvent(event);  // the run's collector has it already
+        return;
+    }
+    const RunEvent* before = own_.timeAs(&event);
     try {
         TestListener::onEvent(event);
     } catch (...) {
-        record_.timeAs(before);
+        own_.timeAs(before);
         throw;
     }
-    record_.timeAs(before);
+    own_.timeAs(before);
 }
 
 void ConsoleListener::line(std::string text) {
@@ -108,12 +116,16 @@ void ConsoleListener::say(const Test* test, const ResultEvent& event) {
 }
 
 void ConsoleListener::retryTest(const Test* test, TestMessage msg) {
-    record_.retryTest(test, msg);
+    if (shared_ == nullptr) {
+        own_.retryTest(test, msg);
+    }
     message("retry", yellow, msg);
 }
 
 void ConsoleListener::addOutput(const Test* test, const std::string& text) {
-    record_.addOutput(test, text);
+    if (shared_ == nullptr) {
+        own_.addOutput(test, text);
+    }
     if (!verbose_ || text.empty()) {
         return;
     }
@@ -123,30 +135,41 @@ void ConsoleListener::addOutput(const Test* test, const std::string& text) {
 }
 
 void ConsoleListener::renameTest(const Test* test, const std::string& name) {
-    record_.renameTest(test, name);
+    if (shared_ == nullptr) {
+        own_.renameTest(test, name);
+    }
 }
 
 void ConsoleListener::startTest(const Test* test) {
-    record_.startTest(test);
+    if (shared_ == nullptr) {
+        own_.startTest(test);
+    }
     test_ = test != nullptr ? test->getId() : 0;
     if (verbose_ && test != nullptr) {
-        const std::string suite = record_.suites().empty() ? "" : record_.suites().back().name;
+        const TestResultCollector& records = this->records();
+        const std::string suite = records.suites().empty() ? "" : records.suites().back().name;
         line("  run         " + reporters::shownId(suite, test->getKey(), test->getName()));
     }
 }
 
 void ConsoleListener::endTest(const Test* test) {
-    record_.endTest(test);
+    if (shared_ == nullptr) {
+        own_.endTest(test);
+    }
     test_ = 0;
-    if (record_.suites().empty()) {
+    const TestResultCollector& records = this->records();
+    if (records.suites().empty()) {
         return;
     }
-    // The test's own record, found by id (only the running tests' records are kept).
+    // The test's own record, found by id: the last of that id, which the test that just ended
+    // is (the run's collector keeps every record of the suite; its own, the running tests').
     const std::uint64_t id = test != nullptr ? test->getId() : 0;
+    const std::vector<TestRecord>& tests = records.suites().back().tests;
     const TestRecord* found = nullptr;
-    for (const TestRecord& candidate : record_.suites().back().tests) {
-        if (candidate.id == id) {
-            found = &candidate;
+    for (auto candidate = tests.rbegin(); candidate != tests.rend(); ++candidate) {
+        if (candidate->id == id) {
+            found = &*candidate;
+            break;
         }
     }
     if (found == nullptr) {
@@ -174,7 +197,7 @@ void ConsoleListener::endTest(const Test* test) {
         text += word;
     }
     text += ' ';
-    reporters::appendShownId(text, record_.suites().back().name, record.key, record.name);
+    reporters::appendShownId(text, records.suites().back().name, record.key, record.name);
     text.append("  (").append(reporters::seconds(record.duration)).append(")");
     line(std::move(text));
     if (verbose_) {
@@ -193,7 +216,10 @@ void ConsoleListener::endTest(const Test* test) {
 }
 
 void ConsoleListener::startTestSuite(const TestSuite* suite) {
-    record_.startTestSuite(suite);
+    if (shared_ == nullptr) {
+        own_.startTestSuite(suite);
+    }
+    failedSuitesAt_.push_back(records().failedSuiteCount());
     if (suite == nullptr) {
         return;
     }
@@ -210,14 +236,25 @@ void ConsoleListener::startTestSuite(const TestSuite* suite) {
 }
 
 void ConsoleListener::endTestSuite(const TestSuite* suite) {
-    // Its records were dropped test by test; the collector's count still knows.
-    const std::size_t failedBefore = record_.failedSuiteCount();
-    record_.endTestSuite(suite);
-    if (suite == nullptr || record_.suites().empty()) {
+    if (shared_ == nullptr) {
+        own_.endTestSuite(suite);
+    }
+    // Its own records were dropped test by test; the collector's count still knows.
+    const TestResultCollector& records = this->records();
+    const std::size_t failed = records.failedSuiteCount();
+    std::size_t failedBefore = failed;  // a suite that never started: nothing counted
+    if (!failedSuitesAt_.empty()) {
+        failedBefore = failedSuitesAt_.back();
+        failedSuitesAt_.pop_back();
+    }
+    if (!failedSuitesAt_.empty()) {
+        failedSuitesAt_.back() += failed - failedBefore;  // not the outer suite's failure
+    }
+    if (suite == nullptr || records.suites().empty()) {
         return;
     }
-    const SuiteRecord& record = record_.suites().back();
-    const bool ok = record_.failedSuiteCount() == failedBefore;
+    const SuiteRecord& record = records.suites().back();
+    const bool ok = failed == failedBefore;
     std::string text = "  suite ";
     if (colors_) {
         text += ok ? green : red;
@@ -230,21 +267,26 @@ void ConsoleListener::endTestSuite(const TestSuite* suite) {
 }
 
 void ConsoleListener::startTestRunner() {
-    record_.startTestRunner();
+    if (shared_ == nullptr) {
+        own_.startTestRunner();
+    }
 }
 
 void ConsoleListener::endTestRunner() {
-    record_.endTestRunner();
+    if (shared_ == nullptr) {
+        own_.endTestRunner();
+    }
+    const TestResultCollector& records = this->records();
     line("");
     if (showSummary_) {
         line("Summary");
-        for (const std::string& text : reporters::summaryLines(record_)) {
+        for (const std::string& text : reporters::summaryLines(records)) {
             line(text);
         }
     }
-    const std::string closing = reporters::closingLine(record_);
+    const std::string closing = reporters::closingLine(records);
     if (colors_) {
-        line(std::string(record_.failedCount() > 0 ? red : green) + closing + plain);
+        line(std::string(records.failedCount() > 0 ? red : green) + closing + plain);
     } else {
         line(closing);
     }

@@ -79,6 +79,11 @@ def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker
                                "after": "interrupted", "never": "interrupted"}, out
     assert "INTERRUPTED" in text.read_text()
     assert "interrupted" in out.splitlines()[-1] or "failed" in out.splitlines()[-1], out
+    if isolation == "process":
+        # The console puts the kind's word before the message, which does not say it again
+        # (it did: "interrupted: interrupted: last reported: ...").
+        assert "      interrupted: stopped while running: " in out, out
+        assert "interrupted: interrupted:" not in out, out
     assert leftover_processes(marker) == []
 
 

@@ -81,9 +81,11 @@ RunListeners::RunListeners(const Options& options,
     // -v/-d say: those change only what the console prints.
     collector_.setCountTestsNotRun(true);  // the reports list a failed fixture's tests as skipped
     collector_.setKeepEventLog(false);
-    // Only the outputs read a passed check from the records (the console keeps its own, the
-    // history reads measurements): without one, 10 000 tests need not keep 10 000 of them.
-    collector_.setKeepChecks(!options.outputs.empty());
+    // Only the outputs and the console's --detail read a passed check from the records (the
+    // history reads measurements): without them, 10 000 tests need not keep 10 000 of them.
+    collector_.setKeepChecks(!options.outputs.empty() || options.detail);
+    // The console reads the run's records (the collector hears each event before it).
+    console_.readRecordsOf(&collector_);
     ParallelConsoleSettings parallelSettings;
     parallelSettings.verbose = options.verbose;
     parallelSettings.colours = colours;
@@ -104,6 +106,7 @@ RunListeners::RunListeners(const Options& options,
     // time.
     // 64 KiB per test, but not for every one of 10 000 talkative tests (README: Output limits).
     collector_.setOutputBudget(8 * 1024 * 1024);
+    result_.addListener(&collector_);  // first: the consoles read what it recorded
     if (!parallel && progress_) {
         result_.addListener(&progress_->before());  // erases the line before the console
     }
@@ -113,7 +116,6 @@ RunListeners::RunListeners(const Options& options,
     if (!parallel && progress_) {
         result_.addListener(&progress_->after());  // and draws it again after
     }
-    result_.addListener(&collector_);
     if (parallel) {
         result_.addListener(parallelConsole_.get());  // the summary, after the collector has it
     }

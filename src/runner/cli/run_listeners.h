@@ -1,6 +1,7 @@
 // Everything that listens to a run, in the order it must hear it: the tests' output capture
-// (first: a test's output arrives before its end), the console (one suite at a time, or one
-// line per test with -j N), the collector, the requested outputs, the live page.
+// (first: a test's output arrives before its end), the collector, the console (one suite at a
+// time, or one line per test with -j N; both read the collector's records), the requested
+// outputs, the live page.
 #pragma once
 
 #include <cstdio>

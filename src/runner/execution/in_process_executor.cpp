@@ -10,6 +10,7 @@
 #include <sstream>
 #include <thread>
 
+#include "core/events.h"
 #include "languages/plugin_locator.h"
 #include "runner/model/stand_in_test.h"
 
@@ -106,18 +107,21 @@ public:
     void timedOut() { timedOut_ = true; }
 
     void onEvent(const RunEvent& event) override {
-        using Kind = ResultEvent::Kind;
         const Test* self = sync(event.test);
-        if (event.data.kind == Kind::Rename) {
+        if (renamesTest(event.data.kind)) {
             return;  // sync() told the listeners already, as the stand-in's new name
         }
         RunEvent relayed = event;
         relayed.test = self;
-        if (timedOut_ && event.data.kind == Kind::Interrupted) {
+        if (timedOut_ && stateOf(event.data.kind) == TestStatus::Interrupted) {
             // The watchdog asked the test to stop: its interruption is the timeout it is.
-            relayed.data.kind = Kind::Timeout;
-            relayed.data.message = TestMessage("timed out after " + seconds(timeout_),
-                                               event.data.message.getMessage());
+            ResultEvent timeout = events::timeout(TestMessage(
+                "timed out after " + seconds(timeout_), event.data.message.getMessage()));
+            timeout.testName = event.data.testName;
+            timeout.testId = event.data.testId;
+            timeout.time = event.data.time;
+            timeout.repetition = event.data.repetition;
+            relayed.data = std::move(timeout);
         }
         const TestStatus state = stateOf(relayed.data.kind);
         if (state != TestStatus::Passed) {  // the lowest: most events leave the state as it is

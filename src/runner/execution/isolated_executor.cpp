@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/events.h"
 #include "isolation/event_relay.h"
 #include "languages/plugin_locator.h"
 #include "languages/test_loader.h"
@@ -20,8 +21,6 @@ namespace robottestingframework {
 namespace isolation {
 
 namespace {
-
-using Kind = ResultEvent::Kind;
 
 std::string seconds(double value) {
     std::ostringstream text;
@@ -137,7 +136,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     std::string error;
     if (!languages::locatePlugin(spec.plugin, spec.path, spec.type, spec.where.file, request.path,
                                  request.type, error)) {
-        relay.add(Kind::Failure, TestMessage("cannot load " + spec.plugin, error));
+        relay.add(events::failure(TestMessage("cannot load " + spec.plugin, error)));
         relay.end("");
         return relay.status();
     }
@@ -148,7 +147,7 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
                      network_ ? network_->descriptors() : std::vector<int>());
     }
     if (!error.empty()) {
-        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker", error));
+        relay.add(events::error(TestMessage("cannot run " + spec.plugin + " in a worker", error)));
         relay.end("");
         return relay.status();
     }
@@ -189,7 +188,8 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
         for (const WireRecord& record : records) {
             // A test that stops when asked (an exec test) says it was interrupted: that is our
             // SIGTERM, reported below as what it was.
-            if (record.kind != WireKind::Event || record.event != Kind::Interrupted) {
+            if (record.kind != WireKind::Event ||
+                stateOf(record.event) != TestStatus::Interrupted) {
                 relay.relay(record);
             }
         }
@@ -200,28 +200,28 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
     platform::ExitStatus ending = platform::ExitStatus::fromWaitStatus(worker.waitStatus());
     std::string forced = polite ? "" : " (it ignored SIGTERM and was killed)";
     if (why == Stop::Timeout) {
-        relay.add(Kind::Timeout,
-                  TestMessage("timed out after " + seconds(spec.timeout) + forced, said(relay)));
+        relay.add(events::timeout(
+            TestMessage("timed out after " + seconds(spec.timeout) + forced, said(relay))));
     } else if (why == Stop::Interrupt) {
-        relay.add(Kind::Interrupted, TestMessage("interrupted" + forced, said(relay)));
+        // The kind says "interrupted" before the message: the message says how.
+        relay.add(events::interrupted(TestMessage("stopped while running" + forced, said(relay))));
     } else if (why == Stop::Garbage || worker.corrupt()) {
-        relay.add(Kind::Error, TestMessage("the worker sent unreadable events; it was stopped",
-                                           ending.toString()));
+        relay.add(events::error(
+            TestMessage("the worker sent unreadable events; it was stopped", ending.toString())));
     } else if (!relay.finished() && worker.pid() <= 0) {
-        relay.add(Kind::Error, TestMessage("cannot run " + spec.plugin + " in a worker",
-                                           "the fork server could not start a worker"));
+        relay.add(events::error(TestMessage("cannot run " + spec.plugin + " in a worker",
+                                            "the fork server could not start a worker")));
     } else if (!relay.finished()) {
         // The worker died before it finished (in the test, or destroying it after endTest).
         if (ending.signaled) {
             const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
-            relay.add(Kind::Crash,
-                      TestMessage("crashed" + in + ": " + platform::crashName(ending.signal),
-                                  said(relay)));
+            relay.add(events::crash(TestMessage(
+                "crashed" + in + ": " + platform::crashName(ending.signal), said(relay))));
         } else {
             const std::string in = relay.repetition().empty() ? "" : " in " + relay.repetition();
-            relay.add(Kind::Error, TestMessage("exited with status " + std::to_string(ending.code) +
-                                                   " before the test ended" + in,
-                                               said(relay)));
+            relay.add(events::error(TestMessage(
+                "exited with status " + std::to_string(ending.code) + " before the test ended" + in,
+                said(relay))));
         }
     }
     relay.end(worker.output().take());

@@ -8,6 +8,7 @@
 
 #include <robottestingframework/TestSuite.h>
 
+#include "core/events.h"
 #include "platform/environment.h"
 #include "platform/private_network.h"
 #include "variables/variables.h"
@@ -156,9 +157,7 @@ void Scheduler::noteWorlds() {
             // Its lane in the reports' timelines (TestResultCollector::worlds()).
             if (result_ != nullptr) {
                 RunEvent event;
-                event.data.kind = ResultEvent::Kind::World;
-                event.data.testName = plan_.world(w).name();
-                event.data.message = TestMessage(note.phase, note.detail);
+                event.data = events::world(plan_.world(w).name(), note.phase, note.detail);
                 event.happened = note.at;
                 result_->publish(event);
             }

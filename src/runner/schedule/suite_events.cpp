@@ -26,8 +26,8 @@ void SuiteEvents::onEvent(const RunEvent& event) {
         const double now = platform::monotonicSeconds();
         events_.back().happened = now;
         const ResultEvent::Kind kind = event.data.kind;
-        const bool testEnded = kind == ResultEvent::Kind::EndTest;
-        if (kind == ResultEvent::Kind::StartTest) {
+        const bool testEnded = endsTest(kind);
+        if (startsTest(kind)) {
             inTest_ = true;
         } else if (testEnded) {
             inTest_ = false;

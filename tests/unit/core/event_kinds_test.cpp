@@ -11,6 +11,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/events.h"
+
 using namespace robottestingframework;
 
 namespace {
@@ -99,6 +101,75 @@ TEST(EventKinds, TheFramesAreTheStartsAndEnds) {
     }
     EXPECT_EQ(frames, (std::vector<std::string>{"start-runner", "end-runner", "start-suite",
                                                 "end-suite", "start-test", "end-test"}));
+}
+
+// The other questions about a kind are columns too: which kind starts or ends a test, starts a
+// repetition, holds printed text, a new name or a world's phase.
+TEST(EventKinds, WhatAKindDoesToItsTestIsAColumn) {
+    auto wordsWhere = [](bool (*question)(Kind)) {
+        std::vector<std::string> words;
+        for (Kind kind : everyKind()) {
+            if (question(kind)) {
+                words.push_back(toString(kind));
+            }
+        }
+        return words;
+    };
+    using Words = std::vector<std::string>;
+    EXPECT_EQ(wordsWhere(startsTest), Words{"start-test"});
+    EXPECT_EQ(wordsWhere(endsTest), Words{"end-test"});
+    EXPECT_EQ(wordsWhere(startsRepetition), Words{"repetition"});
+    EXPECT_EQ(wordsWhere(isOutput), Words{"output"});
+    EXPECT_EQ(wordsWhere(renamesTest), Words{"rename"});
+    EXPECT_EQ(wordsWhere(isWorldPhase), Words{"world"});
+}
+
+// Events are made by name (core/events.h): each maker makes its kind, with what it names.
+TEST(EventKinds, EachMakerMakesItsKind) {
+    const TestMessage msg("said", "detail");
+    const std::vector<std::pair<ResultEvent, std::string>> made = {
+        {events::startRunner(), "start-runner"},
+        {events::endRunner(), "end-runner"},
+        {events::startSuite(), "start-suite"},
+        {events::endSuite(), "end-suite"},
+        {events::startTest(), "start-test"},
+        {events::endTest(), "end-test"},
+        {events::report(msg), "report"},
+        {events::check(msg, false), "check"},
+        {events::failure(msg), "failure"},
+        {events::error(msg), "error"},
+        {events::skipped(msg), "skipped"},
+        {events::crash(msg), "crash"},
+        {events::timeout(msg), "timeout"},
+        {events::interrupted(msg), "interrupted"},
+        {events::output("printed"), "output"},
+        {events::rename("new name"), "rename"},
+        {events::retry(msg), "retry"},
+        {events::repetition(2, 3), "repetition"},
+        {events::measurement(nullptr, true, msg), "measurement"},
+        {events::attachment(nullptr, msg), "attachment"},
+        {events::world("db", "ready", "3 suites"), "world"},
+    };
+    for (const auto& one : made) {
+        EXPECT_EQ(toString(one.first.kind), one.second);
+        EXPECT_EQ(one.first.testId, 0u) << one.second;
+    }
+    EXPECT_FALSE(events::check(msg, false).passed);
+    EXPECT_TRUE(events::check(msg, true).passed);
+    EXPECT_EQ(events::failure(msg).message.getDetail(), "detail");
+    EXPECT_EQ(events::output("printed").message.getMessage(), "printed");
+    EXPECT_EQ(events::rename("new name").message.getMessage(), "new name");
+    const ResultEvent repetition = events::repetition(2, 3);
+    EXPECT_EQ(repetition.repetition, 2u);
+    EXPECT_EQ(repetition.repetitions, 3u);
+    auto measured = std::make_shared<const Measurement>();
+    const ResultEvent measurement = events::measurement(measured, false, msg);
+    EXPECT_EQ(measurement.measurement, measured);
+    EXPECT_FALSE(measurement.passed);
+    const ResultEvent world = events::world("db", "ready", "3 suites");
+    EXPECT_EQ(world.testName, "db");
+    EXPECT_EQ(world.message.getMessage(), "ready");
+    EXPECT_EQ(world.message.getDetail(), "3 suites");
 }
 
 // What a shared world's start said is said again to each suite that joins it: its messages,

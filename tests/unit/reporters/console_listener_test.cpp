@@ -1,6 +1,7 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -16,24 +17,28 @@ using namespace rtf_test;
 
 namespace {
 
-// Runs `tests` in a suite through a console listener writing to a file; returns the text.
-std::string consoleText(
-    std::vector<Test*> tests,
-    std::function<void(ConsoleListener&)> configure = [](ConsoleListener&) {},
-    bool verbose = false) {
+// Runs `suites` through a console listener writing to a file; returns the text. `collector`:
+// the run's collector the console reads (as the runner's does), added before it; nullptr: the
+// console keeps records of its own (as RTF 2.x's users make it).
+std::string consoleTextOf(
+    const std::vector<TestSuite*>& suites,
+    std::function<void(ConsoleListener&)> configure = [](ConsoleListener&) {}, bool verbose = false,
+    TestResultCollector* collector = nullptr) {
     const std::string path = (scratchDir() / "console.txt").string();
     std::FILE* file = std::fopen(path.c_str(), "w");
     EXPECT_NE(file, nullptr);
     ConsoleListener console(verbose);
     console.setStream(file);
     configure(console);
-    TestSuite suite("arm tests");
-    for (Test* test : tests) {
-        suite.addTest(test);
-    }
     TestRunner runner;
-    runner.addTest(&suite);
+    for (TestSuite* suite : suites) {
+        runner.addTest(suite);
+    }
     TestResult result;
+    if (collector != nullptr) {
+        result.addListener(collector);
+        console.readRecordsOf(collector);
+    }
     result.addListener(&console);
     runner.run(result);
     std::fclose(file);
@@ -41,6 +46,18 @@ std::string consoleText(
     std::stringstream text;
     text << in.rdbuf();
     return text.str();
+}
+
+// Runs `tests` in a suite "arm tests" (consoleTextOf).
+std::string consoleText(
+    std::vector<Test*> tests,
+    std::function<void(ConsoleListener&)> configure = [](ConsoleListener&) {}, bool verbose = false,
+    TestResultCollector* collector = nullptr) {
+    TestSuite suite("arm tests");
+    for (Test* test : tests) {
+        suite.addTest(test);
+    }
+    return consoleTextOf({&suite}, std::move(configure), verbose, collector);
 }
 
 std::string lastLine(const std::string& text) {
@@ -191,4 +208,62 @@ TEST(ConsoleListener, ATestsTimeIsWhenItsEventsHappenedNotWhenTheyArrived) {
     std::stringstream text;
     text << in.rdbuf();
     EXPECT_TRUE(has(text.str(), "grip  (0.500 s)")) << text.str();
+}
+
+// The runner's console reads the run's collector instead of keeping records of its own (issue
+// 37): what it prints is the same, but for the times.
+TEST(ConsoleListener, ReadingTheRunsCollectorPrintsWhatItsOwnRecordsDo) {
+    auto run = [](bool verbose, bool checks, TestResultCollector* collector) {
+        LambdaTest passing("encoders", [] { ROBOTTESTINGFRAMEWORK_TEST_CHECK(true, "read"); });
+        LambdaTest failing("camera", [] {
+            ROBOTTESTINGFRAMEWORK_TEST_REPORT("warming up");
+            ROBOTTESTINGFRAMEWORK_TEST_CHECK(false, "no image");
+        });
+        LambdaTest thrower("gripper", [] { throw 42; });
+        std::string text = consoleText(
+            {&passing, &failing, &thrower}, [checks](ConsoleListener& c) { c.showChecks(checks); },
+            verbose, collector);
+        // The times differ from run to run: each "(0.000 s)" and the summary's time go.
+        std::string timeless;
+        std::istringstream lines(text);
+        for (std::string line; std::getline(lines, line);) {
+            const std::size_t time = line.rfind("  (");
+            if (line.rfind("  time:", 0) == 0) {
+                continue;
+            }
+            timeless +=
+                (time != std::string::npos && line.back() == ')' ? line.substr(0, time) : line) +
+                "\n";
+        }
+        return timeless;
+    };
+    for (bool verbose : {false, true}) {
+        for (bool checks : {false, true}) {
+            TestResultCollector collector;
+            collector.setCountTestsNotRun(true);
+            collector.setKeepChecks(checks);
+            const std::string own = run(verbose, checks, nullptr);
+            const std::string read = run(verbose, checks, &collector);
+            EXPECT_EQ(read, own) << "verbose " << verbose << ", checks " << checks;
+            EXPECT_TRUE(has(read, "  FAILED      camera")) << read;
+            EXPECT_TRUE(has(read, "  suite FAILED  arm tests")) << read;
+            EXPECT_EQ(lastLine(read), "1 passed, 2 failed") << read;
+            EXPECT_EQ(collector.testCount(), 3u);  // it read them, and kept none of its own
+        }
+    }
+}
+
+// A suite passes or fails by its own tests, whichever records the console reads: the first
+// suite's failure does not make the second one's line say FAILED.
+TEST(ConsoleListener, ReadingTheRunsCollectorEachSuiteSaysItsOwnState) {
+    LambdaTest failing("a", [] { ROBOTTESTINGFRAMEWORK_ASSERT_FAIL("no"); }), passing("b");
+    TestSuite first("first"), second("second");
+    first.addTest(&failing);
+    second.addTest(&passing);
+    TestResultCollector collector;
+    const std::string text = consoleTextOf(
+        {&first, &second}, [](ConsoleListener&) {}, false, &collector);
+    EXPECT_TRUE(has(text, "  suite FAILED  first")) << text;
+    EXPECT_TRUE(has(text, "  suite passed  second")) << text;
+    EXPECT_EQ(lastLine(text), "1 passed, 1 failed") << text;
 }

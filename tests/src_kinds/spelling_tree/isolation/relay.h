@@ -1,0 +1,2 @@
+// Spells a kind in full.
+inline bool ends(ResultEvent::Kind kind) { return kind == ResultEvent::Kind::EndTest; }
