@@ -270,7 +270,10 @@ void JsonReporter::writeDocument(ReportText& out) {
                std::to_string(collector_.countOf(status));
     }
     out += ",\"flaky\":" + std::to_string(collector_.countOf(TestStatus::Flaky));
-    out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount()) + "}}}";
+    out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount());
+    // The fixtures that failed, counted among the failures by the console's summary and closing
+    // line ("failed: 3 (2 tests, 1 fixture)"): one count in every output.
+    out += ",\"fixturesFailed\":" + std::to_string(collector_.failedFixtureCount()) + "}}}";
     out += ",\"tests\":[";
     bool first = true;
     std::string fixtures;
