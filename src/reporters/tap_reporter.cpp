@@ -69,7 +69,12 @@ const char* severity(TestStatus status) {
 // is written here is always valid); "" without any.
 std::string diagnosticsMap(const TestMessage& msg, const std::string& indent) {
     std::string text;
+    std::vector<std::string> seen;  // a key given twice is written once (YAML refuses repeats)
     for (const auto& [key, value] : msg.getDiagnostics()) {
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            continue;
+        }
+        seen.push_back(key);
         // A key of letters, digits and _ - . as it is (`found:`), any other quoted.
         const bool plain = !key.empty() && std::isalpha(static_cast<unsigned char>(key[0])) &&
                            std::all_of(key.begin(), key.end(), [](char c) {

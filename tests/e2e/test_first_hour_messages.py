@@ -71,7 +71,8 @@ def test_a_failed_check_is_one_line_and_yaml_is_not_pasted(tmp_path, jobs):
 
 
 # A failing point's YAML block as node-tap and TAP 14's examples write one: message, severity,
-# found/wanted, at (a map), data (a list), a key of the program's own.
+# found/wanted, at (a map), data (a list), a key of the program's own (given twice: its last
+# value, once).
 DIAGNOSED = """#!/bin/sh
 echo 'TAP version 14'
 echo '1..2'
@@ -87,6 +88,7 @@ echo '    line: 12'
 echo '  data:'
 echo '    - 1'
 echo '    - 2'
+echo '  torque: 0.4 Nm'
 echo '  torque: 0.5 Nm'
 echo '  ...'
 echo 'ok 2 - arm moves'

@@ -336,7 +336,15 @@ TestMessage::Diagnostics tapDiagnostics(const std::string& diagnostics) {
                 value += "\n" + block;
             }
         }
-        found.emplace_back(key, value);
+        // A key given again: its last value, in the first one's place (as YAML readers that
+        // allow repeats read it; the reports write each key once).
+        const auto given = std::find_if(found.begin(), found.end(),
+                                        [&](const auto& entry) { return entry.first == key; });
+        if (given == found.end()) {
+            found.emplace_back(key, value);
+        } else {
+            given->second = value;
+        }
         below.clear();
         haveKey = false;
     };

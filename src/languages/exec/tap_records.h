@@ -52,7 +52,8 @@ std::string withoutTapRecords(const std::string& diagnostics);
 // gripper is open`), a block scalar (`|`, `>`) or a nested block (a map, a list: `at:` with
 // its `file:` and `line:`) as its lines, unindented to the block's first line. Lines that are
 // no `key:` of the top level stay with the key before them; before any key, they are the
-// value of a key "yaml". Comments and blank lines between keys are dropped.
+// value of a key "yaml". Comments and blank lines between keys are dropped; a key given twice
+// keeps its last value, in its first place.
 TestMessage::Diagnostics tapDiagnostics(const std::string& diagnostics);
 
 }  // namespace languages

@@ -124,6 +124,8 @@ TEST(TapRecords, TapDiagnosticsKeepsWhatIsNoKeyWithTheKeyBefore) {
     EXPECT_EQ(tapDiagnostics("# only a comment\n"), TestMessage::Diagnostics{});
     EXPECT_EQ(tapDiagnostics("- one\n- two\n"),
               (TestMessage::Diagnostics{{"yaml", "- one\n- two"}}));
+    EXPECT_EQ(tapDiagnostics("got: 1\nwanted: 2\ngot: 3\n"),
+              (TestMessage::Diagnostics{{"got", "3"}, {"wanted", "2"}}));
     EXPECT_EQ(tapDiagnostics("note: a long\n  sentence\nnext: 1\n"),
               (TestMessage::Diagnostics{{"note", "a long\nsentence"}, {"next", "1"}}));
 }
