@@ -2,11 +2,18 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace robottestingframework {
 
 class TestMessage {
 public:
+    // Structured diagnostics beside the text, in the order given: each a key and its value as
+    // text (a TAP point's YAML block: `got: 3`, `wanted: 4`, `at:` with its lines). Reports show
+    // them as a block of their own under the message, never in its one-line text.
+    using Diagnostics = std::vector<std::pair<std::string, std::string>>;
+
     TestMessage() = default;
     TestMessage(std::string message, std::string detail = "", std::string filename = "",
                 unsigned int line = 0);
@@ -15,16 +22,21 @@ public:
     void setDetail(const std::string& detail) { detail_ = detail; }
     void setSourceFileName(const std::string& filename) { filename_ = filename; }
     void setSourceLineNumber(unsigned int line) { line_ = line; }
+    void setDiagnostics(Diagnostics diagnostics) { diagnostics_ = std::move(diagnostics); }
 
     std::string getMessage() const { return message_; }
     std::string getDetail() const { return detail_; }
     std::string getSourceFileName() const { return filename_; }
     unsigned int getSourceLineNumber() const { return line_; }
+    const Diagnostics& getDiagnostics() const { return diagnostics_; }
 
     // "file:line" when the source is known, empty otherwise.
     std::string getSourceLocation() const;
-    // message, then ": detail" when there is one.
+    // message, then ": detail" when there is one (never the diagnostics).
     std::string toString() const;
+    // The diagnostics as YAML-like lines, each ending in '\n': "key: value", or "key:" then the
+    // value's lines indented by two spaces when it spans lines; "" without any.
+    std::string diagnosticsText() const;
 
     void clear();
 
@@ -33,6 +45,7 @@ private:
     std::string detail_;
     std::string filename_;
     unsigned int line_ = 0;
+    Diagnostics diagnostics_;
 };
 
 }  // namespace robottestingframework

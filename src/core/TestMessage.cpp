@@ -28,11 +28,31 @@ std::string TestMessage::toString() const {
     return message_ + ": " + detail_;
 }
 
+std::string TestMessage::diagnosticsText() const {
+    std::string text;
+    for (const auto& [key, value] : diagnostics_) {
+        if (value.find('\n') == std::string::npos) {
+            text += key + ": " + value + "\n";
+            continue;
+        }
+        text += key + ":\n";
+        std::size_t begin = 0;
+        while (begin < value.size()) {
+            std::size_t end = value.find('\n', begin);
+            end = end == std::string::npos ? value.size() : end;
+            text += "  " + value.substr(begin, end - begin) + "\n";
+            begin = end + 1;
+        }
+    }
+    return text;
+}
+
 void TestMessage::clear() {
     message_.clear();
     detail_.clear();
     filename_.clear();
     line_ = 0;
+    diagnostics_.clear();
 }
 
 }  // namespace robottestingframework

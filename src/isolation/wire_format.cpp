@@ -172,15 +172,33 @@ bool decodePayload(Reader& in, WireRecord& record) {
     return payload == kNoPayload;
 }
 
+// A message's diagnostics: a count, then each key and value (a count beyond the record's
+// bytes fails at the first string that is not there).
+bool decodeDiagnostics(Reader& in, TestMessage::Diagnostics& diagnostics) {
+    std::uint32_t count = 0;
+    if (!in.u32(count)) {
+        return false;
+    }
+    for (std::uint32_t i = 0; i < count; ++i) {
+        std::string key, value;
+        if (!in.string(key) || !in.string(value)) {
+            return false;
+        }
+        diagnostics.emplace_back(std::move(key), std::move(value));
+    }
+    return true;
+}
+
 bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     Reader in(data, size);
     std::uint8_t kind, event, flag;
     std::string message, detail, file;
     std::uint32_t line;
+    TestMessage::Diagnostics diagnostics;
     if (!in.u8(kind) || !in.u8(event) || !in.u8(flag) || !in.i64(record.number) ||
         !in.string(record.name) || !in.string(message) || !in.string(detail) || !in.string(file) ||
-        !in.u32(line) || !in.u32(record.repetition) || !in.u32(record.repetitions) ||
-        !decodePayload(in, record) || !in.done()) {
+        !in.u32(line) || !decodeDiagnostics(in, diagnostics) || !in.u32(record.repetition) ||
+        !in.u32(record.repetitions) || !decodePayload(in, record) || !in.done()) {
         return false;
     }
     if (kind < 1 || kind > kLastKind || event > kLastEvent || flag > 1) {
@@ -190,6 +208,7 @@ bool decodeBody(const char* data, std::size_t size, WireRecord& record) {
     record.event = static_cast<ResultEvent::Kind>(event);
     record.flag = flag != 0;
     record.message = TestMessage(message, detail, file, line);
+    record.message.setDiagnostics(std::move(diagnostics));
     return true;
 }
 
@@ -234,6 +253,12 @@ void encode(const WireRecord& record, std::string& out) {
     putString(out, record.message.getDetail());
     putString(out, record.message.getSourceFileName());
     putU32(out, record.message.getSourceLineNumber());
+    // The message's diagnostics: their count, then each key and value.
+    putU32(out, static_cast<std::uint32_t>(record.message.getDiagnostics().size()));
+    for (const auto& [key, value] : record.message.getDiagnostics()) {
+        putString(out, key);
+        putString(out, value);
+    }
     putU32(out, record.repetition);
     putU32(out, record.repetitions);
     putPayload(out, record);

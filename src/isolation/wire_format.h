@@ -3,7 +3,8 @@
 //
 //   record  = u32 body-length, body                       (little-endian)
 //   body    = u8 kind, u8 event, u8 flag, i64 number, str name, str message, str detail,
-//             str file, u32 line, u32 repetition, u32 repetitions, payload
+//             str file, u32 line, diagnostics, u32 repetition, u32 repetitions, payload
+//   diagnostics = u32 count, count × (str key, str value)   (the message's diagnostics)
 //   payload = u8 0                                          (nothing)
 //           | u8 1, str name, f64 value, str unit, limit low, limit high   (a measurement)
 //           | u8 2, str path, str absolute-path, str description, str original-name, i64 size

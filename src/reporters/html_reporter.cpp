@@ -39,6 +39,9 @@ std::string messageData(const ResultEvent& event) {
         out += ",\"at\":" + jsonString(msg.getSourceFileName() + ":" +
                                        std::to_string(msg.getSourceLineNumber()));
     }
+    if (!msg.getDiagnostics().empty()) {
+        out += ",\"diagnostics\":" + jsonString(msg.diagnosticsText());
+    }
     if (isFailure(stateOf(event.kind)) || (isCheck(event.kind) && !event.passed)) {
         out += ",\"problem\":true";
     }

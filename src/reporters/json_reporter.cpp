@@ -1,5 +1,6 @@
 #include "reporters/json_reporter.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -62,8 +63,24 @@ std::string lines(const std::string& text) {
     return out + "]";
 }
 
-// The messages of `events` as [{"kind","message","time"}]: reports and checks (passed ones
-// when `passedChecks`), and with `all` every other kind too (a fixture's failures).
+// A message's diagnostics as a member of its object, `,"diagnostics":{"key":"value",...}` in
+// their order (a key given twice keeps its first value, as JSON readers differ on repeats);
+// "" without any.
+std::string diagnosticsMember(const TestMessage& msg) {
+    std::string out;
+    std::vector<std::string> seen;
+    for (const auto& [key, value] : msg.getDiagnostics()) {
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            continue;
+        }
+        seen.push_back(key);
+        out += std::string(out.empty() ? "" : ",") + jsonString(key) + ":" + jsonString(value);
+    }
+    return out.empty() ? out : ",\"diagnostics\":{" + out + "}";
+}
+
+// The messages of `events` as [{"kind","message","diagnostics","time"}]: reports and checks (passed
+// ones when `passedChecks`), and with `all` every other kind too (a fixture's failures).
 std::string messageList(const std::vector<ResultEvent>& events, long long origin, bool passedChecks,
                         bool all) {
     std::string out;
@@ -74,6 +91,7 @@ std::string messageList(const std::vector<ResultEvent>& events, long long origin
         out += std::string(out.empty() ? "" : ",") +
                "{\"kind\":" + jsonString(eventLabel(event.kind, event.passed)) +
                ",\"message\":" + jsonString(event.message.toString()) +
+               diagnosticsMember(event.message) +
                ",\"time\":" + std::to_string(origin + milliseconds(event.time)) + "}";
     }
     return "[" + out + "]";
@@ -270,7 +288,10 @@ void JsonReporter::writeDocument(ReportText& out) {
                std::to_string(collector_.countOf(status));
     }
     out += ",\"flaky\":" + std::to_string(collector_.countOf(TestStatus::Flaky));
-    out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount()) + "}}}";
+    out += ",\"suitesFailed\":" + std::to_string(collector_.failedSuiteCount());
+    // The fixtures that failed, counted among the failures by the console's summary and closing
+    // line ("failed: 3 (2 tests, 1 fixture)"): one count in every output.
+    out += ",\"fixturesFailed\":" + std::to_string(collector_.failedFixtureCount()) + "}}}";
     out += ",\"tests\":[";
     bool first = true;
     std::string fixtures;

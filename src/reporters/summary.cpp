@@ -22,13 +22,30 @@ std::string eventLabel(ResultEvent::Kind kind, bool passed) {
     return labelOf(kind, passed);
 }
 
-std::string messageText(const TestMessage& msg) {
+std::string messageLine(const TestMessage& msg) {
     std::string text = msg.toString();
     const std::string where = msg.getSourceLocation();
     if (!where.empty()) {
         text += " [" + where + "]";
     }
     return text;
+}
+
+std::string diagnosticsBlock(const TestMessage& msg) {
+    const std::string lines = msg.getDiagnostics().empty() ? "" : msg.diagnosticsText();
+    std::string block;
+    std::size_t begin = 0;
+    while (begin < lines.size()) {
+        std::size_t end = lines.find('\n', begin);
+        end = end == std::string::npos ? lines.size() : end;
+        block += "\n  " + lines.substr(begin, end - begin);
+        begin = end + 1;
+    }
+    return block;
+}
+
+std::string messageText(const TestMessage& msg) {
+    return messageLine(msg) + diagnosticsBlock(msg);
 }
 
 std::string shownMessage(const TestMessage& msg, const char* continuation) {
@@ -39,7 +56,8 @@ std::string traceText(const std::vector<ResultEvent>& events) {
     std::string out;
     for (const ResultEvent& event : events) {
         if (isFailure(stateOf(event.kind))) {
-            out += std::string(toString(event.kind)) + ": " + event.message.toString() + "\n";
+            out += std::string(toString(event.kind)) + ": " + event.message.toString() +
+                   diagnosticsBlock(event.message) + "\n";
         }
     }
     return out;

@@ -27,8 +27,14 @@ const char* colourOf(TestStatus status);
 const char* statusWord(TestStatus status);
 // What a message line starts with: "failure", "error", "check FAILED", ...
 std::string eventLabel(ResultEvent::Kind kind, bool passed);
-// "message: detail [file:line]".
+// "message: detail [file:line]", then the message's diagnostics (a TAP point's YAML keys) as
+// a block of lines under it (diagnosticsBlock).
 std::string messageText(const TestMessage& msg);
+// messageText's first line: "message: detail [file:line]", without the diagnostics.
+std::string messageLine(const TestMessage& msg);
+// The message's diagnostics as lines under it, each "\n  key: value" (a value that spans lines:
+// "\n  key:" and its lines indented two more); "" without any.
+std::string diagnosticsBlock(const TestMessage& msg);
 // messageText as a terminal or the text report shows it: control characters escaped, and each
 // line after its first starting with `continuation` (deeper than the line it is under), so
 // that no message fakes a line of the console (text_safety.h, visibleText).

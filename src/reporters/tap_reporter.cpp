@@ -1,6 +1,7 @@
 #include "reporters/tap_reporter.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <string>
 #include <unordered_map>
@@ -63,6 +64,37 @@ const char* severity(TestStatus status) {
     }
 }
 
+// A message's diagnostics as a YAML map, each "key: value" line after `indent` (keys and
+// values as JSON literals, which YAML reads as they are: the program's YAML was read, so what
+// is written here is always valid); "" without any.
+std::string diagnosticsMap(const TestMessage& msg, const std::string& indent) {
+    std::string text;
+    std::vector<std::string> seen;  // a key given twice is written once (YAML refuses repeats)
+    for (const auto& [key, value] : msg.getDiagnostics()) {
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) {
+            continue;
+        }
+        seen.push_back(key);
+        // A key of letters, digits and _ - . as it is (`found:`), any other quoted.
+        const bool plain = !key.empty() && std::isalpha(static_cast<unsigned char>(key[0])) &&
+                           std::all_of(key.begin(), key.end(), [](char c) {
+                               return std::isalnum(static_cast<unsigned char>(c)) || c == '_' ||
+                                      c == '-' || c == '.';
+                           });
+        text += indent + (plain ? key : jsonString(key)) + ": " + jsonString(value) + "\n";
+    }
+    return text;
+}
+
+// One item of a test's "messages:" list, after its "    - ": the line quoted, or when the
+// message has diagnostics, a map of its `text` and `diagnostics`.
+std::string messageItem(const std::string& line, const TestMessage& msg) {
+    if (msg.getDiagnostics().empty()) {
+        return jsonString(line) + "\n";
+    }
+    return "text: " + jsonString(line) + "\n      diagnostics:\n" + diagnosticsMap(msg, "        ");
+}
+
 // A test's reports and checks as YAML lines ("  messages:" and one item each), or nothing.
 std::string messageLines(const std::vector<std::string>& messages) {
     if (messages.empty()) {
@@ -70,7 +102,7 @@ std::string messageLines(const std::vector<std::string>& messages) {
     }
     std::string text = "  messages:\n";
     for (const std::string& message : messages) {
-        text += "    - " + jsonString(message) + "\n";
+        text += "    - " + message;
     }
     return text;
 }
@@ -88,6 +120,9 @@ std::string diagnostics(TestStatus status, const TestMessage& reason, const std:
     text += std::string("  severity: ") + severity(status) + "\n";
     if (!reason.getDetail().empty()) {
         text += "  data:\n    detail: " + jsonString(reason.getDetail()) + "\n";
+    }
+    if (!reason.getDiagnostics().empty()) {
+        text += "  diagnostics:\n" + diagnosticsMap(reason, "    ");
     }
     if (!reason.getSourceFileName().empty()) {
         text += "  at:\n    file: " + jsonString(reason.getSourceFileName()) +
@@ -296,7 +331,7 @@ void TapReporter::note(const Test* test, const ResultEvent& event) {
     if (message) {
         char at[32];
         std::snprintf(at, sizeof(at), "[%.3f s] ", collector_.duration());
-        line = at + std::string(labelOf(event.kind, event.passed)) + ": " + messageText(msg);
+        line = at + std::string(labelOf(event.kind, event.passed)) + ": " + messageLine(msg);
     }
     for (auto it = open_.rbegin(); it != open_.rend(); ++it) {
         if (it->id == idOf(test)) {
@@ -305,7 +340,7 @@ void TapReporter::note(const Test* test, const ResultEvent& event) {
                 it->reason = msg;
             }
             if (message) {
-                it->messages.push_back(line);
+                it->messages.push_back(messageItem(line, msg));
             }
             return;
         }
@@ -313,6 +348,9 @@ void TapReporter::note(const Test* test, const ResultEvent& event) {
     // Not a test's own: a fixture's, as the collector counts it. Its reports are comments.
     if (message) {
         blocks_.back().body += "# " + oneLine(line) + "\n";
+        for (const auto& [key, value] : msg.getDiagnostics()) {
+            blocks_.back().body += "#   " + oneLine(key + ": " + value) + "\n";
+        }
     }
     if (isFailure(state) && blocks_.size() > 1) {
         blocks_.back().fixtureProblems.push_back(msg);

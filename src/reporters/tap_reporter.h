@@ -51,8 +51,10 @@ private:
         TestStatus status = TestStatus::Passed;
         TestMessage reason;  // the first message of the state it has now
         std::string output;
-        std::size_t retries = 0;            // earlier failed attempts (--retries)
-        std::vector<std::string> messages;  // its reports and checks, "[time] kind: text"
+        std::size_t retries = 0;  // earlier failed attempts (--retries)
+        // Its reports and checks, each a YAML list item's text ("[time] kind: text" quoted, or
+        // with diagnostics a map of that `text` and its `diagnostics`; messageItem).
+        std::vector<std::string> messages;
         // How many measurements it gave: the collector keeps them, and the file is written
         // from its records (issue 22: 10 000 tests held their YAML until the end).
         std::size_t measurements = 0;

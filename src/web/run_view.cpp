@@ -347,6 +347,7 @@ void RunView::addMessage(std::uint64_t id, const char* kind, const TestMessage& 
     if (!msg.getDetail().empty()) {
         message.text += message.text.empty() ? msg.getDetail() : ": " + msg.getDetail();
     }
+    message.diagnostics = msg.getDiagnostics().empty() ? "" : msg.diagnosticsText();
     if (!msg.getSourceFileName().empty()) {
         message.where = msg.getSourceFileName();
         if (msg.getSourceLineNumber() > 0) {
@@ -495,6 +496,9 @@ Json toJson(const std::vector<RunView::Message>& messages) {
         Json item = {{"kind", message.kind}, {"text", message.text}, {"where", message.where}};
         if (!message.repetition.empty()) {
             item["repetition"] = message.repetition;
+        }
+        if (!message.diagnostics.empty()) {
+            item["diagnostics"] = message.diagnostics;
         }
         list.push_back(std::move(item));
     }

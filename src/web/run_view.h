@@ -105,8 +105,9 @@ public:
     struct Message {
         std::string kind;  // "failure", "error", "report", ...
         std::string text;
-        std::string where;       // "file:line" when known
-        std::string repetition;  // the id of the repetition it came in; empty for none
+        std::string where;        // "file:line" when known
+        std::string diagnostics;  // TestMessage::diagnosticsText: shown as a block under it
+        std::string repetition;   // the id of the repetition it came in; empty for none
     };
     // A test as the page shows it (the snapshot and each change of it).
     struct TestView {

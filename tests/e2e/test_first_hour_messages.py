@@ -3,10 +3,12 @@ pasted. A failed check showed both a "check FAILED:" and a "failure:" line; a po
 `measurements:` was pasted into the check's text (`check ok: ok 3 - loop rate: measurements:
 - name: ...`). Through the installed runner, from the suite's folder."""
 import json
+import re
+from xml.etree import ElementTree
 
 import pytest
 
-from conftest import run_runner
+from conftest import run_runner, validate_ctrf, validate_junit, validate_tap
 from web_run import WebRun, request
 
 TAP = """#!/bin/sh
@@ -53,7 +55,10 @@ def test_a_failed_check_is_one_line_and_yaml_is_not_pasted(tmp_path, jobs):
     assert "measurements:" not in r.stdout, r.stdout
     assert "name: rate" not in r.stdout, r.stdout
     if jobs == "1":  # -j N's console says failed checks only
-        assert "check ok: ok 3 - loop rate: note: fast enough" in r.stdout, r.stdout
+        # The other keys are the check's diagnostics: a block under its line, not its text.
+        assert "note: fast enough" not in r.stdout.split("loop rate")[1].splitlines()[0]
+        assert re.search(r"check ok: ok 3 - loop rate \[\S+points.sh:\d+\]\n +note: fast enough\n",
+                         r.stdout), r.stdout
     text = (tmp_path / "r.txt").read_text()
     assert "measurements:" not in text, text
     assert "measurement: rate = 99.5 Hz" in text, text
@@ -106,3 +111,101 @@ def test_the_html_report_and_the_live_page_say_a_failed_check_once(tmp_path):
         assert run.wait(timeout=10) == 1
     finally:
         run.kill()
+
+
+# A failing point's YAML block as node-tap and TAP 14's examples write one: message, severity,
+# found/wanted, at (a map), data (a list), a key of the program's own (given twice: its last
+# value, once).
+DIAGNOSED = """#!/bin/sh
+echo 'TAP version 14'
+echo '1..2'
+echo 'not ok 1 - gripper closes'
+echo '  ---'
+echo '  message: "the gripper is still open"'
+echo '  severity: fail'
+echo '  found: 3'
+echo '  wanted: 4'
+echo '  at:'
+echo '    file: gripper.c'
+echo '    line: 12'
+echo '  data:'
+echo '    - 1'
+echo '    - 2'
+echo '  torque: 0.4 Nm'
+echo '  torque: 0.5 Nm'
+echo '  ...'
+echo 'ok 2 - arm moves'
+"""
+KEYS = {"message": "the gripper is still open", "severity": "fail", "found": "3", "wanted": "4",
+        "at": "file: gripper.c\nline: 12", "data": "- 1\n- 2", "torque": "0.5 Nm"}
+BLOCK = ["message: the gripper is still open", "severity: fail", "found: 3", "wanted: 4", "at:",
+         "  file: gripper.c", "  line: 12", "data:", "  - 1", "  - 2", "torque: 0.5 Nm"]
+
+
+def block_under(text, line):
+    """The lines under the first line of `text` that contains `line`, unindented by the first
+    one's indent, as long as they are indented deeper than that line."""
+    lines = text.splitlines()
+    at = next(i for i, l in enumerate(lines) if line in l)
+    depth = len(lines[at]) - len(lines[at].lstrip())
+    found = []
+    for l in lines[at + 1:]:
+        if len(l) - len(l.lstrip()) <= depth:
+            break
+        found.append(l)
+    first = len(found[0]) - len(found[0].lstrip()) if found else 0
+    return [l[first:] for l in found]
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_points_yaml_keys_are_diagnostics_in_every_report(tmp_path, jobs):
+    """Issue 38, friction 9: the keys of a point's YAML block other than measurements and
+    attachments were pasted into the check's one-line text. They are its diagnostics: a block of
+    their own under the line on the console and in the text report, the <failure> body and
+    <system-out> of JUnit (xmllint with junit-10.xsd, junitparser), a YAML map re-emitted in the
+    TAP report (tap-parser), a "diagnostics" object in CTRF (its schema), and a block of its own
+    in the HTML report's data; the one-line text is the point's alone everywhere."""
+    (tmp_path / "gripper.sh").write_text(DIAGNOSED)
+    (tmp_path / "gripper.sh").chmod(0o755)
+    (tmp_path / "suite.xml").write_text("""<suite name="robot">
+  <test type="exec">gripper.sh</test>
+</suite>
+""")
+    r = run_runner("-s", "suite.xml", "-j", jobs, "-o", "junit:r.xml", "-o", "tap:r.tap",
+                   "-o", "json:r.json", "-o", "text:r.txt", "-o", "html:r.html", cwd=tmp_path)
+    assert r.returncode == 1, r
+    line = "failure: not ok 1 - gripper closes ["
+    for text in (r.stdout, (tmp_path / "r.txt").read_text()):
+        said = next(l for l in text.splitlines() if line in l)
+        assert said.rstrip().endswith("gripper.sh:3]"), text  # nothing pasted after it
+        assert block_under(text, line) == BLOCK, text
+        assert text.count("the gripper is still open") == 1, text
+    # JUnit: message= is the point; the body says the point, then its diagnostics under it.
+    validate_junit(tmp_path / "r.xml")
+    case = ElementTree.parse(tmp_path / "r.xml").getroot().find(".//testcase")
+    failure = case.find("failure")
+    assert failure.get("message") == "not ok 1 - gripper closes", failure.attrib
+    assert block_under(failure.text, line) == BLOCK, failure.text
+    assert block_under(case.find("system-out").text, "check FAILED: not ok 1") == BLOCK
+    # TAP: tap-parser reads the keys back from the test's YAML block.
+    tap = validate_tap(tmp_path / "r.tap")
+    point = next(p for p in tap["points"] if p["name"] == "gripper.sh")
+    assert point["diag"]["message"] == "not ok 1 - gripper closes", point
+    assert point["diag"]["diagnostics"] == KEYS, point
+    failed_check = next(m for m in point["diag"]["messages"]
+                        if isinstance(m, dict) and "check FAILED" in m["text"])
+    assert failed_check["diagnostics"] == KEYS, point
+    # CTRF: the test's message is the point; its trace has the block; its reports the keys.
+    report = validate_ctrf(tmp_path / "r.json")
+    test = report["results"]["tests"][0]
+    assert test["message"] == "not ok 1 - gripper closes", test
+    assert block_under(test["trace"], "failure: not ok 1") == BLOCK, test["trace"]
+    checks = test["extra"]["robotology.rtf"]["reports"]
+    failed = next(c for c in checks if c["kind"] == "check FAILED")
+    assert failed["message"] == "not ok 1 - gripper closes", checks
+    assert failed["diagnostics"] == KEYS, checks
+    assert list(failed["diagnostics"]) == list(KEYS)  # in the program's order
+    # HTML: the page's data gives each message its diagnostics apart from its text.
+    html = (tmp_path / "r.html").read_text()
+    assert '"text":"not ok 1 - gripper closes"' in html, html[:2000]
+    assert '"diagnostics":"message: the gripper is still open\\nseverity: fail' in html

@@ -76,9 +76,10 @@ public:
             return;
         }
         ++(failed ? failedShown_ : shown_);
-        // The YAML's measurements and attachments are recorded as such, not pasted in the text.
-        TestMessage message(pointLabel(point), withoutTapRecords(point.diagnostics), path_,
-                            point.line);
+        // The YAML's measurements and attachments are recorded as such, and its other keys
+        // are the message's diagnostics: none of it is pasted into the point's text.
+        TestMessage message(pointLabel(point), "", path_, point.line);
+        message.setDiagnostics(tapDiagnostics(withoutTapRecords(point.diagnostics)));
         if (point.directive != TapPoint::Directive::None && !point.ok) {
             // TODO: expected to fail; SKIP: TAP 14 says a failing skipped point is no failure.
             Asserter::report(message, test_);

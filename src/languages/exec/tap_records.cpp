@@ -1,5 +1,6 @@
 #include "languages/exec/tap_records.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -231,6 +232,152 @@ std::string withoutTapRecords(const std::string& diagnostics) {
         }
     }
     return anyKept ? kept : std::string();
+}
+
+namespace {
+
+// The lines of `text`, '\r' dropped.
+std::vector<std::string> linesOf(const std::string& text) {
+    std::vector<std::string> lines;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        end = end == std::string::npos ? text.size() : end;
+        std::string line = text.substr(begin, end - begin);
+        if (!line.empty() && line.back() == '\r') {
+            line.pop_back();
+        }
+        lines.push_back(std::move(line));
+        begin = end + 1;
+    }
+    return lines;
+}
+
+// Where a top-level `key:` ends (the colon), or npos: a key is plain or quoted text followed
+// by ':' and a space or the line's end, not a list item.
+std::size_t keyEnd(const std::string& content) {
+    if (content.empty() || content[0] == '-' || content[0] == '#') {
+        return std::string::npos;
+    }
+    std::size_t from = 0;
+    if (content[0] == '"' || content[0] == '\'') {
+        from = content.find(content[0], 1);
+        if (from == std::string::npos) {
+            return std::string::npos;
+        }
+    }
+    for (std::size_t at = content.find(':', from); at != std::string::npos;
+         at = content.find(':', at + 1)) {
+        if (at + 1 == content.size() || content[at + 1] == ' ') {
+            return at;
+        }
+    }
+    return std::string::npos;
+}
+
+// `lines` unindented by the least indent among them, blank lines kept empty, trailing ones
+// dropped; joined with '\n'.
+std::string unindented(const std::vector<std::string>& lines) {
+    std::size_t least = std::string::npos;
+    for (const std::string& line : lines) {
+        if (!trimmed(line).empty()) {
+            least = std::min(least, indentOf(line));
+        }
+    }
+    std::string text;
+    std::size_t pendingBlank = 0;
+    for (const std::string& line : lines) {
+        if (trimmed(line).empty()) {
+            ++pendingBlank;
+            continue;
+        }
+        if (!text.empty()) {
+            text += std::string(pendingBlank + 1, '\n');
+        }
+        pendingBlank = 0;
+        text += line.substr(least);
+    }
+    return text;
+}
+
+}  // namespace
+
+TestMessage::Diagnostics tapDiagnostics(const std::string& diagnostics) {
+    const std::vector<std::string> lines = linesOf(diagnostics);
+    std::size_t base = std::string::npos;
+    for (const std::string& line : lines) {
+        const std::string content = trimmed(line);
+        if (!content.empty() && content[0] != '#') {
+            base = indentOf(line);
+            break;
+        }
+    }
+    TestMessage::Diagnostics found;
+    if (base == std::string::npos) {
+        return found;
+    }
+    // The key being read: its inline value, and the lines below it.
+    std::string key, inline_;
+    bool haveKey = false;
+    std::vector<std::string> below;
+    auto close = [&]() {
+        if (!haveKey) {
+            return;
+        }
+        std::string value;
+        const std::string block = unindented(below);
+        if (inline_.empty()) {
+            value = block;  // a nested map or list
+        } else if (inline_[0] == '|' || inline_[0] == '>') {
+            value = block;  // a block scalar, its lines as written
+        } else {
+            value = scalar(inline_);
+            if (!block.empty()) {  // a plain scalar that goes on below
+                value += "\n" + block;
+            }
+        }
+        // A key given again: its last value, in the first one's place (as YAML readers that
+        // allow repeats read it; the reports write each key once).
+        const auto given = std::find_if(found.begin(), found.end(),
+                                        [&](const auto& entry) { return entry.first == key; });
+        if (given == found.end()) {
+            found.emplace_back(key, value);
+        } else {
+            given->second = value;
+        }
+        below.clear();
+        haveKey = false;
+    };
+    for (const std::string& line : lines) {
+        const std::string content = trimmed(line);
+        if (content.empty() || content[0] == '#') {
+            if (haveKey && !content.empty() && indentOf(line) > base) {
+                below.push_back(line);
+            } else if (haveKey && content.empty()) {
+                below.push_back(std::string());
+            }
+            continue;
+        }
+        const std::size_t colon = indentOf(line) == base ? keyEnd(content) : std::string::npos;
+        if (colon == std::string::npos) {
+            if (!haveKey) {
+                key = "yaml";
+                inline_.clear();
+                haveKey = true;
+            }
+            below.push_back(line);
+            continue;
+        }
+        close();
+        key = scalar(content.substr(0, colon));
+        inline_ = trimmed(content.substr(colon + 1));
+        if (!inline_.empty() && inline_[0] == '#') {
+            inline_.clear();
+        }
+        haveKey = true;
+    }
+    close();
+    return found;
 }
 
 }  // namespace languages

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include <robottestingframework/Measurement.h>
+#include <robottestingframework/TestMessage.h>
 
 namespace robottestingframework {
 namespace languages {
@@ -45,6 +46,15 @@ TapRecords readTapRecords(const std::string& diagnostics);
 // its indented lines), which readTapRecords turns into measurements and attachments: the rest
 // is the point's detail ("" when nothing is left).
 std::string withoutTapRecords(const std::string& diagnostics);
+
+// The top-level keys of a point's YAML block (what withoutTapRecords leaves), in order, each
+// with its value as text: a scalar unquoted (`message: "the gripper is open"` gives `the
+// gripper is open`), a block scalar (`|`, `>`) or a nested block (a map, a list: `at:` with
+// its `file:` and `line:`) as its lines, unindented to the block's first line. Lines that are
+// no `key:` of the top level stay with the key before them; before any key, they are the
+// value of a key "yaml". Comments and blank lines between keys are dropped; a key given twice
+// keeps its last value, in its first place.
+TestMessage::Diagnostics tapDiagnostics(const std::string& diagnostics);
 
 }  // namespace languages
 }  // namespace robottestingframework

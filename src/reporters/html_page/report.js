@@ -77,6 +77,8 @@
     if (m.time !== undefined) line.appendChild(el("span", "msg-time", at(m.time)));
     line.appendChild(document.createTextNode(m.label + ": " + m.text +
         (m.at ? "  [" + m.at + "]" : "")));
+    // Its diagnostics (a TAP point's YAML keys): a block of their own under the line.
+    if (m.diagnostics) line.appendChild(el("pre", "msg-diagnostics", m.diagnostics));
     return line;
   };
   // A test's measurements: a row per name with its last value, its limits, a plot of its values

@@ -11,6 +11,10 @@ constexpr int somethingFailed = 1;
 constexpr int configurationError = 2;
 // No test selected (unless --allow-empty): pytest's code for "no tests collected".
 constexpr int nothingSelected = 5;
+// --world-down of a world that never started (its --world-up failed and said why): nothing to
+// stop. The automake convention for "skipped", which robottestingframework_discover_tests gives
+// CTest as the world:down test's SKIP_RETURN_CODE: the world's failure is counted once.
+constexpr int worldNeverStarted = 77;
 
 // Interrupted: 128 + the signal, as shells report it (130 for Ctrl-C, 143 for SIGTERM).
 constexpr int interruptedBy(int signal) {

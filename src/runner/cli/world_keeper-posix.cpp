@@ -400,6 +400,14 @@ bool readStarterMessage(int fd, WorldOutcome& outcome) {
     }
 }
 
+// What --world-down reads to tell a world that never started from a keeper that ended.
+void noteWorldFailed(const std::string& folder, const std::string& reason) {
+    if (std::FILE* file = std::fopen(worldFailedPath(folder).c_str(), "w")) {
+        std::fprintf(file, "%s\n", reason.c_str());
+        std::fclose(file);
+    }
+}
+
 void printLines(std::FILE* stream, const std::string& text) {
     if (!text.empty()) {
         std::fprintf(stream, "%s%s", text.c_str(), text.back() == '\n' ? "" : "\n");
@@ -422,6 +430,7 @@ int worldUpCommand(Options& options, PlannedRun& planned, RunInputs& inputs) {
                      folder.c_str(), failure.message().c_str());
         return configurationError;
     }
+    std::filesystem::remove(worldFailedPath(folder), failure);
     {
         std::string ignored;
         if (platform::connectLocal(folder, "keeper.sock", ignored).valid()) {
@@ -488,9 +497,11 @@ int worldUpCommand(Options& options, PlannedRun& planned, RunInputs& inputs) {
                      "%s: --world-up %s: the world keeper ended before its world was up; see "
                      "%s\n",
                      programName, folder.c_str(), log.c_str());
+        noteWorldFailed(folder, "the world keeper ended before its world was up; see " + log);
         return somethingFailed;
     }
     if (!outcome.passed) {
+        noteWorldFailed(folder, outcome.text);
         printLines(stderr, outcome.text);
         std::fprintf(stdout, "%s: the world of suite %s failed to start (log: %s)\n", programName,
                      suiteName.c_str(), log.c_str());
@@ -505,6 +516,13 @@ int worldDownCommand(const Options& options) {
     const std::string& folder = options.worldDown;
     std::string error;
     platform::FileDescriptor socket = platform::connectLocal(folder, "keeper.sock", error);
+    if (!socket.valid() && ::access(worldFailedPath(folder).c_str(), F_OK) == 0) {
+        std::fprintf(stdout,
+                     "%s: --world-down %s: the world never started (its --world-up failed and "
+                     "counts that failure; see %s): nothing to stop\n",
+                     programName, folder.c_str(), worldLogPath(folder).c_str());
+        return worldNeverStarted;
+    }
     if (!socket.valid()) {
         const std::string log = worldLogPath(folder);
         const std::string hint = ::access(log.c_str(), F_OK) == 0

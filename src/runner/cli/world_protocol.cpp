@@ -36,6 +36,10 @@ std::string worldLogPath(const std::string& folder) {
     return folder + "/keeper.log";
 }
 
+std::string worldFailedPath(const std::string& folder) {
+    return folder + "/world-failed";
+}
+
 WorldRequest parseWorldRequest(const std::string& packet) {
     if (packet == "status") {
         return WorldRequest::Status;

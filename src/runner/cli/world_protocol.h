@@ -17,6 +17,10 @@ constexpr const char* sharedWorldKeeperPrefix = "shared world ";
 // The control socket and the keeper's log in a keeper's folder.
 std::string worldSocketPath(const std::string& folder);
 std::string worldLogPath(const std::string& folder);
+// Written by --world-up when its world failed to start (the reason, as it printed it), removed
+// when a world is set up there again: --world-down then has nothing to stop, and says so with
+// worldNeverStarted, so that CTest counts the world's failure once, in its world:up test.
+std::string worldFailedPath(const std::string& folder);
 
 // A request: "status" (is the world up? its network) or "down" (tear it down and say how).
 enum class WorldRequest { Status, Down, Unknown };

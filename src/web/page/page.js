@@ -62,6 +62,8 @@ function messagesList(messages, hidden) {
     item.appendChild(element("span", "kind", message.kind + ":"));
     item.appendChild(document.createTextNode(message.text));
     if (message.where) item.appendChild(element("span", "where", "[" + message.where + "]"));
+    // Its diagnostics (a TAP point's YAML keys): a block of their own under the line.
+    if (message.diagnostics) item.appendChild(element("pre", "diagnostics", message.diagnostics));
     list.appendChild(item);
   }
   if (hidden > 0) {

@@ -23,6 +23,8 @@ WireRecord sample() {
     record.name = "arm test";
     record.message =
         TestMessage("joint 3 \xc3\xa9 in range", std::string("a\0b", 3), "arm.cpp", 42);
+    // A TAP point's diagnostics travel with it (issue 38, friction 9).
+    record.message.setDiagnostics({{"got", "3"}, {"at", "file: t.sh\nline: 3"}});
     record.flag = false;
     record.number = -1234567890123LL;
     record.repetition = 7;
@@ -38,6 +40,7 @@ void expectSame(const WireRecord& a, const WireRecord& b) {
     EXPECT_EQ(a.message.getDetail(), b.message.getDetail());
     EXPECT_EQ(a.message.getSourceFileName(), b.message.getSourceFileName());
     EXPECT_EQ(a.message.getSourceLineNumber(), b.message.getSourceLineNumber());
+    EXPECT_EQ(a.message.getDiagnostics(), b.message.getDiagnostics());
     EXPECT_EQ(a.flag, b.flag);
     EXPECT_EQ(a.number, b.number);
     EXPECT_EQ(a.repetition, b.repetition);

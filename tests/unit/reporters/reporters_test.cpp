@@ -325,3 +325,19 @@ TEST(Reporter, WritesTheSameTextAsItsDocumentABlockAtATime) {
     EXPECT_EQ(left, (std::vector<std::string>{"report.html", "report.json", "report.junit",
                                               "report.tap", "report.text"}));
 }
+
+// Issue 38, friction 9: a message's diagnostics are a block of lines under its one-line text
+// (the console, the text and JUnit reports), never pasted into it.
+TEST(Summary, DiagnosticsAreABlockUnderTheMessageLine) {
+    robottestingframework::TestMessage message("not ok 2 - gripper closes", "", "g.sh", 4);
+    message.setDiagnostics({{"found", "3"}, {"at", "file: g.c\nline: 12"}});
+    EXPECT_EQ(robottestingframework::reporters::messageLine(message),
+              "not ok 2 - gripper closes [g.sh:4]");
+    EXPECT_EQ(robottestingframework::reporters::messageText(message),
+              "not ok 2 - gripper closes [g.sh:4]\n  found: 3\n  at:\n    file: g.c\n    line: 12");
+    EXPECT_EQ(robottestingframework::reporters::shownMessage(message, "    "),
+              "not ok 2 - gripper closes [g.sh:4]\n      found: 3\n      at:\n        file: g.c\n"
+              "        line: 12");
+    robottestingframework::TestMessage plain("ok 1", "x > 0");
+    EXPECT_EQ(robottestingframework::reporters::messageText(plain), "ok 1: x > 0");
+}

@@ -61,6 +61,25 @@ TEST(RunView, PlannedTestsAreNotRunUntilTheyStart) {
     EXPECT_EQ(reach["messages"][0]["where"], "reach.cpp:12");
 }
 
+// Issue 38, friction 9: a message's diagnostics (a TAP point's YAML keys) reach the page apart
+// from its text, which the page shows as a block under the line.
+TEST(RunView, AMessagesDiagnosticsAreApartFromItsText) {
+    RunView view(false);
+    view.startRun();
+    view.startSuite("arm", {{1, "grip"}});
+    view.startTest(1, "grip");
+    TestMessage message("not ok 1 - gripper closes", "", "grip.sh", 3);
+    message.setDiagnostics({{"found", "3"}, {"wanted", "4"}});
+    view.addMessage(1, "failure", message, TestStatus::Failed);
+    view.addMessage(1, "report", TestMessage("plain"), TestStatus::Passed);
+    view.endTest(1);
+    auto snapshot = nlohmann::json::parse(view.snapshotJson());
+    const auto& messages = snapshot["suites"][0]["tests"][0]["messages"];
+    EXPECT_EQ(messages[0]["text"], "not ok 1 - gripper closes");
+    EXPECT_EQ(messages[0]["diagnostics"], "found: 3\nwanted: 4\n");
+    EXPECT_FALSE(messages[1].contains("diagnostics"));
+}
+
 TEST(RunView, ARepeatedOrUnplannedTestGetsARowOfItsOwn) {
     RunView view(false);
     view.startSuite("s", {{1, "t"}});

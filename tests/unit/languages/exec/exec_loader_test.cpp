@@ -68,7 +68,10 @@ TEST(ExecLoader, TapPointsBecomeChecks) {
     EXPECT_TRUE(first->passed);
     const ResultEvent* failure = run.find(Kind::Failure, "not ok 2 - second");
     ASSERT_NE(failure, nullptr);
-    EXPECT_EQ(failure->message.getDetail(), "got: 4\n");
+    // Its YAML block is diagnostics, not text after the point's (issue 38, friction 9).
+    EXPECT_EQ(failure->message.getDetail(), "");
+    EXPECT_EQ(failure->message.getDiagnostics(),
+              (robottestingframework::TestMessage::Diagnostics{{"got", "4"}}));
     EXPECT_EQ(failure->message.getSourceLineNumber(), 4u);
     EXPECT_NE(run.find(Kind::Report, "not ok 3 - later # TODO not yet"), nullptr);
     EXPECT_NE(run.find(Kind::Report, "# a comment"), nullptr);

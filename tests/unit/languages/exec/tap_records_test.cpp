@@ -5,7 +5,9 @@
 
 #include "languages/exec/tap_records.h"
 
+using robottestingframework::TestMessage;
 using robottestingframework::languages::readTapRecords;
+using robottestingframework::languages::tapDiagnostics;
 using robottestingframework::languages::withoutTapRecords;
 
 TEST(TapRecords, ReadsMeasurementsWithAndWithoutLimits) {
@@ -70,7 +72,7 @@ TEST(TapRecords, YamlInfinityIsKeptToBeRefusedByName) {
 }
 
 // Issue 38, friction 9: the YAML's measurements and attachments are not pasted in the point's
-// text; the other keys stay its detail.
+// text; the other keys are its diagnostics (tapDiagnostics).
 TEST(TapRecords, WithoutTapRecordsKeepsOnlyTheOtherKeys) {
     EXPECT_EQ(withoutTapRecords("  message: \"fine\"\n"
                                 "  measurements:\n"
@@ -83,4 +85,54 @@ TEST(TapRecords, WithoutTapRecordsKeepsOnlyTheOtherKeys) {
     EXPECT_EQ(withoutTapRecords("measurements:\n  - name: rate\n    value: 99.5\n"), "");
     EXPECT_EQ(withoutTapRecords("note: fast enough\n"), "note: fast enough\n");
     EXPECT_EQ(withoutTapRecords(""), "");
+}
+
+// Issue 38, friction 9: a point's other YAML keys are diagnostics, each key with its value,
+// not text pasted after the point's.
+TEST(TapRecords, TapDiagnosticsReadsEachTopLevelKey) {
+    const TestMessage::Diagnostics found = tapDiagnostics(
+        "  message: \"the gripper is open\"\n"
+        "  severity: fail\n"
+        "  # a comment\n"
+        "  got: 3\n"
+        "  wanted: 'four'\n"
+        "  at:\n"
+        "    file: test/gripper.js\n"
+        "    line: 12\n"
+        "  list:\n"
+        "  - a\n"
+        "  - b\n"
+        "  stack: |\n"
+        "    first\n"
+        "      second\n"
+        "  \"odd key\": x # comment\n"
+        "  url: http://h:80/p\n");
+    const TestMessage::Diagnostics expected{{"message", "the gripper is open"},
+                                            {"severity", "fail"},
+                                            {"got", "3"},
+                                            {"wanted", "four"},
+                                            {"at", "file: test/gripper.js\nline: 12"},
+                                            {"list", "- a\n- b"},
+                                            {"stack", "first\n  second"},
+                                            {"odd key", "x"},
+                                            {"url", "http://h:80/p"}};
+    EXPECT_EQ(found, expected);
+}
+
+TEST(TapRecords, TapDiagnosticsKeepsWhatIsNoKeyWithTheKeyBefore) {
+    EXPECT_EQ(tapDiagnostics(""), TestMessage::Diagnostics{});
+    EXPECT_EQ(tapDiagnostics("# only a comment\n"), TestMessage::Diagnostics{});
+    EXPECT_EQ(tapDiagnostics("- one\n- two\n"),
+              (TestMessage::Diagnostics{{"yaml", "- one\n- two"}}));
+    EXPECT_EQ(tapDiagnostics("got: 1\nwanted: 2\ngot: 3\n"),
+              (TestMessage::Diagnostics{{"got", "3"}, {"wanted", "2"}}));
+    EXPECT_EQ(tapDiagnostics("note: a long\n  sentence\nnext: 1\n"),
+              (TestMessage::Diagnostics{{"note", "a long\nsentence"}, {"next", "1"}}));
+}
+
+TEST(TapRecords, DiagnosticsTextIsOneLinePerKeyAndTheLinesOfABlock) {
+    TestMessage message("ok 3 - loop rate");
+    message.setDiagnostics({{"note", "fast enough"}, {"at", "file: t.sh\nline: 3"}});
+    EXPECT_EQ(message.diagnosticsText(), "note: fast enough\nat:\n  file: t.sh\n  line: 3\n");
+    EXPECT_EQ(message.toString(), "ok 3 - loop rate");
 }

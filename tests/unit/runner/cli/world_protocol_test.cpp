@@ -57,6 +57,7 @@ TEST(WorldProtocol, AnOutcomeCarriesItsText) {
 TEST(WorldProtocol, TheKeepersFilesAreInItsFolder) {
     EXPECT_EQ(worldSocketPath("/b/w"), "/b/w/keeper.sock");
     EXPECT_EQ(worldLogPath("/b/w"), "/b/w/keeper.log");
+    EXPECT_EQ(worldFailedPath("/b/w"), "/b/w/world-failed");
 }
 
 TEST(WorldOptions, OneOfTheWorldOptionsAtATime) {
