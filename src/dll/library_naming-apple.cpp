@@ -9,7 +9,7 @@
 namespace robottestingframework {
 namespace plugin {
 
-const LibraryNaming kLibraryNaming{"lib", ".dylib", "DYLD_LIBRARY_PATH", ':'};
+const LibraryNaming kLibraryNaming{"lib", ".dylib", "DYLD_LIBRARY_PATH", ':', "/", false};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;

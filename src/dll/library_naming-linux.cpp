@@ -41,7 +41,7 @@ void readLoaderConfig(const std::string& file, std::vector<std::string>& out, in
 
 }  // namespace
 
-const LibraryNaming kLibraryNaming{"lib", ".so", "LD_LIBRARY_PATH", ':'};
+const LibraryNaming kLibraryNaming{"lib", ".so", "LD_LIBRARY_PATH", ':', "/", false};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;

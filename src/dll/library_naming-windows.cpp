@@ -8,7 +8,7 @@
 namespace robottestingframework {
 namespace plugin {
 
-const LibraryNaming kLibraryNaming{"lib", ".dll", "PATH", ';'};
+const LibraryNaming kLibraryNaming{"lib", ".dll", "PATH", ';', "/\\", true};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;

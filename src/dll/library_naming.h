@@ -13,10 +13,14 @@ namespace plugin {
 
 // How the system's loader names libraries and lists folders.
 struct LibraryNaming {
-    const char* prefix;        // of a library's file name: "lib"
-    const char* suffix;        // ".so", ".dylib", ".dll"
-    const char* pathVariable;  // see libraryPathVariable()
-    char pathListSeparator;    // see pathListSeparator()
+    const char* prefix;            // of a library's file name: "lib"
+    const char* suffix;            // ".so", ".dylib", ".dll"
+    const char* pathVariable;      // see libraryPathVariable()
+    char pathListSeparator;        // see pathListSeparator()
+    const char* folderSeparators;  // what may end a folder's name: "/", on Windows "/\\"
+    // The loader looks in the program's folder before the path variable (Windows): so does
+    // SharedLibrary::searchPath() with the folder of RTF_dll.
+    bool ownFolderFirst;
 };
 // This system's, in library_naming-<system>.cpp.
 extern const LibraryNaming kLibraryNaming;
