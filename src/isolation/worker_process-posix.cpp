@@ -115,23 +115,8 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     }
 }
 
-bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
-    if (!backlog_.empty()) {
-        if (woken != nullptr) {
-            *woken = false;
-        }
-        records.insert(records.end(), backlog_.begin(), backlog_.end());
-        backlog_.clear();
-        return true;
-    }
-    return collect(timeoutMs, records, wake, woken);
-}
-
 bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int wake,
                             bool* woken) {
-    if (woken != nullptr) {
-        *woken = false;
-    }
     if (exited_) {
         return true;
     }

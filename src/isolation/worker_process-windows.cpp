@@ -81,15 +81,8 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     exited_ = true;
 }
 
-bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
-    return collect(timeoutMs, records, wake, woken);
-}
-
 bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int wake,
                             bool* woken) {
-    if (woken != nullptr) {
-        *woken = false;
-    }
     if (exited_) {
         return true;
     }

@@ -58,6 +58,18 @@ void WorkerProcess::readOutput(bool all) {
     }
 }
 
+bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
+    if (woken != nullptr) {
+        *woken = false;
+    }
+    if (!backlog_.empty()) {
+        records.insert(records.end(), backlog_.begin(), backlog_.end());
+        backlog_.clear();
+        return true;
+    }
+    return collect(timeoutMs, records, wake, woken);
+}
+
 void WorkerProcess::drainOutput() {
     if (output_fd_.valid()) {
         readOutput(true);

@@ -69,7 +69,8 @@ public:
 private:
     // Reads until the server reported the pid (or the worker ended); false after `seconds`.
     bool learnPid(double seconds);
-    // pump() without the backlog.
+    // pump() without the backlog; sets `woken` only when `wake` became readable (pump() clears
+    // it first).
     bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
     // Read in 64 KiB: less means the pipe was emptied, and the next poll says when more comes.
     static constexpr long kReadSize = 65536;
