@@ -1,8 +1,6 @@
 #include "reporters/standard_output.h"
 
-#include <cstdio>
-#include <iostream>
-
+#include "platform/output_file.h"
 #include "reporters/standard_output_descriptor.h"
 
 namespace robottestingframework {
@@ -13,13 +11,6 @@ namespace {
 // The standard output the reports write to when keepStandardOutputForReports() moved it.
 int reportsOutput = -1;
 
-void flushStreams() {
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(stdout);
-    std::fflush(stderr);
-}
-
 }  // namespace
 
 bool namesStandardOutput(const std::string& filename) {
@@ -27,7 +18,7 @@ bool namesStandardOutput(const std::string& filename) {
 }
 
 int openStandardOutput() {
-    flushStreams();
+    platform::flushStandardStreams();
     return duplicateDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
 }
 
@@ -35,7 +26,7 @@ bool keepStandardOutputForReports() {
     if (reportsOutput >= 0) {
         return true;
     }
-    flushStreams();
+    platform::flushStandardStreams();
     const int kept = duplicateDescriptor(standardOutputDescriptor);
     if (kept < 0) {
         return false;
