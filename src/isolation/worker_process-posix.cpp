@@ -156,18 +156,11 @@ void WorkerProcess::signal(int signal) {
 bool WorkerProcess::stop(double grace, std::vector<WireRecord>& records) {
     signal(SIGTERM);
     signal(SIGCONT);  // a stopped worker acts on SIGTERM only once continued
-    platform::Deadline polite(grace > 0 ? grace : 1e-6);
-    while (!exited_ && !polite.expired()) {
-        pump(polite.remainingMs(100), records);
-    }
-    if (exited_) {
+    if (pumpUntilEnd(grace > 0 ? grace : 1e-6, records)) {
         return true;
     }
     signal(SIGKILL);
-    platform::Deadline hard(10.0);
-    while (!exited_ && !hard.expired()) {
-        pump(hard.remainingMs(100), records);
-    }
+    pumpUntilEnd(kKilledSeconds, records);
     return false;
 }
 

@@ -125,10 +125,7 @@ void WorkerProcess::signal(int) {
 
 bool WorkerProcess::stop(double, std::vector<WireRecord>& records) {
     signal(0);
-    platform::Deadline hard(10.0);
-    while (!exited_ && !hard.expired()) {
-        pump(hard.remainingMs(100), records);
-    }
+    pumpUntilEnd(kKilledSeconds, records);
     // Nothing polite was tried, so nothing was ignored: not "it ignored SIGTERM".
     return true;
 }

@@ -3,6 +3,8 @@
 // platform's (worker_process-posix.cpp: through the fork server; -windows.cpp: a job object).
 #include "isolation/worker_process.h"
 
+#include "platform/clock.h"
+
 namespace robottestingframework {
 namespace isolation {
 
@@ -68,6 +70,14 @@ bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wa
         return true;
     }
     return collect(timeoutMs, records, wake, woken);
+}
+
+bool WorkerProcess::pumpUntilEnd(double seconds, std::vector<WireRecord>& records) {
+    platform::Deadline deadline(seconds);
+    while (!exited_ && !deadline.expired()) {
+        pump(deadline.remainingMs(100), records);
+    }
+    return exited_;
 }
 
 void WorkerProcess::drainOutput() {

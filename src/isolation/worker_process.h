@@ -79,6 +79,10 @@ private:
     void readChannel(std::vector<WireRecord>& records, bool all);
     void readOutput(bool all);
     void readStatus(std::vector<WireRecord>& records);
+    // Pumps (into `records`) until the worker ended or `seconds` passed; true when it ended.
+    bool pumpUntilEnd(double seconds, std::vector<WireRecord>& records);
+    // How long a killed worker is waited for.
+    static constexpr double kKilledSeconds = 10.0;
 
     platform::FileDescriptor channel_, output_fd_, status_fd_;
     WireDecoder events_, statuses_;
