@@ -1,12 +1,14 @@
 #include "reporters/standard_output.h"
 
 #include "platform/output_file.h"
-#include "reporters/standard_output_descriptor.h"
 
 namespace robottestingframework {
 namespace reporters {
 
 namespace {
+
+constexpr int standardOutputDescriptor = 1;
+constexpr int standardErrorDescriptor = 2;
 
 // The standard output the reports write to when keepStandardOutputForReports() moved it.
 int reportsOutput = -1;
@@ -19,7 +21,7 @@ bool namesStandardOutput(const std::string& filename) {
 
 int openStandardOutput() {
     platform::flushStandardStreams();
-    return duplicateDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
+    return platform::copyDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
 }
 
 bool keepStandardOutputForReports() {
@@ -27,12 +29,12 @@ bool keepStandardOutputForReports() {
         return true;
     }
     platform::flushStandardStreams();
-    const int kept = duplicateDescriptor(standardOutputDescriptor);
+    const int kept = platform::copyDescriptor(standardOutputDescriptor);
     if (kept < 0) {
         return false;
     }
-    if (!pointDescriptor(standardErrorDescriptor, standardOutputDescriptor)) {
-        closeDescriptor(kept);
+    if (!platform::pointDescriptor(standardErrorDescriptor, standardOutputDescriptor)) {
+        platform::closeDescriptor(kept);
         return false;
     }
     reportsOutput = kept;
