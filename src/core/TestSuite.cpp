@@ -9,6 +9,8 @@
 #include <robottestingframework/TestListener.h>
 #include <robottestingframework/TestResult.h>
 
+#include "core/guarded_call.h"
+
 namespace robottestingframework {
 
 namespace {
@@ -16,20 +18,6 @@ namespace {
 std::string fixtureName(const FixtureManager* fixture, std::size_t index) {
     const std::string name = fixture->getName();
     return name.empty() ? "#" + std::to_string(index + 1) : name;
-}
-
-// Runs one fixture call; returns false and fills `why` when it threw.
-template <typename Call>
-bool guardedFixtureCall(Call call, std::string& why) {
-    try {
-        call();
-        return true;
-    } catch (const std::exception& e) {
-        why = e.what();
-    } catch (...) {
-        why = "unhandled exception of unknown type";
-    }
-    return false;
 }
 
 // The last report made about `suite` while it listens: what a fixture said before its setup
@@ -144,7 +132,7 @@ bool TestSuite::setupFixtures(TestResult& result) {
         bool up = false;
         std::string why;
         LastReport said(result, this);
-        if (guardedFixtureCall([&] { up = fixture->setup(); }, why) && !up) {
+        if (guardedCall([&] { up = fixture->setup(); }, why) && !up) {
             why = "setup returned false";
             if (!said.text().empty()) {
                 why += " after reporting: " + said.text();
@@ -202,7 +190,7 @@ void TestSuite::tearDownFixtures(TestResult& result, std::size_t count) {
     for (std::size_t k = count; k > 0; --k) {
         FixtureManager* fixture = fixtures_[k - 1];
         std::string why;
-        const bool done = guardedFixtureCall([fixture] { fixture->tearDown(); }, why);
+        const bool done = guardedCall([fixture] { fixture->tearDown(); }, why);
         reportFixtureChecks(result);
         if (!done) {
             successful_ = false;
@@ -217,7 +205,7 @@ bool TestSuite::checkFixtures(TestResult& /*result*/) {
         FixtureManager* fixture = fixtures_[i];
         bool ok = false;
         std::string why;
-        if (guardedFixtureCall([&] { ok = fixture->check(); }, why) && !ok) {
+        if (guardedCall([&] { ok = fixture->check(); }, why) && !ok) {
             why = "check failed";
         }
         if (!ok) {

@@ -35,4 +35,47 @@ void describeStored(const std::filesystem::path& folder, const std::string& stor
                     const std::string& source, const std::string& description, std::uint64_t size,
                     Attachment& attachment);
 
+// The steps of storing one attachment that every platform takes, in this order, around its own
+// calls (open, lock, create, copy). Each step that can fail returns false with the error given
+// to the constructor set ("cannot attach 'SOURCE': why"); fail() does so for the platform's own.
+class AttachmentSteps {
+public:
+    AttachmentSteps(const std::string& source, std::string& error);
+
+    // The limits from the environment.
+    bool readLimits();
+    // A file of `size` bytes fits the file limit, and the run's folder is there.
+    bool admitFile(std::uint64_t size);
+    // `size` more bytes fit the run's limit beside what the folder holds (the folder locked).
+    bool admitRun(std::uint64_t size);
+    // The path of the next name to try for the copy (the one after the folder's files, then
+    // the next if that one was taken meanwhile).
+    std::filesystem::path nextStored();
+    // Removes the copy being made, after a failure.
+    void discardStored();
+    // Fills `attachment` for the copy made, of `size` bytes.
+    void describe(const std::string& description, std::uint64_t size, Attachment& attachment);
+
+    // Sets the error to this attachment's one with `why`; returns false.
+    bool fail(const std::string& why);
+
+    const std::string& source() const { return source_; }
+    const std::filesystem::path& folder() const { return folder_; }
+    std::uint64_t fileLimit() const { return fileLimit_; }
+
+private:
+    const std::string& source_;
+    std::string& error_;
+    std::uint64_t fileLimit_ = 0;
+    std::uint64_t runLimit_ = 0;
+    std::filesystem::path folder_;
+    std::uint64_t files_ = 0;  // in the folder, when the run's limit was last checked
+    std::uint64_t tried_ = 0;  // names tried for the copy
+    std::string storedName_;
+};
+
+// What storeAttachment() does after reading the limits, with the platform's calls
+// (attachment_store-<platform>.cpp): opens the source, takes the folder's lock, copies it in.
+bool storeCopy(AttachmentSteps& steps, const std::string& description, Attachment& attachment);
+
 }  // namespace robottestingframework

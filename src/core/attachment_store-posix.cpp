@@ -12,27 +12,13 @@
 #include <filesystem>
 #include <system_error>
 
+#include "platform/file_descriptor.h"
+
 namespace fs = std::filesystem;
 
 namespace robottestingframework {
 
 namespace {
-
-class Descriptor {
-public:
-    explicit Descriptor(int fd) : fd_(fd) {}
-    ~Descriptor() {
-        if (fd_ >= 0) {
-            ::close(fd_);
-        }
-    }
-    Descriptor(const Descriptor&) = delete;
-    Descriptor& operator=(const Descriptor&) = delete;
-    int get() const { return fd_; }
-
-private:
-    int fd_;
-};
 
 // Copies `from` to its end, whatever its size said: a file of /proc or /sys says 0 and has
 // more. Stops with `error` once more than `limit` bytes came; `copied` gets how many did.
@@ -73,75 +59,49 @@ bool copyBytes(int from, int to, std::uint64_t limit, std::uint64_t& copied, std
 
 }  // namespace
 
-bool storeAttachment(const std::string& source, const std::string& description,
-                     Attachment& attachment, std::string& error) {
-    const std::string what = "cannot attach '" + source + "': ";
-    std::uint64_t fileLimit = 0;
-    std::uint64_t runLimit = 0;
-    std::string problem;
-    if (!attachmentLimits(fileLimit, runLimit, problem)) {
-        error = what + problem;
-        return false;
-    }
-    Descriptor input(::open(source.c_str(), O_RDONLY | O_CLOEXEC));
+bool storeCopy(AttachmentSteps& steps, const std::string& description, Attachment& attachment) {
+    const std::string& source = steps.source();
+    platform::FileDescriptor input(::open(source.c_str(), O_RDONLY | O_CLOEXEC));
     struct stat info {};
-    if (input.get() < 0 || ::fstat(input.get(), &info) != 0) {
-        error = what + std::strerror(errno);
-        return false;
+    if (!input.valid() || ::fstat(input.get(), &info) != 0) {
+        return steps.fail(std::strerror(errno));
     }
     if (!S_ISREG(info.st_mode)) {
-        error = what + "not a regular file";
-        return false;
+        return steps.fail("not a regular file");
     }
     const auto size = static_cast<std::uint64_t>(info.st_size);
-    problem = fileOverLimit(size, fileLimit);
-    fs::path folder;
-    if (!problem.empty() || !attachmentsFolder(folder, problem)) {
-        error = what + problem;
+    if (!steps.admitFile(size)) {
         return false;
     }
     // One writer at a time across the run's processes: the folder's content is the account.
-    Descriptor lock(::open((folder / ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644));
-    if (lock.get() < 0 || ::flock(lock.get(), LOCK_EX) != 0) {
-        error = what + "cannot lock " + (folder / ".lock").string() + ": " + std::strerror(errno);
+    const fs::path lockName = steps.folder() / ".lock";
+    platform::FileDescriptor lock(::open(lockName.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644));
+    if (!lock.valid() || ::flock(lock.get(), LOCK_EX) != 0) {
+        return steps.fail("cannot lock " + lockName.string() + ": " + std::strerror(errno));
+    }
+    if (!steps.admitRun(size)) {
         return false;
     }
-    std::uint64_t files = 0;
-    problem = runOverLimit(folder, size, runLimit, files);
-    if (!problem.empty()) {
-        error = what + problem;
-        return false;
-    }
-    std::string storedName;
-    int output = -1;
-    for (std::uint64_t number = files + 1; output < 0; ++number) {
-        storedName = storedNameOf(source, number);
-        output =
-            ::open((folder / storedName).c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-        if (output < 0 && errno != EEXIST) {
-            error = what + "cannot write " + (folder / storedName).string() + ": " +
-                    std::strerror(errno);
-            return false;
+    platform::FileDescriptor output;
+    while (!output.valid()) {
+        const fs::path stored = steps.nextStored();
+        output.reset(::open(stored.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644));
+        if (!output.valid() && errno != EEXIST) {
+            return steps.fail("cannot write " + stored.string() + ": " + std::strerror(errno));
         }
     }
-    Descriptor outputFile(output);
     std::string copyError;
     std::uint64_t copied = 0;
-    if (!copyBytes(input.get(), outputFile.get(), fileLimit, copied, copyError)) {
-        ::unlink((folder / storedName).c_str());
-        error = what + copyError;
+    if (!copyBytes(input.get(), output.get(), steps.fileLimit(), copied, copyError)) {
+        steps.discardStored();
+        return steps.fail(copyError);
+    }
+    // It had more than its size said (/proc): the run's account again, with the copy in.
+    if (copied > size && !steps.admitRun(0)) {
+        steps.discardStored();
         return false;
     }
-    if (copied > size) {
-        // It had more than its size said (/proc): the run's account again, with the copy in.
-        problem = runOverLimit(folder, 0, runLimit, files);
-        if (!problem.empty()) {
-            ::unlink((folder / storedName).c_str());
-            error = what + problem;
-            return false;
-        }
-    }
-    describeStored(folder, storedName, source, description, copied, attachment);
+    steps.describe(description, copied, attachment);
     return true;
 }
 

@@ -62,66 +62,47 @@ bool copyBytes(HANDLE from, HANDLE to, std::uint64_t size, std::string& error) {
 
 }  // namespace
 
-bool storeAttachment(const std::string& source, const std::string& description,
-                     Attachment& attachment, std::string& error) {
-    const std::string what = "cannot attach '" + source + "': ";
-    std::uint64_t fileLimit = 0;
-    std::uint64_t runLimit = 0;
-    std::string problem;
-    if (!attachmentLimits(fileLimit, runLimit, problem)) {
-        error = what + problem;
-        return false;
-    }
+bool storeCopy(AttachmentSteps& steps, const std::string& description, Attachment& attachment) {
+    const std::string& source = steps.source();
     const DWORD attributes = GetFileAttributesA(source.c_str());
     if (attributes != INVALID_FILE_ATTRIBUTES && (attributes & FILE_ATTRIBUTE_DIRECTORY) != 0) {
-        error = what + "not a regular file";
-        return false;
+        return steps.fail("not a regular file");
     }
     Handle input(CreateFileA(source.c_str(), GENERIC_READ, FILE_SHARE_READ | FILE_SHARE_WRITE,
                              nullptr, OPEN_EXISTING, FILE_ATTRIBUTE_NORMAL, nullptr));
     LARGE_INTEGER fileSize{};
     if (!input.valid() || GetFileSizeEx(input.get(), &fileSize) == 0) {
-        error = what + platform::systemErrorText(GetLastError());
-        return false;
+        return steps.fail(platform::systemErrorText(GetLastError()));
     }
     if (GetFileType(input.get()) != FILE_TYPE_DISK) {
-        error = what + "not a regular file";
-        return false;
+        return steps.fail("not a regular file");
     }
     const auto size = static_cast<std::uint64_t>(fileSize.QuadPart);
-    problem = fileOverLimit(size, fileLimit);
-    fs::path folder;
-    if (!problem.empty() || !attachmentsFolder(folder, problem)) {
-        error = what + problem;
+    if (!steps.admitFile(size)) {
         return false;
     }
     // One writer at a time across the run's processes: the folder's content is the account.
-    const std::string lockName = (folder / ".lock").string();
+    const std::string lockName = (steps.folder() / ".lock").string();
     Handle lock(CreateFileA(lockName.c_str(), GENERIC_READ | GENERIC_WRITE,
                             FILE_SHARE_READ | FILE_SHARE_WRITE | FILE_SHARE_DELETE, nullptr,
                             OPEN_ALWAYS, FILE_ATTRIBUTE_NORMAL, nullptr));
     OVERLAPPED whole{};
     if (!lock.valid() ||
         LockFileEx(lock.get(), LOCKFILE_EXCLUSIVE_LOCK, 0, MAXDWORD, MAXDWORD, &whole) == 0) {
-        error = what + "cannot lock " + lockName + ": " + platform::systemErrorText(GetLastError());
+        return steps.fail("cannot lock " + lockName + ": " +
+                          platform::systemErrorText(GetLastError()));
+    }
+    if (!steps.admitRun(size)) {
         return false;
     }
-    std::uint64_t files = 0;
-    problem = runOverLimit(folder, size, runLimit, files);
-    if (!problem.empty()) {
-        error = what + problem;
-        return false;
-    }
-    std::string storedName;
     HANDLE output = INVALID_HANDLE_VALUE;
-    for (std::uint64_t number = files + 1; output == INVALID_HANDLE_VALUE; ++number) {
-        storedName = storedNameOf(source, number);
-        output = CreateFileA((folder / storedName).string().c_str(), GENERIC_WRITE, 0, nullptr,
-                             CREATE_NEW, FILE_ATTRIBUTE_NORMAL, nullptr);
+    while (output == INVALID_HANDLE_VALUE) {
+        const std::string stored = steps.nextStored().string();
+        output = CreateFileA(stored.c_str(), GENERIC_WRITE, 0, nullptr, CREATE_NEW,
+                             FILE_ATTRIBUTE_NORMAL, nullptr);
         if (output == INVALID_HANDLE_VALUE && GetLastError() != ERROR_FILE_EXISTS) {
-            error = what + "cannot write " + (folder / storedName).string() + ": " +
-                    platform::systemErrorText(GetLastError());
-            return false;
+            return steps.fail("cannot write " + stored + ": " +
+                              platform::systemErrorText(GetLastError()));
         }
     }
     std::string copyError;
@@ -131,11 +112,10 @@ bool storeAttachment(const std::string& source, const std::string& description,
         copied = copyBytes(input.get(), outputFile.get(), size, copyError);
     }
     if (!copied) {
-        DeleteFileA((folder / storedName).string().c_str());
-        error = what + copyError;
-        return false;
+        steps.discardStored();
+        return steps.fail(copyError);
     }
-    describeStored(folder, storedName, source, description, size, attachment);
+    steps.describe(description, size, attachment);
     return true;
 }
 

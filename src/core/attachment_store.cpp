@@ -101,4 +101,48 @@ void describeStored(const fs::path& folder, const std::string& storedName,
     attachment.size = size;
 }
 
+bool storeAttachment(const std::string& source, const std::string& description,
+                     Attachment& attachment, std::string& error) {
+    AttachmentSteps steps(source, error);
+    return steps.readLimits() && storeCopy(steps, description, attachment);
+}
+
+AttachmentSteps::AttachmentSteps(const std::string& source, std::string& error)
+    : source_(source), error_(error) {}
+
+bool AttachmentSteps::readLimits() {
+    std::string problem;
+    return attachmentLimits(fileLimit_, runLimit_, problem) || fail(problem);
+}
+
+bool AttachmentSteps::admitFile(std::uint64_t size) {
+    std::string problem = fileOverLimit(size, fileLimit_);
+    return (problem.empty() && attachmentsFolder(folder_, problem)) || fail(problem);
+}
+
+bool AttachmentSteps::admitRun(std::uint64_t size) {
+    const std::string problem = runOverLimit(folder_, size, runLimit_, files_);
+    return problem.empty() || fail(problem);
+}
+
+fs::path AttachmentSteps::nextStored() {
+    storedName_ = storedNameOf(source_, files_ + ++tried_);
+    return folder_ / storedName_;
+}
+
+void AttachmentSteps::discardStored() {
+    std::error_code ignored;
+    fs::remove(folder_ / storedName_, ignored);
+}
+
+void AttachmentSteps::describe(const std::string& description, std::uint64_t size,
+                               Attachment& attachment) {
+    describeStored(folder_, storedName_, source_, description, size, attachment);
+}
+
+bool AttachmentSteps::fail(const std::string& why) {
+    error_ = "cannot attach '" + source_ + "': " + why;
+    return false;
+}
+
 }  // namespace robottestingframework

@@ -5,21 +5,11 @@
 #include <sstream>
 
 #include "dll/library_naming.h"
-#include "dll/shared_library.h"
 
 namespace robottestingframework {
 namespace plugin {
 
-const char* SharedLibrary::prefix() {
-    return "lib";
-}
-const char* SharedLibrary::suffix() {
-    return ".dylib";
-}
-
-const char* libraryPathVariable() {
-    return "DYLD_LIBRARY_PATH";
-}
+const LibraryNaming kLibraryNaming{"lib", ".dylib", "DYLD_LIBRARY_PATH", ':', "/", false};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;
@@ -40,10 +30,6 @@ std::vector<std::string> systemLibraryFolders() {
     folders.push_back("/usr/local/lib");
     folders.push_back("/usr/lib");
     return folders;
-}
-
-char pathListSeparator() {
-    return ':';
 }
 
 }  // namespace plugin

@@ -6,7 +6,6 @@
 #include <sstream>
 
 #include "dll/library_naming.h"
-#include "dll/shared_library.h"
 
 namespace robottestingframework {
 namespace plugin {
@@ -42,16 +41,7 @@ void readLoaderConfig(const std::string& file, std::vector<std::string>& out, in
 
 }  // namespace
 
-const char* SharedLibrary::prefix() {
-    return "lib";
-}
-const char* SharedLibrary::suffix() {
-    return ".so";
-}
-
-const char* libraryPathVariable() {
-    return "LD_LIBRARY_PATH";
-}
+const LibraryNaming kLibraryNaming{"lib", ".so", "LD_LIBRARY_PATH", ':', "/", false};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;
@@ -63,10 +53,6 @@ std::vector<std::string> systemLibraryFolders() {
     folders.push_back("/lib");
     folders.push_back("/usr/lib");
     return folders;
-}
-
-char pathListSeparator() {
-    return ':';
 }
 
 }  // namespace plugin

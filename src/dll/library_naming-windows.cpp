@@ -4,21 +4,11 @@
 #include <windows.h>
 
 #include "dll/library_naming.h"
-#include "dll/shared_library.h"
 
 namespace robottestingframework {
 namespace plugin {
 
-const char* SharedLibrary::prefix() {
-    return "lib";
-}
-const char* SharedLibrary::suffix() {
-    return ".dll";
-}
-
-const char* libraryPathVariable() {
-    return "PATH";
-}
+const LibraryNaming kLibraryNaming{"lib", ".dll", "PATH", ';', "/\\", true};
 
 std::vector<std::string> systemLibraryFolders() {
     std::vector<std::string> folders;
@@ -32,10 +22,6 @@ std::vector<std::string> systemLibraryFolders() {
         folders.emplace_back(folder, length);
     }
     return folders;
-}
-
-char pathListSeparator() {
-    return ';';
 }
 
 }  // namespace plugin

@@ -3,10 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
-#include <set>
-#include <sstream>
 
-#include "dll/library_naming.h"
 #include "dll/rtf2_library.h"
 
 namespace robottestingframework {
@@ -19,31 +16,7 @@ std::string lastError(const char* fallback) {
     return text != nullptr ? text : fallback;
 }
 
-void splitInto(const std::string& text, char separator, std::vector<std::string>& out) {
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, separator)) {
-        if (!item.empty()) {
-            out.push_back(item);
-        }
-    }
-}
-
-std::string ownFolder() {
-    Dl_info info{};
-    if (::dladdr(reinterpret_cast<void*>(&ownFolder), &info) == 0 || info.dli_fname == nullptr) {
-        return {};
-    }
-    std::string path = info.dli_fname;
-    std::size_t slash = path.rfind('/');
-    return slash == std::string::npos ? std::string() : path.substr(0, slash);
-}
-
 }  // namespace
-
-SharedLibrary::~SharedLibrary() {
-    close();
-}
 
 bool SharedLibrary::open(const std::string& path) {
     close();
@@ -84,31 +57,15 @@ void* SharedLibrary::symbol(const char* name) {
     return address;
 }
 
-std::vector<std::string> SharedLibrary::searchPath() {
-    std::vector<std::string> folders;
-    if (const char* env = std::getenv(libraryPathVariable())) {
-        splitInto(env, ':', folders);
+std::string SharedLibrary::ownFolder() {
+    Dl_info info{};
+    if (::dladdr(reinterpret_cast<void*>(&SharedLibrary::ownFolder), &info) == 0 ||
+        info.dli_fname == nullptr) {
+        return {};
     }
-    std::string own = ownFolder();
-    if (!own.empty()) {
-        folders.push_back(own);
-    }
-    for (const std::string& folder : systemLibraryFolders()) {
-        folders.push_back(folder);
-    }
-
-    // Each folder once, first place kept.
-    std::vector<std::string> unique;
-    std::set<std::string> seen;
-    for (auto& folder : folders) {
-        while (folder.size() > 1 && folder.back() == '/') {
-            folder.pop_back();
-        }
-        if (seen.insert(folder).second) {
-            unique.push_back(folder);
-        }
-    }
-    return unique;
+    std::string path = info.dli_fname;
+    std::size_t slash = path.rfind('/');
+    return slash == std::string::npos ? std::string() : path.substr(0, slash);
 }
 
 }  // namespace plugin

@@ -3,10 +3,7 @@
 #include <windows.h>
 
 #include <cstdlib>
-#include <set>
-#include <sstream>
 
-#include "dll/library_naming.h"
 #include "platform/system_error.h"
 
 namespace robottestingframework {
@@ -20,39 +17,12 @@ std::string lastError(const std::string& what) {
     return what + ": " + platform::systemErrorText(code) + " (error " + std::to_string(code) + ")";
 }
 
-void splitInto(const std::string& text, char separator, std::vector<std::string>& out) {
-    std::stringstream stream(text);
-    std::string item;
-    while (std::getline(stream, item, separator)) {
-        if (!item.empty()) {
-            out.push_back(item);
-        }
-    }
-}
-
 std::string folderOf(const std::string& path) {
     const std::size_t slash = path.find_last_of("\\/");
     return slash == std::string::npos ? std::string() : path.substr(0, slash);
 }
 
-// The folder of this DLL (RTF_dll): the project's plug-ins are found beside it.
-std::string ownFolder() {
-    HMODULE self = nullptr;
-    if (GetModuleHandleExA(
-            GET_MODULE_HANDLE_EX_FLAG_FROM_ADDRESS | GET_MODULE_HANDLE_EX_FLAG_UNCHANGED_REFCOUNT,
-            reinterpret_cast<LPCSTR>(&ownFolder), &self) == 0) {
-        return {};
-    }
-    char path[MAX_PATH] = {};
-    const DWORD length = GetModuleFileNameA(self, path, MAX_PATH);
-    return length == 0 || length >= MAX_PATH ? std::string() : folderOf(std::string(path, length));
-}
-
 }  // namespace
-
-SharedLibrary::~SharedLibrary() {
-    close();
-}
 
 bool SharedLibrary::open(const std::string& path) {
     close();
@@ -92,31 +62,17 @@ void* SharedLibrary::symbol(const char* name) {
     return reinterpret_cast<void*>(address);
 }
 
-std::vector<std::string> SharedLibrary::searchPath() {
-    std::vector<std::string> folders;
-    std::string own = ownFolder();
-    if (!own.empty()) {
-        folders.push_back(own);
+// The folder of this DLL (RTF_dll): the project's plug-ins are found beside it.
+std::string SharedLibrary::ownFolder() {
+    HMODULE self = nullptr;
+    if (GetModuleHandleExA(
+            GET_MODULE_HANDLE_EX_FLAG_FROM_ADDRESS | GET_MODULE_HANDLE_EX_FLAG_UNCHANGED_REFCOUNT,
+            reinterpret_cast<LPCSTR>(&SharedLibrary::ownFolder), &self) == 0) {
+        return {};
     }
-    if (const char* env = std::getenv(libraryPathVariable())) {
-        splitInto(env, ';', folders);
-    }
-    for (const std::string& folder : systemLibraryFolders()) {
-        folders.push_back(folder);
-    }
-
-    // Each folder once, first place kept.
-    std::vector<std::string> unique;
-    std::set<std::string> seen;
-    for (auto& folder : folders) {
-        while (folder.size() > 1 && (folder.back() == '/' || folder.back() == '\\')) {
-            folder.pop_back();
-        }
-        if (seen.insert(folder).second) {
-            unique.push_back(folder);
-        }
-    }
-    return unique;
+    char path[MAX_PATH] = {};
+    const DWORD length = GetModuleFileNameA(self, path, MAX_PATH);
+    return length == 0 || length >= MAX_PATH ? std::string() : folderOf(std::string(path, length));
 }
 
 }  // namespace plugin

@@ -1,5 +1,6 @@
 // A shared library opened at run time. One header; the platform code is in
-// shared_library-posix.cpp (dlopen) and would be in shared_library-win32.cpp (LoadLibrary).
+// shared_library-posix.cpp (dlopen) and shared_library-windows.cpp (LoadLibrary); what they
+// share in shared_library.cpp.
 #pragma once
 
 #include <string>
@@ -34,6 +35,9 @@ public:
     static std::vector<std::string> searchPath();
 
 private:
+    // The folder holding this library (RTF_dll), or "" (per platform).
+    static std::string ownFolder();
+
     void* handle_ = nullptr;
     std::string error_;
 };

@@ -115,23 +115,8 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     }
 }
 
-bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
-    if (!backlog_.empty()) {
-        if (woken != nullptr) {
-            *woken = false;
-        }
-        records.insert(records.end(), backlog_.begin(), backlog_.end());
-        backlog_.clear();
-        return true;
-    }
-    return collect(timeoutMs, records, wake, woken);
-}
-
 bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int wake,
                             bool* woken) {
-    if (woken != nullptr) {
-        *woken = false;
-    }
     if (exited_) {
         return true;
     }
@@ -171,18 +156,11 @@ void WorkerProcess::signal(int signal) {
 bool WorkerProcess::stop(double grace, std::vector<WireRecord>& records) {
     signal(SIGTERM);
     signal(SIGCONT);  // a stopped worker acts on SIGTERM only once continued
-    platform::Deadline polite(grace > 0 ? grace : 1e-6);
-    while (!exited_ && !polite.expired()) {
-        pump(polite.remainingMs(100), records);
-    }
-    if (exited_) {
+    if (pumpUntilEnd(grace > 0 ? grace : 1e-6, records)) {
         return true;
     }
     signal(SIGKILL);
-    platform::Deadline hard(10.0);
-    while (!exited_ && !hard.expired()) {
-        pump(hard.remainingMs(100), records);
-    }
+    pumpUntilEnd(kKilledSeconds, records);
     return false;
 }
 

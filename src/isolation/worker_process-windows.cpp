@@ -81,15 +81,8 @@ void WorkerProcess::readStatus(std::vector<WireRecord>& records) {
     exited_ = true;
 }
 
-bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
-    return collect(timeoutMs, records, wake, woken);
-}
-
 bool WorkerProcess::collect(int timeoutMs, std::vector<WireRecord>& records, int wake,
                             bool* woken) {
-    if (woken != nullptr) {
-        *woken = false;
-    }
     if (exited_) {
         return true;
     }
@@ -132,10 +125,7 @@ void WorkerProcess::signal(int) {
 
 bool WorkerProcess::stop(double, std::vector<WireRecord>& records) {
     signal(0);
-    platform::Deadline hard(10.0);
-    while (!exited_ && !hard.expired()) {
-        pump(hard.remainingMs(100), records);
-    }
+    pumpUntilEnd(kKilledSeconds, records);
     // Nothing polite was tried, so nothing was ignored: not "it ignored SIGTERM".
     return true;
 }

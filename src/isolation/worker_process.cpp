@@ -3,26 +3,40 @@
 // platform's (worker_process-posix.cpp: through the fork server; -windows.cpp: a job object).
 #include "isolation/worker_process.h"
 
+#include "platform/clock.h"
+
 namespace robottestingframework {
 namespace isolation {
 
-void WorkerProcess::readChannel(std::vector<WireRecord>& records, bool all) {
+namespace {
+
+// Hands what `fd` has to `sink`, `readSize` bytes at most at a time: one read unless it filled
+// the buffer, or (`all`) until nothing is left. At the end of the file (nothing more will come)
+// `fd` is closed.
+template <typename Sink>
+void readPipe(platform::FileDescriptor& fd, bool all, long readSize, Sink sink) {
     std::string bytes;
     for (;;) {
         bytes.clear();
-        long n = platform::readSome(channel_.get(), bytes, kReadSize);
+        const long n = platform::readSome(fd.get(), bytes, static_cast<std::size_t>(readSize));
         if (n > 0) {
-            events_.feed(bytes);
-            if (n < kReadSize && !all) {
+            sink(bytes);
+            if (n < readSize && !all) {
                 break;
             }
             continue;
         }
         if (n == 0) {
-            channel_.reset();  // end of file: nothing more will come
+            fd.reset();
         }
         break;
     }
+}
+
+}  // namespace
+
+void WorkerProcess::readChannel(std::vector<WireRecord>& records, bool all) {
+    readPipe(channel_, all, kReadSize, [this](const std::string& bytes) { events_.feed(bytes); });
     WireRecord record;
     for (;;) {
         WireDecoder::Status status = events_.next(record);
@@ -40,22 +54,28 @@ void WorkerProcess::readChannel(std::vector<WireRecord>& records, bool all) {
 }
 
 void WorkerProcess::readOutput(bool all) {
-    std::string bytes;
-    for (;;) {
-        bytes.clear();
-        long n = platform::readSome(output_fd_.get(), bytes, kReadSize);
-        if (n > 0) {
-            output_.append(bytes);
-            if (n < kReadSize && !all) {
-                break;
-            }
-            continue;
-        }
-        if (n == 0) {
-            output_fd_.reset();
-        }
-        break;
+    readPipe(output_fd_, all, kReadSize,
+             [this](const std::string& bytes) { output_.append(bytes); });
+}
+
+bool WorkerProcess::pump(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken) {
+    if (woken != nullptr) {
+        *woken = false;
     }
+    if (!backlog_.empty()) {
+        records.insert(records.end(), backlog_.begin(), backlog_.end());
+        backlog_.clear();
+        return true;
+    }
+    return collect(timeoutMs, records, wake, woken);
+}
+
+bool WorkerProcess::pumpUntilEnd(double seconds, std::vector<WireRecord>& records) {
+    platform::Deadline deadline(seconds);
+    while (!exited_ && !deadline.expired()) {
+        pump(deadline.remainingMs(100), records);
+    }
+    return exited_;
 }
 
 void WorkerProcess::drainOutput() {

@@ -69,7 +69,8 @@ public:
 private:
     // Reads until the server reported the pid (or the worker ended); false after `seconds`.
     bool learnPid(double seconds);
-    // pump() without the backlog.
+    // pump() without the backlog; sets `woken` only when `wake` became readable (pump() clears
+    // it first).
     bool collect(int timeoutMs, std::vector<WireRecord>& records, int wake, bool* woken);
     // Read in 64 KiB: less means the pipe was emptied, and the next poll says when more comes.
     static constexpr long kReadSize = 65536;
@@ -78,6 +79,10 @@ private:
     void readChannel(std::vector<WireRecord>& records, bool all);
     void readOutput(bool all);
     void readStatus(std::vector<WireRecord>& records);
+    // Pumps (into `records`) until the worker ended or `seconds` passed; true when it ended.
+    bool pumpUntilEnd(double seconds, std::vector<WireRecord>& records);
+    // How long a killed worker is waited for.
+    static constexpr double kKilledSeconds = 10.0;
 
     platform::FileDescriptor channel_, output_fd_, status_fd_;
     WireDecoder events_, statuses_;

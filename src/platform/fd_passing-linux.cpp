@@ -9,40 +9,19 @@
 
 #include <cstring>
 
-#include "platform/anonymous_file.h"
 #include "platform/scm_rights.h"
 
 namespace robottestingframework {
 namespace platform {
 
-namespace {
+using fd_passing::kInFile;
+using fd_passing::kInline;
 
-// Each packet starts with one byte: the message follows in the packet, or it is in the file
-// passed as the packet's last descriptor (a message longer than a packet can be).
-constexpr char kInline = 'i';
-constexpr char kInFile = 'f';
-
-bool sendPacket(int socket, const std::string& packet, const std::vector<int>& fds) {
+// Each packet starts with its kind's byte (fd_passing.h).
+bool fd_passing::sendMessage(int socket, char kind, const std::string& body,
+                             const std::vector<int>& fds) {
+    const std::string packet = kind + body;
     return sendWithRights(socket, packet.data(), packet.size(), fds) >= 0;
-}
-
-}  // namespace
-
-bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
-    if (fds.size() > kMaxPassedFds) {
-        errno = EMSGSIZE;
-        return false;
-    }
-    if (data.size() < kMaxPacket) {
-        return sendPacket(socket, kInline + data, fds);
-    }
-    FileDescriptor file = anonymousFileHolding(data);
-    if (!file.valid()) {
-        return false;
-    }
-    std::vector<int> withFile = fds;
-    withFile.push_back(file.get());
-    return sendPacket(socket, std::string(1, kInFile), withFile);
 }
 
 namespace {
@@ -89,13 +68,7 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
         data.erase(0, 1);
         return true;
     }
-    FileDescriptor file = std::move(fds.back());
-    fds.pop_back();
-    if (!readAnonymousFile(file.get(), data)) {
-        errno = EMSGSIZE;
-        return false;
-    }
-    return true;
+    return fd_passing::readMessageFile(fds, data);
 }
 
 }  // namespace platform

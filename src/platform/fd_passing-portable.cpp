@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <cstring>
 
-#include "platform/anonymous_file.h"
 #include "platform/scm_rights.h"
 
 namespace robottestingframework {
@@ -20,24 +19,11 @@ namespace platform {
 
 namespace {
 
-// The message follows in the frame, or it is in the file passed as the frame's last
-// descriptor (as in the Linux version, so a long message costs the same on both).
-constexpr char kInline = 'i';
-constexpr char kInFile = 'f';
-constexpr std::size_t kHeader = 1 + sizeof(std::uint32_t);
+using fd_passing::kInFile;
+using fd_passing::kInline;
 
-bool sendFrame(int socket, char kind, const std::string& body, const std::vector<int>& fds) {
-    std::string frame(1, kind);
-    const std::uint32_t length = static_cast<std::uint32_t>(body.size());
-    frame.append(reinterpret_cast<const char*>(&length), sizeof(length));
-    frame += body;
-    const ssize_t n = sendWithRights(socket, frame.data(), frame.size(), fds);
-    if (n < 0) {
-        return false;
-    }
-    // A stream takes what fits: the rest follows without descriptors.
-    return sendAll(socket, frame.substr(static_cast<std::size_t>(n)));
-}
+// A frame: its kind's byte (fd_passing.h), the body's length, the body.
+constexpr std::size_t kHeader = 1 + sizeof(std::uint32_t);
 
 // Reads exactly `size` bytes into `out`; false at end of stream or on error.
 bool readExactly(int socket, char* out, std::size_t size) {
@@ -57,21 +43,18 @@ bool readExactly(int socket, char* out, std::size_t size) {
 
 }  // namespace
 
-bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fds) {
-    if (fds.size() > kMaxPassedFds) {
-        errno = EMSGSIZE;
+bool fd_passing::sendMessage(int socket, char kind, const std::string& body,
+                             const std::vector<int>& fds) {
+    std::string frame(1, kind);
+    const std::uint32_t length = static_cast<std::uint32_t>(body.size());
+    frame.append(reinterpret_cast<const char*>(&length), sizeof(length));
+    frame += body;
+    const ssize_t n = sendWithRights(socket, frame.data(), frame.size(), fds);
+    if (n < 0) {
         return false;
     }
-    if (data.size() < kMaxPacket) {
-        return sendFrame(socket, kInline, data, fds);
-    }
-    FileDescriptor file = anonymousFileHolding(data);
-    if (!file.valid()) {
-        return false;
-    }
-    std::vector<int> withFile = fds;
-    withFile.push_back(file.get());
-    return sendFrame(socket, kInFile, {}, withFile);
+    // A stream takes what fits: the rest follows without descriptors.
+    return sendAll(socket, frame.substr(static_cast<std::size_t>(n)));
 }
 
 bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds) {
@@ -107,13 +90,7 @@ bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& 
     if (kind == kInline) {
         return true;
     }
-    FileDescriptor file = std::move(fds.back());
-    fds.pop_back();
-    if (!readAnonymousFile(file.get(), data)) {
-        errno = EMSGSIZE;
-        return false;
-    }
-    return true;
+    return fd_passing::readMessageFile(fds, data);
 }
 
 }  // namespace platform

@@ -24,5 +24,21 @@ bool sendWithFds(int socket, const std::string& data, const std::vector<int>& fd
 // at end of stream (the peer is gone) or on error; an empty packet is not end of stream.
 bool receiveWithFds(int socket, std::string& data, std::vector<FileDescriptor>& fds);
 
+// What fd_passing-posix.cpp (shared) and fd_passing-<variant>.cpp (the framing) tell each other.
+namespace fd_passing {
+
+// A message's first byte: the message follows in the packet, or it is in the file passed as the
+// packet's last descriptor (a message longer than a packet can be).
+constexpr char kInline = 'i';
+constexpr char kInFile = 'f';
+
+// Sends one message of `kind` with `body` and `fds` (per variant).
+bool sendMessage(int socket, char kind, const std::string& body, const std::vector<int>& fds);
+// A kInFile message's bytes, read from its file (the last of `fds`, taken from them). False
+// with errno EMSGSIZE when it cannot be read.
+bool readMessageFile(std::vector<FileDescriptor>& fds, std::string& data);
+
+}  // namespace fd_passing
+
 }  // namespace platform
 }  // namespace robottestingframework

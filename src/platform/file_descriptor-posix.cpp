@@ -11,19 +11,6 @@
 namespace robottestingframework {
 namespace platform {
 
-FileDescriptor& FileDescriptor::operator=(FileDescriptor&& other) noexcept {
-    if (this != &other) {
-        reset(other.release());
-    }
-    return *this;
-}
-
-int FileDescriptor::release() {
-    int fd = fd_;
-    fd_ = -1;
-    return fd;
-}
-
 void FileDescriptor::reset(int fd) {
     if (fd_ >= 0) {
         ::close(fd_);

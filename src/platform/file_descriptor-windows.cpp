@@ -47,19 +47,6 @@ PipeState pipeState(int fd) {
 
 }  // namespace
 
-FileDescriptor& FileDescriptor::operator=(FileDescriptor&& other) noexcept {
-    if (this != &other) {
-        reset(other.release());
-    }
-    return *this;
-}
-
-int FileDescriptor::release() {
-    int fd = fd_;
-    fd_ = -1;
-    return fd;
-}
-
 void FileDescriptor::reset(int fd) {
     if (fd_ >= 0) {
         setNonBlocking(fd_, false);  // the number may be reused for a blocking descriptor

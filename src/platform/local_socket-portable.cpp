@@ -29,7 +29,13 @@ bool addressOf(const std::string& folder, const std::string& name, sockaddr_un& 
     return true;
 }
 
-FileDescriptor newSocket(std::string& error) {
+// A new socket (close-on-exec) and the address of `name` in `folder`, for listenLocal and
+// connectLocal; invalid with `error` set when either cannot be had.
+FileDescriptor newSocket(const std::string& folder, const std::string& name, sockaddr_un& address,
+                         std::string& error) {
+    if (!addressOf(folder, name, address, error)) {
+        return FileDescriptor();
+    }
     FileDescriptor socket(::socket(AF_UNIX, SOCK_STREAM, 0));
     if (!socket.valid()) {
         error = std::string("socket: ") + std::strerror(errno);
@@ -43,10 +49,7 @@ FileDescriptor newSocket(std::string& error) {
 
 FileDescriptor listenLocal(const std::string& folder, const std::string& name, std::string& error) {
     sockaddr_un address;
-    if (!addressOf(folder, name, address, error)) {
-        return FileDescriptor();
-    }
-    FileDescriptor socket = newSocket(error);
+    FileDescriptor socket = newSocket(folder, name, address, error);
     if (!socket.valid()) {
         return socket;
     }
@@ -73,10 +76,7 @@ FileDescriptor acceptLocal(int listener) {
 FileDescriptor connectLocal(const std::string& folder, const std::string& name,
                             std::string& error) {
     sockaddr_un address;
-    if (!addressOf(folder, name, address, error)) {
-        return FileDescriptor();
-    }
-    FileDescriptor socket = newSocket(error);
+    FileDescriptor socket = newSocket(folder, name, address, error);
     if (!socket.valid()) {
         return socket;
     }

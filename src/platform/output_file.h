@@ -17,6 +17,10 @@ namespace platform {
 // delete-on-close on Windows). Invalid with `error` set on failure.
 FileDescriptor makeOutputFile(std::string& error);
 
+// Flushes std::cout, std::cerr and C's stdout and stderr: what they hold goes where
+// descriptors 1 and 2 point now, before they are pointed (or copied) elsewhere.
+void flushStandardStreams();
+
 // A copy of `fd`, not inherited, numbered 3 or above; -1 (errno set) on failure.
 int copyDescriptor(int fd);
 // Makes descriptor `target` refer to what `fd` refers to. False (errno set) on failure.

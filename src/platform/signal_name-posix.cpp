@@ -60,10 +60,6 @@ std::string signalDescription(int signal) {
     return text != nullptr ? text : signalName(signal);
 }
 
-std::string crashName(int signal) {
-    return signalName(signal) + " (" + signalDescription(signal) + ")";
-}
-
 std::string programKilledBy(int signal) {
     return "killed by " + signalName(signal);
 }

@@ -80,10 +80,6 @@ std::string signalDescription(int signal) {
     return "exception";
 }
 
-std::string crashName(int signal) {
-    return signalName(signal) + " (" + signalDescription(signal) + ")";
-}
-
 std::string programKilledBy(int signal) {
     return "crashed: " + crashName(signal);
 }

@@ -2,11 +2,8 @@
 
 #include <errno.h>
 #include <fcntl.h>
-#include <poll.h>
 #include <signal.h>
 #include <unistd.h>
-
-#include <stdexcept>
 
 #include "platform/file_descriptor.h"
 
@@ -35,17 +32,10 @@ extern "C" void onSignal(int signal) {
 }  // namespace
 
 SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals) {
-    if (readFd >= 0) {
-        throw std::logic_error("only one SignalPipe per process");
-    }
-    FileDescriptor readEnd, writeEnd;
-    if (!makePipe(readEnd, writeEnd)) {
-        throw std::runtime_error("cannot create the signal pipe");
-    }
-    setNonBlocking(readEnd.get());
-    setNonBlocking(writeEnd.get());
-    readFd = readEnd.release();
-    writeFd = writeEnd.release();
+    int writeEnd = -1;
+    makeEnds(readFd, writeEnd);
+    setNonBlocking(writeEnd);  // a handler never waits
+    writeFd = writeEnd;
     installedCount = 0;
     for (int signal : signals_) {
         struct sigaction action {};
@@ -74,10 +64,7 @@ int SignalPipe::fd() const {
     return readFd;
 }
 
-namespace {
-
-// One byte from the pipe: true with the signal (0: a wake()), false when it is empty.
-bool readByte(int& value) {
+bool SignalPipe::readByte(int& value) {
     unsigned char byte;
     for (;;) {
         ssize_t n = ::read(readFd, &byte, 1);
@@ -90,26 +77,6 @@ bool readByte(int& value) {
         }
         return false;
     }
-}
-
-}  // namespace
-
-int SignalPipe::take() {
-    int signal = 0;
-    return readByte(signal) ? signal : 0;
-}
-
-int SignalPipe::wait(int timeoutMs) {
-    int signal = 0;
-    if (readByte(signal)) {
-        return signal;  // a wake() that came before the wait ends it too
-    }
-    pollfd pfd{readFd, POLLIN, 0};
-    int n;
-    do {
-        n = ::poll(&pfd, 1, timeoutMs);
-    } while (n < 0 && errno == EINTR);
-    return n > 0 ? take() : 0;
 }
 
 void SignalPipe::wake() {

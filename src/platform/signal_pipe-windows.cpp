@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <stdexcept>
 
 #include "platform/file_descriptor.h"
 
@@ -37,7 +36,9 @@ BOOL WINAPI onControl(DWORD event) {
     return TRUE;
 }
 
-bool readByte(int& value) {
+}  // namespace
+
+bool SignalPipe::readByte(int& value) {
     std::string byte;
     if (readSome(readFd, byte, 1) == 1) {
         value = static_cast<unsigned char>(byte[0]);
@@ -46,19 +47,10 @@ bool readByte(int& value) {
     return false;
 }
 
-}  // namespace
-
 SignalPipe::SignalPipe(std::initializer_list<int> signals) : signals_(signals) {
-    if (readFd >= 0) {
-        throw std::logic_error("only one SignalPipe per process");
-    }
-    FileDescriptor readEnd, writeEnd;
-    if (!makePipe(readEnd, writeEnd)) {
-        throw std::runtime_error("cannot create the signal pipe");
-    }
-    setNonBlocking(readEnd.get());
-    readFd = readEnd.release();
-    writeFd = writeEnd.release();
+    int writeEnd = -1;
+    makeEnds(readFd, writeEnd);
+    writeFd = writeEnd;
     wantInterrupt = std::count(signals_.begin(), signals_.end(), SIGINT) > 0;
     wantTerminate = std::count(signals_.begin(), signals_.end(), SIGTERM) > 0;
     ::SetConsoleCtrlHandler(onControl, TRUE);
@@ -77,20 +69,6 @@ SignalPipe::~SignalPipe() {
 
 int SignalPipe::fd() const {
     return readFd;
-}
-
-int SignalPipe::take() {
-    int signal = 0;
-    return readByte(signal) ? signal : 0;
-}
-
-int SignalPipe::wait(int timeoutMs) {
-    int signal = 0;
-    if (readByte(signal)) {
-        return signal;  // a wake() that came before the wait ends it too
-    }
-    std::vector<bool> ready;
-    return waitReadable({readFd}, timeoutMs, ready) ? take() : 0;
 }
 
 void SignalPipe::wake() {

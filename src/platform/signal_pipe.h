@@ -30,6 +30,13 @@ public:
     static void resetInChild();
 
 private:
+    // Makes the pipe (its read end non-blocking) for the constructor; throws when a SignalPipe
+    // is there already or no pipe can be made.
+    void makeEnds(int& readEnd, int& writeEnd) const;
+    // One byte from the pipe: true with the signal (0: a wake()), false when it is empty. Per
+    // platform.
+    static bool readByte(int& value);
+
     std::vector<int> signals_;
 };
 

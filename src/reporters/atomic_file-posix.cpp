@@ -63,109 +63,57 @@ std::string notAnOutputFile(const std::string& filename) {
            "; an output is a file (or a FIFO or a character device, written through)";
 }
 
-AtomicFile::~AtomicFile() {
-    discard();
-}
-
-void AtomicFile::discard() {
-    if (fd_ >= 0) {
-        ::close(fd_);
-        fd_ = -1;
-    }
-    if (!temporary_.empty()) {
-        std::remove(temporary_.c_str());
-        temporary_.clear();
-    }
-}
-
-bool AtomicFile::open(const std::string& filename, std::string& error) {
-    discard();
-    filename_ = filename;
-    writeErrno_ = 0;
-    if (namesStandardOutput(filename)) {
-        // "-" and /dev/stdout: the standard output as the runner was given it (a pipe too,
-        // where /dev/stdout's link leads nowhere), written through.
-        fd_ = openStandardOutput();
-        if (fd_ < 0) {
-            error = "cannot write " + filename + ": " + std::strerror(errno);
-            return false;
-        }
-        return true;
-    }
+bool AtomicFile::openFile(const std::string& filename, std::string& error) {
     const std::string target = followLinks(filename);
     struct stat info {};
-    if (::stat(target.c_str(), &info) == 0 && !S_ISREG(info.st_mode)) {
-        if (!S_ISFIFO(info.st_mode) && !S_ISCHR(info.st_mode)) {
-            error = "cannot write " + notAnOutputFile(target);
-            return false;
-        }
-        // A FIFO or a device (/dev/stdout, /dev/null) is written as it is, never replaced.
-        // Without O_NONBLOCK, opening a FIFO nobody reads would wait for ever.
-        fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
-        if (fd_ < 0) {
-            const int code = errno;
-            error = "cannot write " + filename + ": " +
-                    (code == ENXIO ? std::string("no process reads this FIFO")
-                                   : std::string(std::strerror(code)));
-            return false;
-        }
-        ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
-        return true;
+    if (::stat(target.c_str(), &info) != 0 || S_ISREG(info.st_mode)) {
+        return openTemporary(target, error);
     }
-    target_ = target;
-    temporary_ = target + ".tmp." + std::to_string(::getpid());
-    fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+    if (!S_ISFIFO(info.st_mode) && !S_ISCHR(info.st_mode)) {
+        error = "cannot write " + notAnOutputFile(target);
+        return false;
+    }
+    // A FIFO or a device (/dev/stdout, /dev/null) is written as it is, never replaced.
+    // Without O_NONBLOCK, opening a FIFO nobody reads would wait for ever.
+    fd_ = ::open(target.c_str(), O_WRONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd_ < 0) {
         const int code = errno;
-        temporary_.clear();  // not ours: nothing to remove
-        error = "cannot write " + filename + ": " + std::strerror(code);
+        error = "cannot write " + filename + ": " +
+                (code == ENXIO ? std::string("no process reads this FIFO")
+                               : std::string(std::strerror(code)));
         return false;
     }
+    ::fcntl(fd_, F_SETFL, ::fcntl(fd_, F_GETFL) & ~O_NONBLOCK);
     return true;
 }
 
-bool AtomicFile::write(const char* data, std::size_t size) {
-    if (fd_ < 0 || writeErrno_ != 0) {
-        return false;
-    }
-    std::size_t done = 0;
-    while (done < size) {
-        const ssize_t wrote = ::write(fd_, data + done, size - done);
-        if (wrote < 0 && errno == EINTR) {
-            continue;
-        }
-        if (wrote <= 0) {
-            writeErrno_ = wrote < 0 ? errno : EIO;
-            return false;
-        }
-        done += static_cast<std::size_t>(wrote);
-    }
-    return true;
+int AtomicFile::createFile(const std::string& path) {
+    return ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
 }
 
-bool AtomicFile::commit(std::string& error) {
-    if (fd_ < 0) {
-        error = "cannot write " + filename_ + ": " + std::strerror(EBADF);
-        return false;
+long AtomicFile::writeSome(int fd, const char* data, std::size_t size) {
+    for (;;) {
+        const ssize_t wrote = ::write(fd, data, size);
+        if (wrote >= 0 || errno != EINTR) {
+            return static_cast<long>(wrote);
+        }
     }
-    int code = writeErrno_;
-    const int fd = fd_;
-    fd_ = -1;
-    if (::close(fd) != 0 && errno != EINTR && code == 0) {
-        code = errno;
+}
+
+int AtomicFile::closeFile(int fd) {
+    // Interrupted, the descriptor is closed all the same (Linux, macOS): not a failure.
+    return ::close(fd) != 0 && errno != EINTR ? -1 : 0;
+}
+
+std::string AtomicFile::processId() {
+    return std::to_string(::getpid());
+}
+
+std::string AtomicFile::replaceFile(const std::string& temporary, const std::string& target) {
+    if (std::rename(temporary.c_str(), target.c_str()) != 0) {
+        return std::strerror(errno);
     }
-    if (code != 0) {
-        error = "cannot write " + filename_ + ": " + std::strerror(code);
-        discard();
-        return false;
-    }
-    if (!temporary_.empty() && std::rename(temporary_.c_str(), target_.c_str()) != 0) {
-        error = "cannot rename a temporary file to " + filename_ + ": " + std::strerror(errno);
-        discard();
-        return false;
-    }
-    temporary_.clear();
-    return true;
+    return {};
 }
 
 }  // namespace reporters

@@ -34,6 +34,18 @@ public:
 
 private:
     void discard();
+    // The file itself (not the standard output): a FIFO or a device written through, else a
+    // temporary file beside the target (openTemporary). Per platform.
+    bool openFile(const std::string& filename, std::string& error);
+    bool openTemporary(const std::string& target, std::string& error);
+
+    // What each platform gives (atomic_file-<platform>.cpp). The errors are in errno.
+    static int createFile(const std::string& path);  // a new file, write only; -1 on failure
+    static long writeSome(int fd, const char* data, std::size_t size);  // < 0 on failure
+    static int closeFile(int fd);                                       // 0, or -1 on failure
+    static std::string processId();
+    // Puts `temporary` in the place of `target`: empty, or the system's reason.
+    static std::string replaceFile(const std::string& temporary, const std::string& target);
 
     std::string filename_;
     std::string target_;     // the file the temporary one replaces

@@ -1,24 +1,17 @@
 #include "reporters/standard_output.h"
 
-#include <cstdio>
-#include <iostream>
-
-#include "reporters/standard_output_descriptor.h"
+#include "platform/output_file.h"
 
 namespace robottestingframework {
 namespace reporters {
 
 namespace {
 
+constexpr int standardOutputDescriptor = 1;
+constexpr int standardErrorDescriptor = 2;
+
 // The standard output the reports write to when keepStandardOutputForReports() moved it.
 int reportsOutput = -1;
-
-void flushStreams() {
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(stdout);
-    std::fflush(stderr);
-}
 
 }  // namespace
 
@@ -27,21 +20,21 @@ bool namesStandardOutput(const std::string& filename) {
 }
 
 int openStandardOutput() {
-    flushStreams();
-    return duplicateDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
+    platform::flushStandardStreams();
+    return platform::copyDescriptor(reportsOutput >= 0 ? reportsOutput : standardOutputDescriptor);
 }
 
 bool keepStandardOutputForReports() {
     if (reportsOutput >= 0) {
         return true;
     }
-    flushStreams();
-    const int kept = duplicateDescriptor(standardOutputDescriptor);
+    platform::flushStandardStreams();
+    const int kept = platform::copyDescriptor(standardOutputDescriptor);
     if (kept < 0) {
         return false;
     }
-    if (!pointDescriptor(standardErrorDescriptor, standardOutputDescriptor)) {
-        closeDescriptor(kept);
+    if (!platform::pointDescriptor(standardErrorDescriptor, standardOutputDescriptor)) {
+        platform::closeDescriptor(kept);
         return false;
     }
     reportsOutput = kept;

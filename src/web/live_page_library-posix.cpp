@@ -2,7 +2,7 @@
 
 #include <dlfcn.h>
 
-#include <mutex>
+#include <string>
 
 namespace robottestingframework {
 namespace web {
@@ -21,13 +21,9 @@ std::string ownFolder() {
     return slash == std::string::npos ? std::string() : path.substr(0, slash + 1);
 }
 
-struct Loaded {
-    OpenLivePage open = nullptr;
-    std::string error;
-};
+}  // namespace
 
-Loaded load() {
-    Loaded loaded;
+void* loadLivePageFile(std::string& error) {
     const std::string name = RTF_WEB_LIBRARY_FILE;
     const std::string beside = ownFolder() + name;
     void* handle = dlopen(beside.c_str(), RTLD_NOW | RTLD_LOCAL);
@@ -35,27 +31,14 @@ Loaded load() {
         const std::string besideError = dlerror();
         handle = dlopen(name.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (handle == nullptr) {
-            loaded.error = "cannot load the live page's library " + beside + ": " + besideError;
-            return loaded;
+            error = "cannot load the live page's library " + beside + ": " + besideError;
         }
     }
-    void* symbol = dlsym(handle, openLivePageSymbol);
-    if (symbol == nullptr) {
-        loaded.error = std::string("the live page's library has no ") + openLivePageSymbol;
-        return loaded;
-    }
-    loaded.open = reinterpret_cast<OpenLivePage>(symbol);
-    return loaded;
+    return handle;
 }
 
-}  // namespace
-
-OpenLivePage loadLivePageLibrary(std::string& error) {
-    static std::once_flag once;
-    static Loaded loaded;
-    std::call_once(once, [] { loaded = load(); });
-    error = loaded.error;
-    return loaded.open;
+void* livePageSymbol(void* library, const char* name) {
+    return dlsym(library, name);
 }
 
 }  // namespace web

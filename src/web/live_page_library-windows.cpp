@@ -2,7 +2,7 @@
 
 #include <windows.h>
 
-#include <mutex>
+#include <string>
 
 namespace robottestingframework {
 namespace web {
@@ -27,37 +27,20 @@ std::string ownFolder() {
     return slash == std::string::npos ? std::string() : file.substr(0, slash + 1);
 }
 
-struct Loaded {
-    OpenLivePage open = nullptr;
-    std::string error;
-};
+}  // namespace
 
-Loaded load() {
-    Loaded loaded;
+void* loadLivePageFile(std::string& error) {
     const std::string beside = ownFolder() + RTF_WEB_LIBRARY_FILE;
     HMODULE library = LoadLibraryA(beside.c_str());
     if (library == nullptr) {
-        loaded.error = "cannot load the live page's library " + beside + " (error " +
-                       std::to_string(static_cast<unsigned long>(GetLastError())) + ")";
-        return loaded;
+        error = "cannot load the live page's library " + beside + " (error " +
+                std::to_string(static_cast<unsigned long>(GetLastError())) + ")";
     }
-    FARPROC symbol = GetProcAddress(library, openLivePageSymbol);
-    if (symbol == nullptr) {
-        loaded.error = std::string("the live page's library has no ") + openLivePageSymbol;
-        return loaded;
-    }
-    loaded.open = reinterpret_cast<OpenLivePage>(reinterpret_cast<void*>(symbol));
-    return loaded;
+    return reinterpret_cast<void*>(library);
 }
 
-}  // namespace
-
-OpenLivePage loadLivePageLibrary(std::string& error) {
-    static std::once_flag once;
-    static Loaded loaded;
-    std::call_once(once, [] { loaded = load(); });
-    error = loaded.error;
-    return loaded.open;
+void* livePageSymbol(void* library, const char* name) {
+    return reinterpret_cast<void*>(GetProcAddress(reinterpret_cast<HMODULE>(library), name));
 }
 
 }  // namespace web

@@ -13,5 +13,11 @@ namespace web {
 // loaded until the process ends: the pages it made run its code.
 OpenLivePage loadLivePageLibrary(std::string& error);
 
+// What loadLivePageLibrary() asks of the platform (live_page_library-<platform>.cpp): RTF_web
+// loaded, never to be unloaded (nullptr with `error` naming the file and the reason), and the
+// address of one of its symbols (nullptr when it has none).
+void* loadLivePageFile(std::string& error);
+void* livePageSymbol(void* library, const char* name);
+
 }  // namespace web
 }  // namespace robottestingframework

@@ -84,19 +84,12 @@ void stopGroup(pid_t group) {
 
 }  // namespace
 
-ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
-                             const std::vector<std::pair<std::string, std::string>>& environment,
-                             const Sink& out, const Sink& err,
-                             const std::function<void()>& stopping) {
-    ExecOutcome outcome;
-    platform::FileDescriptor outRead, outWrite, errRead, errWrite;
-    if (!platform::makePipe(outRead, outWrite) || !platform::makePipe(errRead, errWrite)) {
-        outcome.startError = std::string("pipe: ") + std::strerror(errno);
-        return outcome;
-    }
+bool ExecProcess::start(const std::vector<std::string>& argv,
+                        const std::vector<std::pair<std::string, std::string>>& environment,
+                        int outFd, int errFd, std::string& error) {
     platform::SpawnOptions options;
     options.argv = argv;
-    options.fds = {{1, outWrite.get()}, {2, errWrite.get()}};
+    options.fds = {{1, outFd}, {2, errFd}};
     options.newProcessGroup = true;       // stopping it stops whatever it started too
     options.parentDeathSignal = SIGKILL;  // a runner killed with SIGKILL leaves no test behind
     options.environment = environment;
@@ -107,27 +100,26 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
         options.environment.emplace_back(guard.substr(0, equals), guard.substr(equals + 1));
     }
 
-    pid_t pid = -1;
+    std::lock_guard<std::mutex> lock(mutex_);
+    const pid_t pid = platform::spawnProcess(options, error);
+    if (pid <= 0) {
+        return false;
+    }
+    pid_ = pid;
+    if (terminate_) {  // terminate() came while it was being started
+        platform::signalProcessGroup(pid, SIGTERM);
+        terminatedAt_ = std::chrono::steady_clock::now();
+    }
+    return true;
+}
+
+void ExecProcess::waitForEnd(int outFd, int errFd, const Sink& out, const Sink& err,
+                             const std::function<void()>& stopping, ExecOutcome& outcome) {
+    pid_t pid;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        pid = platform::spawnProcess(options, outcome.startError);
-        if (pid > 0) {
-            pid_ = pid;
-            if (terminate_) {  // terminate() came while it was being started
-                platform::signalProcessGroup(pid, SIGTERM);
-                terminatedAt_ = std::chrono::steady_clock::now();
-            }
-        }
+        pid = pid_;
     }
-    outWrite.reset();
-    errWrite.reset();
-    if (pid <= 0) {
-        return outcome;
-    }
-    outcome.started = true;
-    platform::setNonBlocking(outRead.get());
-    platform::setNonBlocking(errRead.get());
-
     bool outOpen = true;
     bool errOpen = true;
     int status = 0;
@@ -140,30 +132,19 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
             // terminate() never signals a recycled pid), still escalating a stop.
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         } else {
-            pollfd fds[2] = {{outOpen ? outRead.get() : -1, POLLIN, 0},
-                             {errOpen ? errRead.get() : -1, POLLIN, 0}};
+            pollfd fds[2] = {{outOpen ? outFd : -1, POLLIN, 0}, {errOpen ? errFd : -1, POLLIN, 0}};
             // Wakes up now and then to notice the program's end even when something it
             // started in the background still holds the pipes open.
             if (::poll(fds, 2, 100) > 0) {
                 if (outOpen && fds[0].revents) {
-                    outOpen = readChunk(outRead.get(), out);
+                    outOpen = readChunk(outFd, out);
                 }
                 if (errOpen && fds[1].revents) {
-                    errOpen = readChunk(errRead.get(), err);
+                    errOpen = readChunk(errFd, err);
                 }
             }
         }
-        bool stopRequested;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            stopRequested = terminate_;
-        }
-        if (stopRequested && !toldStopping) {
-            toldStopping = true;
-            if (stopping) {
-                stopping();
-            }
-        }
+        tellStopping(toldStopping, stopping);
         std::lock_guard<std::mutex> lock(mutex_);
         if (::waitpid(pid, &status, WNOHANG) == pid) {
             exited = true;
@@ -175,30 +156,19 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     }
     stopGroup(pid);
     if (outOpen) {
-        drain(outRead.get(), out);
+        drain(outFd, out);
     }
     if (errOpen) {
-        drain(errRead.get(), err);
+        drain(errFd, err);
     }
     if (WIFEXITED(status)) {
         outcome.exitStatus = WEXITSTATUS(status);
     } else if (WIFSIGNALED(status)) {
         outcome.signal = WTERMSIG(status);
     }
-    return outcome;
 }
 
-void ExecProcess::reset() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    terminate_ = false;
-}
-
-void ExecProcess::terminate() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!terminate_) {
-        terminatedAt_ = std::chrono::steady_clock::now();
-    }
-    terminate_ = true;
+void ExecProcess::stopRunning() {
     if (pid_ > 0) {
         platform::signalProcessGroup(pid_, SIGTERM);  // its whole group
     }

@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <cstring>
 #include <memory>
 #include <thread>
 
@@ -45,42 +44,37 @@ bool readAvailable(int fd, const ExecProcess::Sink& sink) {
 
 }  // namespace
 
-ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
-                             const std::vector<std::pair<std::string, std::string>>& environment,
-                             const Sink& out, const Sink& err,
-                             const std::function<void()>& stopping) {
-    ExecOutcome outcome;
-    platform::FileDescriptor outRead, outWrite, errRead, errWrite;
-    if (!platform::makePipe(outRead, outWrite) || !platform::makePipe(errRead, errWrite)) {
-        outcome.startError = std::string("pipe: ") + std::strerror(errno);
-        return outcome;
-    }
+bool ExecProcess::start(const std::vector<std::string>& argv,
+                        const std::vector<std::pair<std::string, std::string>>& environment,
+                        int outFd, int errFd, std::string& error) {
     platform::JobProcessOptions options;
     options.argv = argv;
     if (!argv.empty() && isBatchFile(argv[0])) {
         const char* shell = std::getenv("ComSpec");
         options.argv.insert(options.argv.begin(), {shell != nullptr ? shell : "cmd.exe", "/c"});
     }
-    options.stdoutFd = outWrite.get();
-    options.stderrFd = errWrite.get();
+    options.stdoutFd = outFd;
+    options.stderrFd = errFd;
     options.environment = environment;
     auto job = std::make_shared<platform::JobProcess>();
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!job->start(options, error)) {
+        return false;
+    }
+    job_ = job;
+    if (terminate_) {  // terminate() came while it was being started
+        job->kill();
+    }
+    return true;
+}
+
+void ExecProcess::waitForEnd(int outFd, int errFd, const Sink& out, const Sink& err,
+                             const std::function<void()>& stopping, ExecOutcome& outcome) {
+    std::shared_ptr<platform::JobProcess> job;
     {
         std::lock_guard<std::mutex> lock(mutex_);
-        if (!job->start(options, outcome.startError)) {
-            return outcome;
-        }
-        job_ = job;
-        if (terminate_) {  // terminate() came while it was being started
-            job->kill();
-        }
+        job = job_;
     }
-    outWrite.reset();
-    errWrite.reset();
-    outcome.started = true;
-    platform::setNonBlocking(outRead.get());
-    platform::setNonBlocking(errRead.get());
-
     bool outOpen = true;
     bool errOpen = true;
     bool toldStopping = false;
@@ -88,37 +82,27 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
         // Checked before reading: what it wrote before it ended is read below, all of it.
         const bool ended = job->ended();
         std::vector<bool> ready;
-        if (platform::waitReadable({outOpen ? outRead.get() : -1, errOpen ? errRead.get() : -1},
-                                   ended ? 0 : 20, ready)) {
+        if (platform::waitReadable({outOpen ? outFd : -1, errOpen ? errFd : -1}, ended ? 0 : 20,
+                                   ready)) {
             if (ready[0]) {
-                outOpen = readAvailable(outRead.get(), out);
+                outOpen = readAvailable(outFd, out);
             }
             if (ready[1]) {
-                errOpen = readAvailable(errRead.get(), err);
+                errOpen = readAvailable(errFd, err);
             }
         } else if (!outOpen && !errOpen && !ended) {
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
         }
-        bool stopRequested;
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            stopRequested = terminate_;
-        }
-        if (stopRequested && !toldStopping) {
-            toldStopping = true;
-            if (stopping) {
-                stopping();
-            }
-        }
+        tellStopping(toldStopping, stopping);
         if (ended) {
             break;
         }
     }
     if (outOpen) {
-        readAvailable(outRead.get(), out);
+        readAvailable(outFd, out);
     }
     if (errOpen) {
-        readAvailable(errRead.get(), err);
+        readAvailable(errFd, err);
     }
     {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -132,20 +116,9 @@ ExecOutcome ExecProcess::run(const std::vector<std::string>& argv,
     } else {
         outcome.exitStatus = status.code;
     }
-    return outcome;
 }
 
-void ExecProcess::reset() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    terminate_ = false;
-}
-
-void ExecProcess::terminate() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!terminate_) {
-        terminatedAt_ = std::chrono::steady_clock::now();
-    }
-    terminate_ = true;
+void ExecProcess::stopRunning() {
     if (job_) {
         job_->kill();
     }

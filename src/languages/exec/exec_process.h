@@ -47,6 +47,20 @@ public:
     void reset();
 
 private:
+    // Per platform (exec_process-<platform>.cpp). Starts the program with its stdout and
+    // stderr on `outFd` and `errFd`; false with `error` when it cannot.
+    bool start(const std::vector<std::string>& argv,
+               const std::vector<std::pair<std::string, std::string>>& environment, int outFd,
+               int errFd, std::string& error);
+    // Reads the pipes into the sinks until the program has ended (calling tellStopping on the
+    // way), then fills in how it ended.
+    void waitForEnd(int outFd, int errFd, const Sink& out, const Sink& err,
+                    const std::function<void()>& stopping, ExecOutcome& outcome);
+    // Stops the running program, if any; called with mutex_ held.
+    void stopRunning();
+    // Calls `stopping` once (`told` remembers) when terminate() has been asked for.
+    void tellStopping(bool& told, const std::function<void()>& stopping);
+
     std::mutex mutex_;
     pid_t pid_ = -1;
     std::shared_ptr<platform::JobProcess> job_;  // Windows: the running program's job

@@ -2,7 +2,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <iostream>
 
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
@@ -18,13 +17,6 @@ namespace {
 // same 64 KiB as a worker's output (docs/reference/isolation-timeouts-interrupts.md).
 const long long maxOutput = 64 * 1024;
 
-void flushStreams() {
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(stdout);
-    std::fflush(stderr);
-}
-
 }  // namespace
 
 OutputCapture::~OutputCapture() {
@@ -39,7 +31,7 @@ bool OutputCapture::start(std::string& error) {
     if (!file.valid()) {
         return false;
     }
-    flushStreams();
+    platform::flushStandardStreams();
     const int savedOut = platform::copyDescriptor(1);
     const int savedErr = platform::copyDescriptor(2);
     const int consoleFd = savedOut >= 0 ? platform::copyDescriptor(savedOut) : -1;
@@ -93,7 +85,7 @@ std::string OutputCapture::take() {
     if (!active()) {
         return {};
     }
-    flushStreams();
+    platform::flushStandardStreams();
     const long long size = platform::outputFileSize(file_);
     if (size <= 0) {
         return {};

@@ -7,6 +7,7 @@
 
 #include <robottestingframework/Exception.h>
 
+#include "core/guarded_call.h"
 #include "platform/clock.h"
 
 namespace robottestingframework {
@@ -18,20 +19,6 @@ std::string seconds(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.2f s", value);
     return text;
-}
-
-// What a fixture call threw, as the suite words it.
-template <typename Call>
-bool guarded(Call call, std::string& why) {
-    try {
-        call();
-        return true;
-    } catch (const std::exception& e) {
-        why = e.what();
-    } catch (...) {
-        why = "unhandled exception of unknown type";
-    }
-    return false;
 }
 
 std::size_t root(std::vector<std::size_t>& parent, std::size_t at) {
@@ -174,7 +161,7 @@ void SharedWorld::start() {
         }
         manager.reset();
         std::lock_guard<std::mutex> call(callMutex_);
-        if (guarded([&] { up = manager_->setup(); }, why) && !up) {
+        if (guardedCall([&] { up = manager_->setup(); }, why) && !up) {
             why = "setup returned false";
         }
     }
@@ -281,7 +268,7 @@ std::string SharedWorld::stopNow() {
     std::string why;
     {
         std::lock_guard<std::mutex> call(callMutex_);
-        guarded([this] { manager_->tearDown(); }, why);
+        guardedCall([this] { manager_->tearDown(); }, why);
     }
     double upFor = 0;
     {
@@ -345,7 +332,7 @@ bool SharedWorld::check(FixtureEvents* suite) {
     }
     bool ok = true;
     std::string why;
-    if (guarded([&] { ok = manager_->check(); }, why) && ok) {
+    if (guardedCall([&] { ok = manager_->check(); }, why) && ok) {
         return true;
     }
     fixtureCollapsed(TestMessage(why.empty() ? "check failed" : why));
