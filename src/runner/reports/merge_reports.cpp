@@ -381,6 +381,7 @@ std::string mergeJson(const std::vector<Report>& reports) {
     std::string timestamp;
     std::size_t suiteCount = 0;
     std::size_t suitesFailed = 0;
+    std::size_t fixturesFailed = 0;
     bool reran = false;
     for (const Report& report : reports) {
         if (report.shard.rerun) {
@@ -407,6 +408,7 @@ std::string mergeJson(const std::vector<Report>& reports) {
         stop = std::max(stop, summary.value("stop", -1LL));
         suiteCount += summary.value("suites", 0U);
         suitesFailed += summary.value("/extra/robotology.rtf/suitesFailed"_json_pointer, 0U);
+        fixturesFailed += summary.value("/extra/robotology.rtf/fixturesFailed"_json_pointer, 0U);
         const Json extra = results.value("/extra/robotology.rtf"_json_pointer, Json::object());
         for (const auto& fixture : extra.value("fixtureFailures", Json::array())) {
             fixtures.push_back(fixture);
@@ -491,6 +493,7 @@ std::string mergeJson(const std::vector<Report>& reports) {
     }
     rtf["flaky"] = counts["state:flaky"];
     rtf["suitesFailed"] = suitesFailed;
+    rtf["fixturesFailed"] = fixturesFailed;  // each suite, and so each fixture, in one shard
     summary["extra"] = {{ctrfExtensionKey, rtf}};
 
     Json merged = Json::object();

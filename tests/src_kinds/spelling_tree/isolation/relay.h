@@ -1,2 +1,4 @@
 // Spells a kind in full.
-inline bool ends(ResultEvent::Kind kind) { return kind == ResultEvent::Kind::EndTest; }
+inline bool ends(ResultEvent::Kind kind) {
+    return kind == ResultEvent::Kind::EndTest;
+}

@@ -1,3 +1,2 @@
 // Spells a kind at the start of a line.
-const auto kind =
-Kind::Probe;
+const auto kind = Kind::Probe;
