@@ -13,6 +13,7 @@
 #include <robottestingframework/Exception.h>
 #include <robottestingframework/TestResult.h>
 
+#include "core/not_run_reasons.h"
 #include "type_name.h"
 
 namespace robottestingframework {
@@ -155,7 +156,7 @@ void TestCase::run(TestResult& result) {
             }
         }
         if (interrupted_) {
-            result.addInterrupted(this, TestMessage("interrupted while running"));
+            result.addInterrupted(this, TestMessage(notrun::stoppedWhileRunning));
             successful_ = false;
             reported = true;
         }

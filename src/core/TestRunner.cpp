@@ -5,6 +5,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/not_run_reasons.h"
+
 namespace robottestingframework {
 
 TestRunner::TestRunner() = default;
@@ -55,7 +57,7 @@ void TestRunner::run(TestResult& result) {
     result.startTestRunner();
     for (Test* test : tests_) {
         if (interrupted_) {
-            reportNotRun(result, test, TestMessage("interrupted"), true);
+            reportNotRun(result, test, TestMessage(notrun::interrupted), true);
             continue;
         }
         TestMessage reason;
@@ -77,7 +79,7 @@ void TestRunner::run(TestResult& result) {
             }
         }
         if (!started) {
-            reportNotRun(result, test, TestMessage("interrupted"), true);
+            reportNotRun(result, test, TestMessage(notrun::interrupted), true);
             continue;
         }
         test->run(result);

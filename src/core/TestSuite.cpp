@@ -10,6 +10,7 @@
 #include <robottestingframework/TestResult.h>
 
 #include "core/guarded_call.h"
+#include "core/not_run_reasons.h"
 
 namespace robottestingframework {
 
@@ -270,13 +271,13 @@ void TestSuite::run(TestResult& result) {
     auto stopped = [&](std::size_t i) {
         if (interrupted_) {
             successful_ = false;
-            reportRemaining(result, i, TestMessage("interrupted"), true);
+            reportRemaining(result, i, TestMessage(notrun::interrupted), true);
             return true;
         }
         if (collapsed_) {
             reportCollapse();
-            reportRemaining(
-                result, i, TestMessage("fixture collapsed: " + fixtureFailure().toString()), false);
+            // The whole reason is the suite's error, said once; each test refers to it.
+            reportRemaining(result, i, TestMessage(notrun::fixtureCollapsed), false);
             return true;
         }
         TestMessage reason;
@@ -299,9 +300,10 @@ void TestSuite::run(TestResult& result) {
         // of their own.
         if (interrupted_) {
             successful_ = false;
-            reportRemaining(result, 0, TestMessage("interrupted"), true);
+            reportRemaining(result, 0, TestMessage(notrun::interrupted), true);
         } else {
-            reportRemaining(result, 0, fixtureFailure(), false);
+            // The whole reason is the suite's error, said once; each test refers to it.
+            reportRemaining(result, 0, TestMessage(notrun::fixtureFailed), false);
         }
     } else {
         for (std::size_t i = 0; i < tests_.size(); ++i) {

@@ -4,11 +4,16 @@ pasted. A failed check showed both a "check FAILED:" and a "failure:" line; a po
 - name: ...`). Through the installed runner, from the suite's folder."""
 import json
 import re
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ET
 from xml.etree import ElementTree
 
 import pytest
 
-from conftest import run_runner, validate_ctrf, validate_junit, validate_tap
+from conftest import (leftover_processes, marked, plugin, run_runner, start_runner,
+                      validate_ctrf, validate_junit, validate_tap)
 from web_run import WebRun, request
 
 TAP = """#!/bin/sh
@@ -209,3 +214,129 @@ def test_a_points_yaml_keys_are_diagnostics_in_every_report(tmp_path, jobs):
     html = (tmp_path / "r.html").read_text()
     assert '"text":"not ok 1 - gripper closes"' in html, html[:2000]
     assert '"diagnostics":"message: the gripper is still open\\nseverity: fail' in html
+
+
+# --- A world that fails to start, and tests never run ----------------------------------------
+
+SKIPPED = "skipped: the suite's fixture failed (see the suite's error)"
+NOT_RUN = "interrupted: not run: the run was stopped before it started"
+
+
+def failing_world(tmp_path):
+    """Two suites of three tests, each with a process fixture (a world) that says three lines
+    and exits before it is ready; its reason (the deadline, command, folder, log tail) is 8
+    lines."""
+    (tmp_path / "world.xml").write_text("""<world name="lab" logdir="logs">
+  <process name="robot" command="sh -c 'echo first-said; echo second-said; echo third-said; exit 3'">
+    <ready timeout="20s"><output>^ready$</output></ready>
+  </process>
+</world>
+""")
+    for name in ("a", "b", "c"):
+        (tmp_path / f"{name}.sh").write_text("#!/bin/sh\nexit 0\n")
+        (tmp_path / f"{name}.sh").chmod(0o755)
+    args = []
+    for suite in ("arm", "base"):
+        (tmp_path / f"{suite}.xml").write_text(f"""<suite name="{suite}">
+  <fixture type="process">world.xml</fixture>
+  <test type="exec">a.sh</test>
+  <test type="exec">b.sh</test>
+  <test type="exec">c.sh</test>
+</suite>
+""")
+        args += ["-s", f"{suite}.xml"]
+    return args
+
+
+@pytest.mark.parametrize("jobs", ["1", "2"])
+def test_a_world_that_fails_to_start_is_said_once_and_each_skipped_test_in_a_line(
+        tmp_path, marker, jobs):
+    """The whole multi-line reason of a world that did not start was printed again under each
+    skipped test (58 console lines for 6 tests, the second trial of the first hour). It is said
+    once, by the suite's error; each skipped test has one line referring to it, on the console
+    (-j 1 and -j 2) and in every report."""
+    args = failing_world(tmp_path)
+    r = run_runner(*args, "-j", jobs, "-o", "junit:r.xml", "-o", "text:r.txt", "-o",
+                   "html:r.html", "-o", "tap:r.tap", "-o", "json:r.json", cwd=tmp_path,
+                   env=marked(marker))
+    assert r.returncode == 1, r
+    # The reason's last line (the log's tail) once per suite, not once per test.
+    assert r.stdout.count("| third-said") == 2, r.stdout
+    assert r.stdout.count("exited with status 3") == 2, r.stdout
+    assert r.stdout.count(SKIPPED + "\n") == 6, r.stdout
+    assert "6 skipped" in r.stdout.splitlines()[-1], r.stdout
+    # 2 suites of 3 tests: a line per suite, per test and its skip, the two reasons (8 lines
+    # each), the suites' ends and the summary; 58 when each test repeated the reason.
+    assert len(r.stdout.splitlines()) <= 42, (len(r.stdout.splitlines()), r.stdout)
+
+    text = (tmp_path / "r.txt").read_text()
+    assert text.count(SKIPPED + "\n") == 6, text
+    # The fixture's own report of it and the suite's error; none under a test.
+    assert text.count("| third-said") <= 4, text
+    validate_junit(tmp_path / "r.xml")
+    root = ET.parse(tmp_path / "r.xml").getroot()
+    skips = [s.get("message") for s in root.iter("skipped")]
+    assert skips == ["the suite's fixture failed (see the suite's error)"] * 6, skips
+    errors = [e.get("message") for e in root.iter("error")]
+    assert len(errors) == 2 and all("third-said" in e for e in errors), errors
+    validate_tap(tmp_path / "r.tap")
+    tap = (tmp_path / "r.tap").read_text()
+    assert tap.count("# SKIP the suite's fixture failed (see the suite's error)\n") == 6, tap
+    validate_ctrf(tmp_path / "r.json")
+    ctrf = json.loads((tmp_path / "r.json").read_text())
+    messages = [t.get("message", "") for t in ctrf["results"]["tests"]
+                if t["status"] == "skipped"]
+    assert messages == ["the suite's fixture failed (see the suite's error)"] * 6, messages
+    html = (tmp_path / "r.html").read_text()
+    data = json.loads(html.split('id="report-data">', 1)[1].split("</script>", 1)[0])
+    for suite in data["suites"]:
+        for test in suite["tests"]:
+            assert "third-said" not in json.dumps(test), test
+    assert not leftover_processes(marker)
+
+
+def finish(proc, timeout=30):
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        proc.kill()
+        out, err = proc.communicate()
+        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
+    return proc.returncode, out, err
+
+
+@pytest.mark.parametrize("jobs, isolation", [("1", "none"), ("2", "none"), ("2", "process")])
+def test_tests_an_interrupt_stopped_or_never_started_say_what_happened(
+        tmp_path, marker, jobs, isolation):
+    """Tests never run because of Ctrl-C read "interrupted: interrupted", and in process the
+    running one "interrupted: interrupted while running": the message repeated the kind's
+    word. It says what happened, in the same words in process and in a worker."""
+    (tmp_path / "hold.xml").write_text(f"""<suite name="hold">
+  <test name="hung" param="--seconds 60">{plugin("waiting_test")}</test>
+  <test name="after">{plugin("passing_test")}</test>
+</suite>
+""")
+    (tmp_path / "later.xml").write_text(f"""<suite name="later">
+  <test name="hung2" param="--seconds 60">{plugin("waiting_test")}</test>
+  <test name="never">{plugin("passing_test")}</test>
+</suite>
+""")
+    (tmp_path / "last.xml").write_text(f"""<suite name="last">
+  <test name="never2">{plugin("passing_test")}</test>
+</suite>
+""")
+    proc = start_runner("-s", "hold.xml", "-s", "later.xml", "-s", "last.xml", "-j", jobs,
+                        "--isolation", isolation, "-o", "junit:r.xml", cwd=tmp_path,
+                        env=marked(marker))
+    time.sleep(1.5)
+    proc.send_signal(signal.SIGINT)
+    code, out, err = finish(proc)
+    assert code == 130, (code, out, err)
+    assert "interrupted: interrupted" not in out, out
+    assert "interrupted while running" not in out, out
+    # The tests running then: in process the suites run one at a time at any -j.
+    stopped = out.count("      interrupted: stopped while running")
+    assert stopped == (2 if isolation == "process" else 1), out
+    assert out.count(f"      {NOT_RUN}\n") == 5 - stopped, out
+    validate_junit(tmp_path / "r.xml")
+    assert not leftover_processes(marker)

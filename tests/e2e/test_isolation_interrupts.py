@@ -79,11 +79,15 @@ def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker
                                "after": "interrupted", "never": "interrupted"}, out
     assert "INTERRUPTED" in text.read_text()
     assert "interrupted" in out.splitlines()[-1] or "failed" in out.splitlines()[-1], out
-    if isolation == "process":
-        # The console puts the kind's word before the message, which does not say it again
-        # (it did: "interrupted: interrupted: last reported: ...").
-        assert "      interrupted: stopped while running: " in out, out
-        assert "interrupted: interrupted:" not in out, out
+    # The console puts the kind's word before the message, which does not say it again (it
+    # did: "interrupted: interrupted: last reported: ...", in process "interrupted: interrupted
+    # while running", and "interrupted: interrupted" for each test never started). The same
+    # words in process and in a worker (issue 38, friction 9).
+    assert "      interrupted: stopped while running" in out, out
+    assert "interrupted: interrupted" not in out, out
+    assert "interrupted while running" not in out, out
+    # "after" (its suite stopped) and "never" (a later suite): one line each, saying why.
+    assert out.count("      interrupted: not run: the run was stopped before it started\n") == 2, out
     assert leftover_processes(marker) == []
 
 

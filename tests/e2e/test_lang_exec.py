@@ -37,6 +37,19 @@ def test_exit_77_skips(tmp_path, isolation):
     r = run_isolated(isolation, "--test", f"./{path.name}", "-v", cwd=tmp_path)
     assert r.returncode == 0, r
     assert "1 skipped" in r.stdout, r
+    # The kind's word once: it read "skipped: skipped (exit status 77): ..." (issue 38,
+    # friction 9).
+    assert "      skipped: exit status 77: no robot attached" in r.stdout, r
+    assert "skipped: skipped" not in r.stdout, r
+
+
+def test_a_plan_of_nothing_skips_saying_it_once(tmp_path, isolation):
+    path = shell(tmp_path, "echo 'TAP version 14'\necho '1..0'\n")
+    r = run_isolated(isolation, "--test", f"./{path.name}", cwd=tmp_path)
+    assert r.returncode == 0, r
+    assert "1 skipped" in r.stdout, r
+    assert "      skipped: the plan is 1..0" in r.stdout, r
+    assert "skipped: skipped" not in r.stdout, r
 
 
 def test_other_exit_status_fails(tmp_path, isolation):

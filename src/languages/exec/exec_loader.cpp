@@ -221,7 +221,7 @@ public:
             if (tap.skipAll() && !tap.failed() && getResult()) {
                 getResult()->addSkipped(
                     this,
-                    TestMessage(tap.skipReason().empty() ? "skipped (plan 1..0)" : tap.skipReason(),
+                    TestMessage(tap.skipReason().empty() ? "the plan is 1..0" : tap.skipReason(),
                                 "", path_, 0));
             }
             return;
@@ -229,7 +229,7 @@ public:
         if (outcome.exitStatus == kSkipStatus) {
             if (getResult()) {
                 getResult()->addSkipped(
-                    this, TestMessage("skipped (exit status 77)",
+                    this, TestMessage("exit status 77",
                                       lastLine(err.empty() ? lastOut.take() : err), path_, 0));
             }
         } else if (outcome.exitStatus != 0) {

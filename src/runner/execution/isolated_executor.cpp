@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/events.h"
+#include "core/not_run_reasons.h"
 #include "isolation/event_relay.h"
 #include "languages/plugin_locator.h"
 #include "languages/test_loader.h"
@@ -204,7 +205,8 @@ TestStatus IsolatedExecutor::run(const runner::TestSpec& spec, Test& self, TestR
             TestMessage("timed out after " + seconds(spec.timeout) + forced, said(relay))));
     } else if (why == Stop::Interrupt) {
         // The kind says "interrupted" before the message: the message says how.
-        relay.add(events::interrupted(TestMessage("stopped while running" + forced, said(relay))));
+        relay.add(
+            events::interrupted(TestMessage(notrun::stoppedWhileRunning + forced, said(relay))));
     } else if (why == Stop::Garbage || worker.corrupt()) {
         relay.add(events::error(
             TestMessage("the worker sent unreadable events; it was stopped", ending.toString())));

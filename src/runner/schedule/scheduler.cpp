@@ -9,6 +9,7 @@
 #include <robottestingframework/TestSuite.h>
 
 #include "core/events.h"
+#include "core/not_run_reasons.h"
 #include "platform/environment.h"
 #include "platform/private_network.h"
 #include "variables/variables.h"
@@ -339,7 +340,7 @@ void Scheduler::startReady() {
             continue;
         }
         if (interrupted_) {
-            notRun(job, TestMessage("interrupted"), true);
+            notRun(job, TestMessage(notrun::interrupted), true);
             continue;
         }
         // As the library's TestRunner asks before each suite (--fail-fast).

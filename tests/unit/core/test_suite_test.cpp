@@ -105,7 +105,11 @@ TEST(TestSuite, FailingFixtureTearsDownTheOnesAlreadyUpAndSkipsEveryTest) {
     EXPECT_FALSE(suite.succeeded());
     ASSERT_EQ(r.suite().tests.size(), 2u);
     EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
-    EXPECT_EQ(r.test(0).reason()->message.getMessage(), "fixture b failed: setup returned false");
+    // The reason is said once, by the suite's error; each skipped test refers to it in a line.
+    EXPECT_EQ(r.test(0).reason()->message.toString(),
+              "the suite's fixture failed (see the suite's error)");
+    EXPECT_EQ(r.test(1).reason()->message.toString(),
+              "the suite's fixture failed (see the suite's error)");
     EXPECT_TRUE(r.suite().fixtureFailed);
     EXPECT_TRUE(
         contains(eventLines(r.collector), "error s: fixture b failed: setup returned false"));
@@ -123,8 +127,10 @@ TEST(TestSuite, FixtureThrowingInSetupIsAFixtureFailureWithTheReason) {
     SuiteRun r;
     suite.run(r.result);
     EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
-    EXPECT_EQ(r.test(0).reason()->message.getMessage(), "fixture a failed: boom");
+    EXPECT_EQ(r.test(0).reason()->message.toString(),
+              "the suite's fixture failed (see the suite's error)");
     EXPECT_EQ(suite.fixtureFailure().getMessage(), "fixture a failed: boom");
+    EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture a failed: boom"));
 }
 
 TEST(TestSuite, FailingTestFailsTheSuite) {
@@ -181,7 +187,8 @@ TEST(TestSuite, CollapseFromAnotherThreadInterruptsTheTestAndSkipsTheRest) {
     EXPECT_TRUE(t2.log.empty());
     EXPECT_EQ(r.test(0).status, TestStatus::Interrupted);
     EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
-    EXPECT_EQ(r.test(1).reason()->message.getMessage(), "fixture collapsed: simulator died");
+    EXPECT_EQ(r.test(1).reason()->message.toString(),
+              "the suite's fixture collapsed (see the suite's error)");
     EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture collapsed: simulator died"));
     EXPECT_FALSE(suite.succeeded());
     EXPECT_EQ(suite.fixtureFailure().getMessage(), "simulator died");
@@ -198,7 +205,7 @@ TEST(TestSuite, CollapseIsReportedOnceAfterTheRunningTestEnds) {
     suite.run(r.result);
     const Lines lines = eventLines(r.collector);
     EXPECT_EQ(lines,
-              (Lines{"start-suite s", "start-test t1", "interrupted t1: interrupted while running",
+              (Lines{"start-suite s", "start-test t1", "interrupted t1: stopped while running",
                      "end-test t1", "error s: fixture collapsed: first", "end-suite s"}));
 }
 
@@ -345,8 +352,12 @@ TEST(TestSuite, WhatAFixtureReportedBeforeFailingIsTheReasonOfTheSkippedTests) {
     SuiteRun r;
     suite.run(r.result);
     ASSERT_EQ(r.suite().tests.size(), 1u);
-    EXPECT_EQ(r.test(0).reason()->message.getMessage(),
-              "fixture bus failed: setup returned false after reporting: no robot on the bus");
+    // What it reported is in the suite's error, said once; the skipped test refers to it.
+    EXPECT_EQ(r.test(0).reason()->message.toString(),
+              "the suite's fixture failed (see the suite's error)");
+    EXPECT_TRUE(contains(
+        eventLines(r.collector),
+        "error s: fixture bus failed: setup returned false after reporting: no robot on the bus"));
 }
 
 TEST(TestSuite, FixtureThrowingFixtureExceptionFailsTheSuiteWithItsMessage) {

@@ -1,11 +1,13 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <utility>
 
 #include <gtest/gtest.h>
 
 #include <robottestingframework/ConsoleListener.h>
+#include <robottestingframework/FixtureManager.h>
 #include <robottestingframework/TestAssert.h>
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestRunner.h>
@@ -266,4 +268,42 @@ TEST(ConsoleListener, ReadingTheRunsCollectorEachSuiteSaysItsOwnState) {
     EXPECT_TRUE(has(text, "  suite FAILED  first")) << text;
     EXPECT_TRUE(has(text, "  suite passed  second")) << text;
     EXPECT_EQ(lastLine(text), "1 passed, 1 failed") << text;
+}
+
+// Issue 38, friction 9: the whole multi-line reason of a fixture that failed was printed again
+// under each skipped test of the suite. The suite's error says it once; each skipped test says
+// one line referring to it.
+TEST(ConsoleListener, AFixtureFailureIsSaidOnceAndEachSkippedTestInALine) {
+    class World : public FixtureManager {
+    public:
+        bool setup(int /*argc*/, char** /*argv*/) override {
+            throw std::runtime_error("the world did not start\n  | first-said\n  | last-said");
+        }
+        void tearDown() override {}
+    } world;
+    LambdaTest a("a"), b("b"), c("c");
+    TestSuite suite("robot");
+    suite.addFixtureManager(&world);
+    suite.addTest(&a);
+    suite.addTest(&b);
+    suite.addTest(&c);
+    for (bool shared : {false, true}) {
+        TestResultCollector collector;
+        const std::string text = consoleTextOf(
+            {&suite}, [](ConsoleListener&) {}, false, shared ? &collector : nullptr);
+        std::size_t said = 0;
+        for (std::size_t at = text.find("| last-said"); at != std::string::npos;
+             at = text.find("| last-said", at + 1)) {
+            ++said;
+        }
+        EXPECT_EQ(said, 1u) << text;
+        std::size_t skipped = 0;
+        const std::string line =
+            "      skipped: the suite's fixture failed (see the suite's error)\n";
+        for (std::size_t at = text.find(line); at != std::string::npos;
+             at = text.find(line, at + 1)) {
+            ++skipped;
+        }
+        EXPECT_EQ(skipped, 3u) << text;
+    }
 }
