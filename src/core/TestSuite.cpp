@@ -277,7 +277,9 @@ void TestSuite::run(TestResult& result) {
         if (collapsed_) {
             reportCollapse();
             // The whole reason is the suite's error, said once; each test refers to it.
-            reportRemaining(result, i, TestMessage(notrun::fixtureCollapsed), false);
+            reportRemaining(result, i,
+                            notrun::fixtureReason(notrun::fixtureCollapsed, fixtureFailure()),
+                            false);
             return true;
         }
         TestMessage reason;
@@ -303,7 +305,8 @@ void TestSuite::run(TestResult& result) {
             reportRemaining(result, 0, TestMessage(notrun::interrupted), true);
         } else {
             // The whole reason is the suite's error, said once; each test refers to it.
-            reportRemaining(result, 0, TestMessage(notrun::fixtureFailed), false);
+            reportRemaining(result, 0,
+                            notrun::fixtureReason(notrun::fixtureFailed, fixtureFailure()), false);
         }
     } else {
         for (std::size_t i = 0; i < tests_.size(); ++i) {

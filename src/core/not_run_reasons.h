@@ -5,6 +5,10 @@
 // stoppedWhileRunning too, so a test reads the same in process and in a worker.
 #pragma once
 
+#include <string>
+
+#include <robottestingframework/TestMessage.h>
+
 namespace robottestingframework {
 namespace notrun {
 
@@ -16,6 +20,20 @@ inline constexpr const char* stoppedWhileRunning = "stopped while running";
 inline constexpr const char* fixtureFailed = "the suite's fixture failed (see the suite's error)";
 inline constexpr const char* fixtureCollapsed =
     "the suite's fixture collapsed (see the suite's error)";
+
+// What a test kept from running by its suite's fixture says: `what` (fixtureFailed or
+// fixtureCollapsed), then the first line of the fixture's failure, so that each skipped test
+// of a report read alone (a Jenkins or GitLab page of one test case) still says why; the rest
+// of the reason (its other lines, the log's tail) is the suite's error only.
+inline TestMessage fixtureReason(const char* what, const TestMessage& failure) {
+    std::string first = failure.getMessage();
+    first = first.substr(0, first.find('\n'));
+    constexpr std::size_t most = 200;  // a line, not a page
+    if (first.size() > most) {
+        first = first.substr(0, most) + "...";
+    }
+    return TestMessage(first.empty() ? std::string(what) : std::string(what) + ": " + first);
+}
 
 }  // namespace notrun
 }  // namespace robottestingframework

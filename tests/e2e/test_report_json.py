@@ -64,7 +64,10 @@ def test_a_failed_fixture_and_its_skipped_tests(tmp_path, suite_file):
     # The reason is said once, by the suite's fixture failure; the skipped test refers to it
     # (issue 38, friction 9).
     assert test["status"] == "skipped", test
-    assert test["message"] == "the suite's fixture failed (see the suite's error)", test
+    assert test["message"].startswith("the suite's fixture failed (see the suite's error): "
+                                      "fixture "), test
+    assert test["message"].endswith("setup returned false after reporting: fixture B refuses "
+                                    "to start"), test
     (fixture,) = report["results"]["extra"]["robotology.rtf"]["fixtureFailures"]
     assert fixture["suite"] == "broken world", fixture
     assert "setup returned false" in fixture["problems"], fixture

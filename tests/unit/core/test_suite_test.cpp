@@ -106,10 +106,13 @@ TEST(TestSuite, FailingFixtureTearsDownTheOnesAlreadyUpAndSkipsEveryTest) {
     ASSERT_EQ(r.suite().tests.size(), 2u);
     EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
     // The reason is said once, by the suite's error; each skipped test refers to it in a line.
+    // ...with the first line of the reason, so that a test read alone says why.
     EXPECT_EQ(r.test(0).reason()->message.toString(),
-              "the suite's fixture failed (see the suite's error)");
+              "the suite's fixture failed (see the suite's error): fixture b failed: setup "
+              "returned false");
     EXPECT_EQ(r.test(1).reason()->message.toString(),
-              "the suite's fixture failed (see the suite's error)");
+              "the suite's fixture failed (see the suite's error): fixture b failed: setup "
+              "returned false");
     EXPECT_TRUE(r.suite().fixtureFailed);
     EXPECT_TRUE(
         contains(eventLines(r.collector), "error s: fixture b failed: setup returned false"));
@@ -128,7 +131,7 @@ TEST(TestSuite, FixtureThrowingInSetupIsAFixtureFailureWithTheReason) {
     suite.run(r.result);
     EXPECT_EQ(r.test(0).status, TestStatus::Skipped);
     EXPECT_EQ(r.test(0).reason()->message.toString(),
-              "the suite's fixture failed (see the suite's error)");
+              "the suite's fixture failed (see the suite's error): fixture a failed: boom");
     EXPECT_EQ(suite.fixtureFailure().getMessage(), "fixture a failed: boom");
     EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture a failed: boom"));
 }
@@ -188,7 +191,7 @@ TEST(TestSuite, CollapseFromAnotherThreadInterruptsTheTestAndSkipsTheRest) {
     EXPECT_EQ(r.test(0).status, TestStatus::Interrupted);
     EXPECT_EQ(r.test(1).status, TestStatus::Skipped);
     EXPECT_EQ(r.test(1).reason()->message.toString(),
-              "the suite's fixture collapsed (see the suite's error)");
+              "the suite's fixture collapsed (see the suite's error): simulator died");
     EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture collapsed: simulator died"));
     EXPECT_FALSE(suite.succeeded());
     EXPECT_EQ(suite.fixtureFailure().getMessage(), "simulator died");
@@ -354,7 +357,8 @@ TEST(TestSuite, WhatAFixtureReportedBeforeFailingIsTheReasonOfTheSkippedTests) {
     ASSERT_EQ(r.suite().tests.size(), 1u);
     // What it reported is in the suite's error, said once; the skipped test refers to it.
     EXPECT_EQ(r.test(0).reason()->message.toString(),
-              "the suite's fixture failed (see the suite's error)");
+              "the suite's fixture failed (see the suite's error): fixture bus failed: setup "
+              "returned false after reporting: no robot on the bus");
     EXPECT_TRUE(contains(
         eventLines(r.collector),
         "error s: fixture bus failed: setup returned false after reporting: no robot on the bus"));

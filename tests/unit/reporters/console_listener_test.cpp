@@ -298,8 +298,9 @@ TEST(ConsoleListener, AFixtureFailureIsSaidOnceAndEachSkippedTestInALine) {
         }
         EXPECT_EQ(said, 1u) << text;
         std::size_t skipped = 0;
+        // The first line of the reason only (`| last-said` is said once, above).
         const std::string line =
-            "      skipped: the suite's fixture failed (see the suite's error)\n";
+            "      skipped: the suite's fixture failed (see the suite's error): fixture ";
         for (std::size_t at = text.find(line); at != std::string::npos;
              at = text.find(line, at + 1)) {
             ++skipped;

@@ -241,9 +241,9 @@ TEST(SharedWorld, ACollapseInterruptsItsSuiteAndFailsThePendingOnes) {
     EXPECT_EQ(journal.count("stop lab.xml"), 1u);  // a collapsed world is still stopped
     bool pendingSkipped = false;
     for (const auto& line : skips.skipped) {
-        pendingSkipped = pendingSkipped || line ==
-                                               "b1: the suite's fixture failed (see the "
-                                               "suite's error)";
+        pendingSkipped =
+            pendingSkipped ||
+            line.rfind("b1: the suite's fixture failed (see the suite's error): ", 0) == 0;
     }
     EXPECT_TRUE(pendingSkipped);
     bool pendingFailed = false;  // the suite's error says why, once
