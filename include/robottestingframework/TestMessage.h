@@ -1,6 +1,7 @@
 // A message attached to a test event: what happened, more detail, and where in the source.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,18 +18,25 @@ public:
     TestMessage() = default;
     TestMessage(std::string message, std::string detail = "", std::string filename = "",
                 unsigned int line = 0);
+    // Copies the diagnostics too (held apart, so a message without any, nearly every one,
+    // costs a pointer: a run keeps one message per event).
+    TestMessage(const TestMessage& other);
+    TestMessage& operator=(const TestMessage& other);
+    TestMessage(TestMessage&&) noexcept = default;
+    TestMessage& operator=(TestMessage&&) noexcept = default;
+    ~TestMessage() = default;
 
     void setMessage(const std::string& message) { message_ = message; }
     void setDetail(const std::string& detail) { detail_ = detail; }
     void setSourceFileName(const std::string& filename) { filename_ = filename; }
     void setSourceLineNumber(unsigned int line) { line_ = line; }
-    void setDiagnostics(Diagnostics diagnostics) { diagnostics_ = std::move(diagnostics); }
+    void setDiagnostics(Diagnostics diagnostics);
 
     std::string getMessage() const { return message_; }
     std::string getDetail() const { return detail_; }
     std::string getSourceFileName() const { return filename_; }
     unsigned int getSourceLineNumber() const { return line_; }
-    const Diagnostics& getDiagnostics() const { return diagnostics_; }
+    const Diagnostics& getDiagnostics() const;
 
     // "file:line" when the source is known, empty otherwise.
     std::string getSourceLocation() const;
@@ -45,7 +53,7 @@ private:
     std::string detail_;
     std::string filename_;
     unsigned int line_ = 0;
-    Diagnostics diagnostics_;
+    std::unique_ptr<Diagnostics> diagnostics_;  // null: none
 };
 
 }  // namespace robottestingframework

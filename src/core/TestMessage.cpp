@@ -11,6 +11,32 @@ TestMessage::TestMessage(std::string message, std::string detail, std::string fi
       filename_(std::move(filename)),
       line_(line) {}
 
+TestMessage::TestMessage(const TestMessage& other)
+    : message_(other.message_),
+      detail_(other.detail_),
+      filename_(other.filename_),
+      line_(other.line_),
+      diagnostics_(other.diagnostics_ ? std::make_unique<Diagnostics>(*other.diagnostics_)
+                                      : nullptr) {}
+
+TestMessage& TestMessage::operator=(const TestMessage& other) {
+    if (this != &other) {
+        TestMessage copy(other);
+        *this = std::move(copy);
+    }
+    return *this;
+}
+
+void TestMessage::setDiagnostics(Diagnostics diagnostics) {
+    diagnostics_ =
+        diagnostics.empty() ? nullptr : std::make_unique<Diagnostics>(std::move(diagnostics));
+}
+
+const TestMessage::Diagnostics& TestMessage::getDiagnostics() const {
+    static const Diagnostics none;
+    return diagnostics_ ? *diagnostics_ : none;
+}
+
 std::string TestMessage::getSourceLocation() const {
     if (filename_.empty()) {
         return {};
@@ -30,7 +56,7 @@ std::string TestMessage::toString() const {
 
 std::string TestMessage::diagnosticsText() const {
     std::string text;
-    for (const auto& [key, value] : diagnostics_) {
+    for (const auto& [key, value] : getDiagnostics()) {
         if (value.find('\n') == std::string::npos) {
             text += key + ": " + value + "\n";
             continue;
@@ -52,7 +78,7 @@ void TestMessage::clear() {
     detail_.clear();
     filename_.clear();
     line_ = 0;
-    diagnostics_.clear();
+    diagnostics_.reset();
 }
 
 }  // namespace robottestingframework
