@@ -9,6 +9,8 @@
 
 #include <robottestingframework/TestMessage.h>
 
+#include "core/text_safety.h"
+
 namespace robottestingframework {
 namespace notrun {
 
@@ -30,7 +32,8 @@ inline TestMessage fixtureReason(const char* what, const TestMessage& failure) {
     first = first.substr(0, first.find('\n'));
     constexpr std::size_t most = 200;  // a line, not a page
     if (first.size() > most) {
-        first = first.substr(0, most) + "...";
+        // Cut between characters: a split UTF-8 character is an invalid byte in every report.
+        first = first.substr(0, reporters::characterBoundary(first, most)) + "...";
     }
     return TestMessage(first.empty() ? std::string(what) : std::string(what) + ": " + first);
 }

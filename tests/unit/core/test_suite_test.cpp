@@ -8,6 +8,8 @@
 #include <robottestingframework/TestResult.h>
 #include <robottestingframework/TestSuite.h>
 
+#include "core/not_run_reasons.h"
+#include "core/text_safety.h"
 #include "core_test_helpers.h"
 
 using namespace rtf_test;
@@ -134,6 +136,22 @@ TEST(TestSuite, FixtureThrowingInSetupIsAFixtureFailureWithTheReason) {
               "the suite's fixture failed (see the suite's error): fixture a failed: boom");
     EXPECT_EQ(suite.fixtureFailure().getMessage(), "fixture a failed: boom");
     EXPECT_TRUE(contains(eventLines(r.collector), "error s: fixture a failed: boom"));
+}
+
+// The first line of a long reason is cut at 200 bytes, between two UTF-8 characters.
+TEST(TestSuite, ASkippedTestsReasonIsCutBetweenCharacters) {
+    std::string reason;
+    for (int i = 0; i < 150; ++i) {
+        reason += "\xc3\xa9";  // 'e' with an acute accent, 2 bytes
+    }
+    const TestMessage said = notrun::fixtureReason(notrun::fixtureFailed,
+                                                   TestMessage(" " + reason + "\nthe log's tail"));
+    const std::string prefix = std::string(notrun::fixtureFailed) + ":  ";
+    ASSERT_EQ(said.getMessage().rfind(prefix, 0), 0u) << said.getMessage();
+    const std::string cut = said.getMessage().substr(prefix.size());
+    // 1 space and 99 whole characters (199 bytes), not 1 space, 99 and a half.
+    EXPECT_EQ(cut, reason.substr(0, 198) + "...");
+    EXPECT_EQ(reporters::validUtf8(cut), cut);
 }
 
 TEST(TestSuite, FailingTestFailsTheSuite) {
