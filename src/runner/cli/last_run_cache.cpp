@@ -129,18 +129,27 @@ void recordLastRun(const Options& options, const TestResultCollector& collector,
     if (options.noCache) {
         return;
     }
-    std::vector<std::pair<std::string, std::string>> results;
+    // Whether any test failed, before any id is made: a run that passes in a folder without a
+    // cache leaves none behind, and builds no list of ids (at the end of the run, that list
+    // would be the run's peak memory: 10 000 ids).
     bool failed = false;
+    std::size_t count = 0;
     for (const SuiteRecord& suite : collector.suites()) {
         for (const TestRecord& test : suite.tests) {
-            results.emplace_back(historyTestId(suite, test), toString(test.status));
-            failed = failed || failing(results.back().second);
+            failed = failed || failing(toString(test.status));
+            ++count;
         }
     }
     std::error_code code;
-    // A run that passes in a folder without a cache leaves none behind.
     if (!failed && !fs::is_directory(options.cacheDir, code)) {
         return;
+    }
+    std::vector<std::pair<std::string, std::string>> results;
+    results.reserve(count);
+    for (const SuiteRecord& suite : collector.suites()) {
+        for (const TestRecord& test : suite.tests) {
+            results.emplace_back(historyTestId(suite, test), toString(test.status));
+        }
     }
     std::set<std::string> previous;
     std::string error;
