@@ -122,6 +122,18 @@ def paired_runs(ours, theirs, rounds):
     return Run(a), Run(b)
 
 
+def worker_libraries(worker):
+    """The shared libraries the worker program maps (ldd), the dynamic loader aside; [] when
+    ldd cannot say."""
+    try:
+        out = subprocess.run(["ldd", worker], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                             text=True, timeout=60).stdout
+    except (OSError, subprocess.SubprocessError):
+        return []
+    return [line.split("=>")[1].split("(")[0].strip() for line in out.splitlines()
+            if "=>" in line and "/" in line.split("=>")[1]]
+
+
 def write_cpp_suite(folder, plugin, name, count):
     path = os.path.join(folder, f"{name}.xml")
     with open(path, "w") as f:
@@ -466,6 +478,20 @@ def main():
                     table.line(f"{isolated} tests, isolated, -j 2: CPU per test", fmt_time(cpu),
                                f"bare fork+exit+wait {fmt_time(bare.cpu / isolated)}",
                                cpu * isolated / bare.cpu, "(stated)", True)
+                    # The same forks from a process with the worker's libraries mapped (as
+                    # every test's process has them: libstdc++, RTF's): what a fork costs a
+                    # worker before it loads its plug-in, reads its request or says anything.
+                    libraries = worker_libraries(os.path.join(build, "bin",
+                                                              "robottestingframework-worker"))
+                    if libraries:
+                        env = dict(os.environ, LD_PRELOAD=" ".join(libraries))
+                        mapped = Run([spawn([fork_cost, str(isolated), "2"], folder, env)
+                                      for _ in range(rounds)])
+                        table.line(f"{isolated} tests, isolated, -j 2: the worker's fork",
+                                   fmt_time(mapped.seconds / isolated),
+                                   f"bare fork+exit+wait x2 {fmt_time(bare.seconds / isolated)}",
+                                   mapped.seconds / bare.seconds,
+                                   "(stated: a fork with its libraries)", True)
 
         files = 200 // scale
         if "python" in parts:
