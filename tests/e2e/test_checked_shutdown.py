@@ -160,9 +160,12 @@ def test_a_process_that_ignores_sigterm_beyond_its_grace_fails(tmp_path, mark, i
     began = time.monotonic()
     r = run(tmp_path, mark, isolation)
     assert time.monotonic() - began < 30, r
+    # What it was doing when its grace ended, read before it was killed: where it waited, and
+    # that it ignores the stop signal.
     expect_stop_record(tmp_path, r, [
         "'server' did not stop within 300 ms of SIGTERM: killed with SIGKILL; a clean stop is: "
-        "status 0 or SIGTERM, within 300 ms", "| ready"])
+        "status 0 or SIGTERM, within 300 ms", "| ready",
+        "when its grace ended it was sleeping in 1 thread: ", "; SIGTERM ignored"])
 
 
 @pytest.mark.parametrize("isolation", ISOLATIONS)
