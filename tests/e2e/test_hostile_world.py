@@ -1,0 +1,55 @@
+"""Hostile world files and world processes of the process fixture, through the installed runner:
+what a world process or a world file does must not hang the run, lose what a failure says, nor
+pass unnoticed. Each run marks its processes (conftest.marked) and asserts none is left."""
+import pytest
+
+from conftest import leftover_processes, marked, plugin, run_runner
+
+PYTHON = "/usr/bin/python3"
+ISOLATIONS = ["process", "none"]
+
+
+def write_world(tmp_path, processes, prolog=""):
+    (tmp_path / "world.xml").write_text(
+        f'<world name="hostile" logdir="logs">\n{prolog}{processes}\n</world>\n')
+
+
+def write_suite(tmp_path):
+    (tmp_path / "suite.xml").write_text(
+        '<suite name="hostile">\n'
+        '  <fixture type="process">world.xml</fixture>\n'
+        f'  <test>{plugin("passing_test")}</test>\n'
+        '</suite>\n')
+    return "suite.xml"
+
+
+def run(tmp_path, marker, isolation, timeout=60):
+    return run_runner("--isolation", isolation, "-s", write_suite(tmp_path), cwd=tmp_path,
+                      env=marked(marker), timeout=timeout)
+
+
+# --- Durations: "inf" and "1e99s" read as numbers, and held the run for ever -----------------------
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+@pytest.mark.parametrize("where, value, says", [
+    ('<stop grace="{}"/>', "inf", 'grace="..." of <stop>'),
+    ('<stop grace="{}"/>', "1e99s", 'grace="..." of <stop>'),
+    ('<ready timeout="{}"><output>up</output></ready>', "infinity", 'timeout="..." of <ready>'),
+    ('<ready><delay>{}</delay></ready>', "1e308min", "<delay>"),
+], ids=["grace-inf", "grace-1e99s", "ready-infinity", "delay-1e308min"])
+def test_an_endless_duration_is_a_configuration_error_not_a_run_held_for_ever(
+        tmp_path, marker, isolation, where, value, says):
+    # Before the fix, a process that ignores SIGTERM with grace="inf" was waited for without
+    # end (the run never finished); "infinity" as a deadline waited for ever for a line.
+    write_world(tmp_path, f"""  <process name="stubborn">
+    <command shell="true">trap '' TERM; echo up; exec {PYTHON} -c "import signal,time;\
+signal.signal(signal.SIGTERM, signal.SIG_IGN);time.sleep(30)"</command>
+    {where.format(value)}
+  </process>""")
+    r = run(tmp_path, marker, isolation, timeout=20)
+    assert r.returncode == 2, r
+    assert f"world.xml:4: '{value}' is not a duration in {says}" in r.stderr, r
+    assert "at most 1000000 s, about 11.5 days" in r.stderr, r
+    assert "suite.xml:2" in r.stderr, r
+    assert not (tmp_path / "logs").exists(), r
+    assert not leftover_processes(marker), r
