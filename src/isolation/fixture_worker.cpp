@@ -7,6 +7,7 @@
 #include <robottestingframework/Test.h>
 #include <robottestingframework/TestResult.h>
 
+#include "core/guarded_call.h"
 #include "isolation/event_writer.h"
 #include "isolation/worker.h"
 #include "languages/test_loader.h"
@@ -57,7 +58,7 @@ std::string exceptionText() {
     try {
         throw;
     } catch (const std::exception& e) {
-        return e.what();
+        return exceptionReason(e);  // whole, past a NUL in what it quotes
     } catch (...) {
         return "unhandled exception of unknown type";
     }

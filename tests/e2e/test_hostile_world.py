@@ -53,3 +53,36 @@ signal.signal(signal.SIGTERM, signal.SIG_IGN);time.sleep(30)"</command>
     assert "suite.xml:2" in r.stderr, r
     assert not (tmp_path / "logs").exists(), r
     assert not leftover_processes(marker), r
+
+
+# --- A NUL byte in a world process's output ----------------------------------------------------
+
+NUL_PRINTER = """import sys, time
+sys.stdout.buffer.write(b"loading \\xff\\xfe \\x00 half a line\\n")
+sys.stdout.buffer.write(b"the line after the NUL\\n")
+sys.stdout.flush()
+time.sleep(0.2)
+sys.exit(3)
+"""
+
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_a_nul_byte_in_a_world_process_output_does_not_cut_the_failure(tmp_path, marker,
+                                                                         isolation):
+    # The failure quotes the process's last lines; before the fix, a NUL in one ended the
+    # message there (the fixture's exception was read through what(), a C string): the status,
+    # the command, the following lines were lost from the console and from every report.
+    (tmp_path / "nul.py").write_text(NUL_PRINTER)
+    write_world(tmp_path, f"""  <process name="nul printer" command="{PYTHON} nul.py">
+    <ready timeout="10s"><output>never printed</output></ready>
+  </process>""")
+    r = run_runner("--isolation", isolation, "-s", write_suite(tmp_path), "-o",
+                   "junit:report.xml", cwd=tmp_path, env=marked(marker), timeout=60)
+    assert r.returncode == 1, r
+    assert "process 'nul printer' exited with status 3 before it was ready" in r.stdout, r
+    error = r.stdout[r.stdout.index("error: fixture world.xml failed"):]
+    assert "half a line" in error, r
+    assert "| the line after the NUL" in error, r
+    report = (tmp_path / "report.xml").read_text(errors="replace")
+    assert "the line after the NUL" in report, report
+    assert not leftover_processes(marker), r
