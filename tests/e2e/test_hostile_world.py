@@ -86,3 +86,43 @@ def test_a_nul_byte_in_a_world_process_output_does_not_cut_the_failure(tmp_path,
     report = (tmp_path / "report.xml").read_text(errors="replace")
     assert "the line after the NUL" in report, report
     assert not leftover_processes(marker), r
+
+
+# --- What a world file says in the wrong place ------------------------------------------------------
+
+# Each was read without a word before the fix: the run started the world as if the line were not
+# there (a process "ready" at once, the first value of a variable silently replaced).
+MISPLACED = {
+    "text in ready": (
+        '  <process name="server" command="sleep 30">\n    <ready>\n      5s</ready>\n'
+        '  </process>',
+        "world.xml:4: text '5s' in <ready> (expected readiness checks"),
+    "variable twice": (
+        '  <process name="server" command="sleep ${seconds}"/>',
+        'world.xml:3: <variable name="seconds"> given twice (first at line 2)'),
+    "element in port": (
+        '  <process name="server" command="sleep 30">\n    <ready><port>8080\n'
+        '      <host>::1</host></port></ready>\n  </process>',
+        "world.xml:4: unexpected element <host> in <port> (it takes text only)"),
+    "element in stop": (
+        '  <process name="server" command="sleep 30">\n    <stop>\n      <grace>1s</grace>\n'
+        '    </stop>\n  </process>',
+        "world.xml:4: unexpected element <grace> in <stop>"),
+}
+
+
+@pytest.mark.parametrize("listing", [False, True], ids=["run", "list"])
+@pytest.mark.parametrize("case", sorted(MISPLACED))
+def test_text_or_elements_in_the_wrong_place_are_a_configuration_error(tmp_path, marker, case,
+                                                                        listing):
+    processes, expected = MISPLACED[case]
+    prolog = ('  <variable name="seconds">30</variable>\n  <variable name="seconds">1</variable>\n'
+              if case == "variable twice" else "")
+    write_world(tmp_path, processes, prolog)
+    r = run_runner(*(["--list"] if listing else []), "-s", write_suite(tmp_path), cwd=tmp_path,
+                   env=marked(marker), timeout=60)
+    assert r.returncode == 2, r
+    assert str(tmp_path / expected) in r.stderr, r
+    assert "suite.xml:2" in r.stderr, r
+    assert "starting" not in r.output and not (tmp_path / "logs").exists(), r
+    assert not leftover_processes(marker), r
