@@ -126,3 +126,19 @@ def test_text_or_elements_in_the_wrong_place_are_a_configuration_error(tmp_path,
     assert "suite.xml:2" in r.stderr, r
     assert "starting" not in r.output and not (tmp_path / "logs").exists(), r
     assert not leftover_processes(marker), r
+
+
+@pytest.mark.parametrize("reference", ["&#0;", "&#x000;"])
+def test_a_nul_character_reference_is_refused_not_a_pattern_cut_short(tmp_path, marker,
+                                                                       reference):
+    # Before the fix the pattern ended at the NUL pugixml decoded: the world was "ready" on a
+    # line matching READY, which is not what the file asks for.
+    write_world(tmp_path, f"""  <process name="server" command="{PYTHON} -u -c 'print(&quot;READY&quot;);import time;time.sleep(30)'">
+    <ready timeout="5s"><output>READY{reference}NOT</output></ready>
+  </process>""")
+    r = run(tmp_path, marker, "process")
+    assert r.returncode == 2, r
+    assert (f"{tmp_path / 'world.xml'}:3: '{reference}' is a NUL character, which XML does not "
+            "allow") in r.stderr, r
+    assert "passed" not in r.stdout, r
+    assert not leftover_processes(marker), r
