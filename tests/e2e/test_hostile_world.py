@@ -142,3 +142,34 @@ def test_a_nul_character_reference_is_refused_not_a_pattern_cut_short(tmp_path, 
             "allow") in r.stderr, r
     assert "passed" not in r.stdout, r
     assert not leftover_processes(marker), r
+
+
+# --- A program that daemonizes ---------------------------------------------------------------------
+
+def free_port():
+    import socket
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+@pytest.mark.parametrize("leaves", ["group", "session"])
+def test_a_program_that_daemonizes_fails_saying_so_and_leaves_no_server(tmp_path, marker,
+                                                                        isolation, leaves):
+    # Its parent exits 0 at once while the server it forked (in its group, or in a session of
+    # its own) keeps the port: the world cannot wait for a process that is gone. The failure
+    # said only "exited with status 0 before it was ready"; it now says what to do, and the
+    # server it left is stopped either way.
+    port = free_port()
+    setsid = "setsid " if leaves == "session" else ""
+    write_world(tmp_path, f"""  <process name="broker">
+    <command shell="true">{setsid}{PYTHON} -m http.server --bind 127.0.0.1 {port} &amp; exit 0</command>
+    <ready timeout="10s"><port>{port}</port></ready>
+  </process>""")
+    r = run(tmp_path, marker, isolation)
+    assert r.returncode == 1, r
+    assert "process 'broker' exited with status 0 before it was ready" in r.stdout, r
+    assert ("a program that puts itself in the background (daemonizes) must be told to stay in "
+            "the foreground") in r.stdout, r
+    assert not leftover_processes(marker), r
