@@ -1,9 +1,11 @@
 """Hostile world files and world processes of the process fixture, through the installed runner:
 what a world process or a world file does must not hang the run, lose what a failure says, nor
 pass unnoticed. Each run marks its processes (conftest.marked) and asserts none is left."""
+import resource
+
 import pytest
 
-from conftest import leftover_processes, marked, plugin, run_runner
+from conftest import SANITIZED, leftover_processes, marked, plugin, run_runner
 
 PYTHON = "/usr/bin/python3"
 ISOLATIONS = ["process", "none"]
@@ -173,3 +175,25 @@ def test_a_program_that_daemonizes_fails_saying_so_and_leaves_no_server(tmp_path
     assert ("a program that puts itself in the background (daemonizes) must be told to stay in "
             "the foreground") in r.stdout, r
     assert not leftover_processes(marker), r
+
+
+# --- A probe that never ends and prints without end --------------------------------------------------
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_an_endless_probe_printing_without_end_keeps_the_runner_small(tmp_path, marker,
+                                                                      isolation):
+    # The probe's whole output was kept while it ran (only its end is ever quoted): a status
+    # command that never returns and prints without end grew the runner (or its fixture
+    # worker) by about 500 MB a second until the deadline, 1 GB in 2 s here; with the default
+    # deadline of 30 s a robot's PC ran out of memory and the run was killed.
+    write_world(tmp_path, """  <process name="server" command="sleep 30">
+    <ready timeout="2s"><probe>cat /dev/zero</probe></ready>
+  </process>""")
+    r = run(tmp_path, marker, isolation)
+    peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    assert r.returncode == 1, r
+    assert "probe `cat /dev/zero` to exit with status 0 did not happen within 2 s" in r.stdout, r
+    assert not leftover_processes(marker), r
+    if not SANITIZED:
+        # The largest process this test session waited for (runners, workers, probes).
+        assert peak_kib < 300 * 1024, f"peak {peak_kib} KiB\n{r}"
