@@ -1,7 +1,10 @@
 """Hostile world files and world processes of the process fixture, through the installed runner:
 what a world process or a world file does must not hang the run, lose what a failure says, nor
 pass unnoticed. Each run marks its processes (conftest.marked) and asserts none is left."""
+import re
 import resource
+import shutil
+import time
 
 import pytest
 
@@ -197,3 +200,29 @@ def test_an_endless_probe_printing_without_end_keeps_the_runner_small(tmp_path, 
     if not SANITIZED:
         # The largest process this test session waited for (runners, workers, probes).
         assert peak_kib < 300 * 1024, f"peak {peak_kib} KiB\n{r}"
+
+
+# --- Descendants that flood the output pipe ----------------------------------------------------
+
+@pytest.mark.parametrize("isolation", ISOLATIONS)
+def test_an_exit_under_a_flood_of_output_is_seen_at_once_and_timed_right(tmp_path, marker,
+                                                                         isolation):
+    # Its child keeps the output pipe full after it exits with status 3 at 0.5 s. The fixture
+    # read the pipe for as long as it stayed full (each read of 64 KiB was followed by another):
+    # the exit was seen late and said to be "after 4 ms" or "after 140 ms", and the last drain
+    # of the ended process read its children's flood for up to a second more.
+    write_world(tmp_path, """  <process name="flooded">
+    <command shell="true">yes &amp; sleep 0.5; exit 3</command>
+    <ready timeout="10s"><output>never printed</output></ready>
+  </process>""")
+    began = time.monotonic()
+    r = run(tmp_path, marker, isolation)
+    took = time.monotonic() - began
+    assert r.returncode == 1, r
+    found = re.search(r"process 'flooded' exited with status 3 before it was ready "
+                      r"\(after (\d+) ms\)", r.stdout)
+    assert found, r
+    assert 450 <= int(found.group(1)) <= 1500, r
+    assert took < 5, f"{took:.1f} s\n{r}"
+    assert not leftover_processes(marker), r
+    shutil.rmtree(tmp_path / "logs")  # hundreds of MB of "y"
