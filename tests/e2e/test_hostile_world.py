@@ -4,6 +4,7 @@ pass unnoticed. Each run marks its processes (conftest.marked) and asserts none 
 import re
 import resource
 import shutil
+import socket
 import time
 
 import pytest
@@ -152,7 +153,6 @@ def test_a_nul_character_reference_is_refused_not_a_pattern_cut_short(tmp_path, 
 # --- A program that daemonizes ---------------------------------------------------------------------
 
 def free_port():
-    import socket
     with socket.socket() as s:
         s.bind(("127.0.0.1", 0))
         return s.getsockname()[1]
@@ -226,3 +226,15 @@ def test_an_exit_under_a_flood_of_output_is_seen_at_once_and_timed_right(tmp_pat
     assert took < 5, f"{took:.1f} s\n{r}"
     assert not leftover_processes(marker), r
     shutil.rmtree(tmp_path / "logs")  # hundreds of MB of "y"
+
+
+def test_an_empty_port_host_is_a_configuration_error_before_anything_starts(tmp_path, marker):
+    # It was found only once the process ran: "could not be started: cannot resolve host ''",
+    # exit 1, the process started and stopped for nothing.
+    write_world(tmp_path, """  <process name="server" command="sleep 30">
+    <ready timeout="5s"><port host="">8080</port></ready>
+  </process>""")
+    r = run(tmp_path, marker, "process")
+    assert r.returncode == 2, r
+    assert f"{tmp_path / 'world.xml'}:3: <port host=\"\"> is empty" in r.stderr, r
+    assert not leftover_processes(marker), r
