@@ -118,6 +118,42 @@ TEST_F(TestSources, AnExecutableFileIsATestFile) {
     EXPECT_EQ(pluginsOf(suites[0]), (std::vector<std::string>{"tests/run_me"}));
 }
 
+TEST_F(TestSources, ATestsFolderPassesOverLibrariesThatAreNoTestPluginsWithAWarning) {
+    // As RTF 2.x ran a build folder: its test plug-ins, not its fixture plug-ins or other
+    // libraries.
+    write("tests/libarm_test.so", std::string("ELF\0robottestingframework_dll_factory\0", 38));
+    write("tests/librobot_fixture.so",
+          std::string("ELF\0robottestingframework_fixture_factory\0", 42));
+    write("tests/librobot_helper.so", std::string("ELF\0robot_helper_answer\0", 24));
+    write("tests/a.lua");
+    Options options;
+    options.testDirs = {folder("tests")};
+    std::vector<std::string> warnings;
+    const auto suites = readSources(options, warnings);
+    ASSERT_EQ(suites.size(), 1u);
+    EXPECT_EQ(pluginsOf(suites[0]),
+              (std::vector<std::string>{"tests/a.lua", "tests/libarm_test.so"}));
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("librobot_fixture.so: warning: a fixture plug-in, not a test"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[1].find("librobot_helper.so: warning: not a test plug-in"),
+              std::string::npos)
+        << warnings[1];
+}
+
+TEST_F(TestSources, AFixturePluginNamedWithTestIsStillATest) {
+    // Named one by one it runs, and fails saying what it is (RTF 2.x exited 1 as well).
+    Options options;
+    options.tests = {write("librobot_fixture.so",
+                           std::string("ELF\0robottestingframework_fixture_factory\0", 42))};
+    std::vector<std::string> warnings;
+    const auto suites = readSources(options, warnings);
+    ASSERT_EQ(suites.size(), 1u);
+    EXPECT_EQ(suites[0].tests.size(), 1u);
+    EXPECT_TRUE(warnings.empty());
+}
+
 TEST_F(TestSources, ATestsFolderWithoutTestFilesWarnsAndAddsNoSuite) {
     write("tests/notes.txt");
     Options options;

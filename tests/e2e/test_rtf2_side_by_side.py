@@ -1,0 +1,133 @@
+"""RTF 2.x users' files, written as RTF 2.x's documentation and examples write them, run with
+RTF 2.0.1's own runner (Debian's binary packages, unpacked into the build tree by
+scripts/rtf2-binaries.sh: the CTest fixture e2e.rtf2_binaries) and with this installed runner,
+side by side from the same folder: the same tests run, with the same verdicts and exit status.
+The C++ plug-ins are built from the same source twice, against each version's headers and
+libraries, as a user rebuilding for RTF 3 does."""
+import glob
+import os
+import re
+import subprocess
+from pathlib import Path
+
+from conftest import BUILD_DIR, LIBDIR, RUNNER, run_runner
+
+RTF2 = BUILD_DIR / "rtf2-binary" / "root"
+
+TEST_PLUGIN = """
+#include <robottestingframework/TestAssert.h>
+#include <robottestingframework/TestCase.h>
+#include <robottestingframework/dll/Plugin.h>
+
+using namespace robottestingframework;
+
+class ArmTest : public TestCase {
+public:
+    ArmTest() : TestCase("ArmTest") {}
+    void run() override { ROBOTTESTINGFRAMEWORK_TEST_CHECK(2 < 3, "two is less than three"); }
+};
+
+ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN(ArmTest)
+"""
+
+FIXTURE_PLUGIN = """
+#include <robottestingframework/FixtureManager.h>
+#include <robottestingframework/dll/Plugin.h>
+
+using namespace robottestingframework;
+
+class RobotFixture : public FixtureManager {
+public:
+    bool setup(int argc, char** argv) override { return true; }
+    void tearDown() override {}
+};
+
+ROBOTTESTINGFRAMEWORK_PREPARE_FIXTURE_PLUGIN(RobotFixture)
+"""
+
+# A library a project builds beside its plug-ins (a helper its tests link), no RTF plug-in.
+HELPER_LIBRARY = "int robot_helper_answer() { return 42; }\n"
+
+
+def rtf2_folders():
+    """RTF 2.0.1's include folder, library folder and runner."""
+    include = glob.glob(str(RTF2 / "usr/include/*/robottestingframework/TestCase.h"))
+    libs = glob.glob(str(RTF2 / "usr/lib/*/librobottestingframework.so.2"))
+    runner = RTF2 / "usr/bin/robottestingframework-testrunner"
+    assert include and libs and runner.exists(), f"RTF 2.0.1 is not unpacked in {RTF2}"
+    return str(Path(include[0]).parent.parent), str(Path(libs[0]).parent), str(runner)
+
+
+def rtf3_folders():
+    """This version's installed include and library folders (the runner's prefix)."""
+    prefix = Path(RUNNER).parent.parent
+    return str(prefix / "include"), str(prefix / LIBDIR)
+
+
+def build(folder, name, source, version):
+    """lib<name>.so in `folder`, built against RTF `version` (2 or 3) as its users build it."""
+    include, lib = rtf2_folders()[:2] if version == 2 else rtf3_folders()
+    folder.mkdir(parents=True, exist_ok=True)
+    source_file = folder.parent / f"{name}-{version}.cpp"
+    source_file.write_text(source)
+    links = ["-lrobottestingframework", "-lrobottestingframework-dll"] if "robottestingframework" \
+        in source else []
+    subprocess.run(["g++", "-std=c++17", "-shared", "-fPIC", "-o", str(folder / f"lib{name}.so"),
+                    str(source_file), f"-I{include}", f"-L{lib}", f"-Wl,-rpath,{lib}", *links],
+                   check=True, timeout=180)
+
+
+def run_rtf2(*args, cwd):
+    """RTF 2.0.1's runner, with its libraries found as Debian installed them."""
+    lib = rtf2_folders()[1]
+    result = subprocess.run([rtf2_folders()[2], *map(str, args)], cwd=cwd, capture_output=True,
+                            text=True, timeout=120, env=dict(os.environ, LD_LIBRARY_PATH=lib))
+    return result
+
+
+def rtf2_count(result, what):
+    """A count of RTF 2.0.1's closing summary ('Number of passed test cases  : 1')."""
+    found = re.search(rf"{what}\s*:\s*(\d+)", result.stdout)
+    assert found, result.stdout + result.stderr
+    return int(found.group(1))
+
+
+def closing_line(run):
+    return run.stdout.strip().splitlines()[-1]
+
+
+def test_a_tests_folder_runs_its_test_plugins_and_passes_over_the_other_libraries(tmp_path):
+    """An RTF 2.x project's build folder holds its test plug-ins, its fixture plug-ins and its
+    other libraries side by side; `--tests FOLDER` ran the test plug-ins and passed over the
+    rest (RTF 2.0.1 says so for a fixture plug-in). RTF 3 once ran all three, as failed tests."""
+    for version in (2, 3):
+        plugins = tmp_path / f"rtf{version}" / "plugins"
+        build(plugins, "arm_test", TEST_PLUGIN, version)
+        build(plugins, "robot_fixture", FIXTURE_PLUGIN, version)
+        build(plugins, "robot_helper", HELPER_LIBRARY, version)
+
+    old = run_rtf2("--tests", "plugins", cwd=tmp_path / "rtf2")
+    assert old.returncode == 0, old
+    assert rtf2_count(old, "Total number of test cases") == 1, old.stdout
+    assert rtf2_count(old, "Number of passed test cases") == 1, old.stdout
+
+    new = run_runner("--tests", "plugins", cwd=tmp_path / "rtf3")
+    assert new.returncode == 0, new
+    assert closing_line(new) == "1 passed, 0 failed", new
+    assert "libarm_test.so" in new.stdout, new
+    assert ("plugins/librobot_fixture.so: warning: a fixture plug-in, not a test: passed over"
+            in new.stderr), new
+    assert ("plugins/librobot_helper.so: warning: not a test plug-in (no "
+            "ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN in it): passed over" in new.stderr), new
+
+
+def test_a_fixture_plugin_named_as_a_test_still_fails_as_in_rtf2(tmp_path):
+    """Named one by one (`-t`), a fixture plug-in is no test: RTF 2.0.1 exits 1, and so does
+    RTF 3 (the test fails saying it is a fixture plug-in)."""
+    for version in (2, 3):
+        build(tmp_path / f"rtf{version}", "robot_fixture", FIXTURE_PLUGIN, version)
+    old = run_rtf2("-t", "librobot_fixture.so", cwd=tmp_path / "rtf2")
+    assert old.returncode == 1, old
+    new = run_runner("-t", "librobot_fixture.so", cwd=tmp_path / "rtf3")
+    assert new.returncode == 1, new
+    assert "it is a fixture plug-in" in new.stdout, new
