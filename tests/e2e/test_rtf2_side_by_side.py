@@ -10,6 +10,8 @@ import re
 import subprocess
 from pathlib import Path
 
+import pytest
+
 from conftest import BUILD_DIR, LIBDIR, RUNNER, run_runner
 
 RTF2 = BUILD_DIR / "rtf2-binary" / "root"
@@ -131,3 +133,32 @@ def test_a_fixture_plugin_named_as_a_test_still_fails_as_in_rtf2(tmp_path):
     new = run_runner("-t", "librobot_fixture.so", cwd=tmp_path / "rtf3")
     assert new.returncode == 1, new
     assert "it is a fixture plug-in" in new.stdout, new
+
+
+LUA_TEST_FAIL = """
+TestCase.run = function()
+    local x = 0
+    robottestingframework.testFail("x > 0", "x is not positive")
+    robottestingframework.testReport("the test goes on")
+end
+"""
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_lua_test_fail_with_the_condition_as_text_fails_the_test_as_in_rtf2(tmp_path, isolation):
+    """RTF 2.0.1's Lua testFail(condition, message) takes the condition as text and always
+    marks the test failed, the test going on ("checking (x > 0): x is not positive"). RTF 3
+    read the text as a true condition: the test passed."""
+    (tmp_path / "motor_test.lua").write_text(LUA_TEST_FAIL)
+    old = run_rtf2("-v", "-t", "motor_test.lua", "--no-output", cwd=tmp_path)
+    assert old.returncode == 1, old
+    assert "checking (x > 0): x is not positive" in old.stdout, old
+    assert "the test goes on" in old.stdout, old
+    assert rtf2_count(old, "Number of failed test cases") == 1, old.stdout
+
+    new = run_runner("-v", "--isolation", isolation, "-t", "motor_test.lua", "--no-output",
+                     cwd=tmp_path)
+    assert new.returncode == 1, new
+    assert "failure: x is not positive: checking (x > 0)" in new.stdout, new
+    assert "the test goes on" in new.stdout, new
+    assert closing_line(new) == "0 passed, 1 failed", new
