@@ -128,9 +128,10 @@ def test_a_fixture_plugin_named_as_a_test_still_fails_as_in_rtf2(tmp_path):
     RTF 3 (the test fails saying it is a fixture plug-in)."""
     for version in (2, 3):
         build(tmp_path / f"rtf{version}", "robot_fixture", FIXTURE_PLUGIN, version)
-    old = run_rtf2("-t", "librobot_fixture.so", cwd=tmp_path / "rtf2")
+    old = run_rtf2("-t", "./librobot_fixture.so", cwd=tmp_path / "rtf2")
     assert old.returncode == 1, old
-    new = run_runner("-t", "librobot_fixture.so", cwd=tmp_path / "rtf3")
+    assert "it is not a Robot Testing Framework test case plugin" in old.stdout, old
+    new = run_runner("-t", "./librobot_fixture.so", cwd=tmp_path / "rtf3")
     assert new.returncode == 1, new
     assert "it is a fixture plug-in" in new.stdout, new
 
@@ -162,3 +163,19 @@ def test_lua_test_fail_with_the_condition_as_text_fails_the_test_as_in_rtf2(tmp_
     assert "failure: x is not positive: checking (x > 0)" in new.stdout, new
     assert "the test goes on" in new.stdout, new
     assert closing_line(new) == "0 passed, 1 failed", new
+
+
+@pytest.mark.parametrize("form", [["--repetition", "0"], ["--repetition=0"]])
+def test_repetition_zero_rtf2s_default_runs_the_test_once(tmp_path, form):
+    """`--repetition 0` is RTF 2.0.1's default (its --help: `(i [=0])`), which scripts and
+    CMake files pass when no repetition is wanted: RTF 2.0.1 runs the test once, and so does
+    RTF 3 (it was exit 2: 'not a whole number of runs >= 1')."""
+    for version in (2, 3):
+        build(tmp_path / f"rtf{version}", "arm_test", TEST_PLUGIN, version)
+    old = run_rtf2("-v", "-t", "./libarm_test.so", *form, "--no-output", cwd=tmp_path / "rtf2")
+    assert old.returncode == 0, old
+    assert old.stdout.count("two is less than three") == 1, old.stdout
+    new = run_runner("-v", "-t", "./libarm_test.so", *form, "--no-output", cwd=tmp_path / "rtf3")
+    assert new.returncode == 0, new
+    assert closing_line(new) == "1 passed, 0 failed", new
+    assert "repetition" not in new.stdout, new
