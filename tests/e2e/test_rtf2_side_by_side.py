@@ -179,3 +179,53 @@ def test_repetition_zero_rtf2s_default_runs_the_test_once(tmp_path, form):
     assert new.returncode == 0, new
     assert closing_line(new) == "1 passed, 0 failed", new
     assert "repetition" not in new.stdout, new
+
+
+ARGV_TEST = """
+#include <robottestingframework/TestAssert.h>
+#include <robottestingframework/TestCase.h>
+#include <robottestingframework/dll/Plugin.h>
+
+#include <string>
+
+using namespace robottestingframework;
+
+class ArgvTest : public TestCase {
+public:
+    ArgvTest() : TestCase("ArgvTest") {}
+    bool setup(int argc, char** argv) override {
+        for (int i = 1; i < argc; ++i) {
+            ROBOTTESTINGFRAMEWORK_TEST_REPORT("argv[" + std::to_string(i) + "]=<" + argv[i] + ">");
+        }
+        return true;
+    }
+    void run() override {}
+};
+
+ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN(ArgvTest)
+"""
+
+# Params as RTF 2.x users wrote them: a Windows path, a regular expression, an apostrophe,
+# double quotes around words with spaces, a tab, an empty "".
+PARAMS = [r"--config C:\robots\arm\config.ini --pattern a\d+\.log",
+          "--label robot's arm --name \"left arm\" --empty \"\"",
+          "--joint\t3 --speed 10"]
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+@pytest.mark.parametrize("param", PARAMS, ids=["backslashes", "quotes", "tab"])
+def test_a_plugins_argv_is_split_as_rtf2_split_it(tmp_path, param, isolation):
+    """A C++ test reads its argv as RTF 2.0.1 gave it: words separated by spaces, double quotes
+    grouping words, and backslashes, apostrophes and tabs plain characters. RTF 3 split the
+    param like a shell: C:\\robots\\arm became C:robotsarm and robot's swallowed the rest."""
+    for version in (2, 3):
+        build(tmp_path / f"rtf{version}", "argv_test", ARGV_TEST, version)
+    old = run_rtf2("-v", "-t", "./libargv_test.so", "-p", param, "--no-output",
+                   cwd=tmp_path / "rtf2")
+    assert old.returncode == 0, old
+    new = run_runner("-v", "--isolation", isolation, "-t", "./libargv_test.so", "-p", param,
+                     "--no-output", cwd=tmp_path / "rtf3")
+    assert new.returncode == 0, new
+    argv = re.findall(r"argv\[\d+\]=<[^>]*>", old.stdout)
+    assert argv, old.stdout
+    assert re.findall(r"argv\[\d+\]=<[^>]*>", new.stdout) == argv, (old.stdout, new)
