@@ -229,3 +229,37 @@ def test_a_plugins_argv_is_split_as_rtf2_split_it(tmp_path, param, isolation):
     argv = re.findall(r"argv\[\d+\]=<[^>]*>", old.stdout)
     assert argv, old.stdout
     assert re.findall(r"argv\[\d+\]=<[^>]*>", new.stdout) == argv, (old.stdout, new)
+
+
+LUA_PASSING = """
+TestCase.run = function()
+    robottestingframework.testCheck(2 < 3, "two is less than three")
+end
+"""
+
+
+def test_a_suites_folder_passes_over_xml_that_is_no_suite_as_rtf2_did(tmp_path):
+    """A folder of suites beside a robot's XML configuration (a middleware's, a robot
+    interface's): RTF 2.0.1 ran the suites and passed the other XML over. RTF 3 stopped with
+    exit 2 at 'the root element is <robot>'; it now passes it over with a warning naming it."""
+    suites = tmp_path / "suites"
+    suites.mkdir()
+    (tmp_path / "tests").mkdir()
+    (tmp_path / "tests" / "arm_test.lua").write_text(LUA_PASSING)
+    (suites / "arm.xml").write_text('<?xml version="1.0" encoding="UTF-8"?>\n'
+                                    '<suite name="arm">\n    <test>tests/arm_test.lua</test>\n'
+                                    '</suite>\n')
+    (suites / "icub.xml").write_text('<?xml version="1.0" encoding="UTF-8"?>\n'
+                                     '<robot name="icub" build="1">\n'
+                                     '    <device name="left_arm" type="fakeMotionControl"/>\n'
+                                     '</robot>\n')
+    old = run_rtf2("--suites", "suites", "--no-output", cwd=tmp_path)
+    assert old.returncode == 0, old
+    assert rtf2_count(old, "Total number of test suites") == 1, old.stdout
+    assert rtf2_count(old, "Number of passed test cases") == 1, old.stdout
+
+    new = run_runner("--suites", "suites", "--no-output", cwd=tmp_path)
+    assert new.returncode == 0, new
+    assert closing_line(new) == "1 passed, 0 failed", new
+    assert ("suites/icub.xml: warning: the root element is <robot>, not <suite>: passed over"
+            in new.stderr), new

@@ -71,6 +71,30 @@ bool isOtherRunnerFile(const std::string& path) {
     return root == "world" || root == "testsuites" || root == "testsuite";
 }
 
+// The suite files of a --suites folder: its XML files but those of the formats above (passed
+// over quietly) and those whose root element is not a suite's: a robot's configuration, a
+// middleware's XML beside the suites. RTF 2.x passed those over; they are passed over with a
+// warning naming the root element, so a misspelt <suite> is seen. A file without a root
+// element (malformed) is kept: reading it says what is wrong, exit 2.
+std::vector<std::string> suitesOfFolder(const std::vector<std::string>& files,
+                                        std::vector<std::string>& warnings) {
+    std::vector<std::string> suites;
+    for (const auto& file : files) {
+        if (isOtherRunnerFile(file)) {
+            continue;
+        }
+        const std::string root = rootElementOf(file);
+        if (!root.empty() && root != "suite" && root != "suit") {
+            warnings.push_back(file + ": warning: the root element is <" + root +
+                               ">, not <suite>: passed over (--suite " + file +
+                               " reads it as a suite)");
+            continue;
+        }
+        suites.push_back(file);
+    }
+    return suites;
+}
+
 bool isTestFile(const std::string& path) {
     return !languages::typeFromFile(path).empty();
 }
@@ -190,8 +214,7 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
 
     std::vector<std::string> suiteFiles = options.suites;
     for (const auto& folder : options.suiteDirs) {
-        auto files = listFolder(folder, options.recursive, isSuiteFile);
-        files.erase(std::remove_if(files.begin(), files.end(), isOtherRunnerFile), files.end());
+        auto files = suitesOfFolder(listFolder(folder, options.recursive, isSuiteFile), warnings);
         if (files.empty()) {
             warnings.push_back(folder + ": warning: no suite files (*.xml) in this folder");
         }

@@ -258,7 +258,9 @@ TEST_F(TestSources, TheSuitesSeeTheCommandLinesVariables) {
 // run with -o junit:lab.xml leaves lab.xml there; `--suites .` then stopped with exit 2 at
 // "the root element is <world>" (or <testsuites>). A --suites folder passes over XML files
 // whose root says they are another format this runner reads or writes; any other root is
-// still an error, and a file named with --suite is read whatever it holds.
+// passed over with a warning (RTF 2.x passed it over: a robot's XML configuration beside the
+// suites), a malformed file is an error, and a file named with --suite is read whatever it
+// holds.
 TEST_F(TestSources, ASuitesFolderPassesOverWorldFilesAndJUnitReports) {
     suiteFile("suites/suite.xml", "lab");
     write("suites/world.xml",
@@ -275,6 +277,16 @@ TEST_F(TestSources, ASuitesFolderPassesOverWorldFilesAndJUnitReports) {
     EXPECT_TRUE(warnings.empty());
 
     write("suites/typo.xml", "<suiet name=\"x\"/>\n");
+    write("suites/icub.xml", "<?xml version=\"1.0\"?>\n<robot name=\"icub\"><part/></robot>\n");
+    EXPECT_EQ(namesOf(readSources(options, warnings)), (std::vector<std::string>{"lab"}));
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("icub.xml: warning: the root element is <robot>, not <suite>: "
+                               "passed over"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[1].find("typo.xml: warning: the root element is <suiet>"), std::string::npos)
+        << warnings[1];
+    write("suites/broken.xml", "<suite name=\"x\">\n  <test>a.lua</test>\n");
     EXPECT_THROW(readSources(options, warnings), SuiteFileError);
     Options named;
     named.suites = {(dir_ / "suites" / "world.xml").string()};
