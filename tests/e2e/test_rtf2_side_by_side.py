@@ -263,3 +263,22 @@ def test_a_suites_folder_passes_over_xml_that_is_no_suite_as_rtf2_did(tmp_path):
     assert closing_line(new) == "1 passed, 0 failed", new
     assert ("suites/icub.xml: warning: the root element is <robot>, not <suite>: passed over"
             in new.stderr), new
+
+
+@pytest.mark.parametrize("isolation", ["process", "none"])
+def test_a_script_named_bare_in_a_suite_is_found_in_the_current_folder_as_rtf2_did(
+        tmp_path, isolation):
+    """A project runs `-s suites/arm.xml` from its root, the suite naming `arm_test.lua`: RTF
+    2.0.1 opened the script from the current folder. RTF 3 looked beside the suite and on the
+    search paths only: 'arm_test.lua' not found, a failed test."""
+    (tmp_path / "suites").mkdir()
+    (tmp_path / "arm_test.lua").write_text(LUA_PASSING)
+    (tmp_path / "suites" / "arm.xml").write_text(
+        '<suite name="arm">\n    <test>arm_test.lua</test>\n</suite>\n')
+    old = run_rtf2("-s", "suites/arm.xml", "--no-output", cwd=tmp_path)
+    assert old.returncode == 0, old
+    assert rtf2_count(old, "Number of passed test cases") == 1, old.stdout
+    new = run_runner("--isolation", isolation, "-s", "suites/arm.xml", "--no-output",
+                     cwd=tmp_path)
+    assert new.returncode == 0, new
+    assert closing_line(new) == "1 passed, 0 failed", new
