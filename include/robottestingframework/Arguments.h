@@ -1,4 +1,5 @@
-// Splitting a param string into argc/argv the way a shell would, and reading options from it.
+// Splitting a param string: into a C++ plug-in's argc/argv as RTF 2.x split it (parse(),
+// ArgumentVector), into words the way a shell would (split()); reading options from argv.
 #pragma once
 
 #include <string>
@@ -14,9 +15,12 @@ public:
     static int split(char* line, char** args, int maxArgs = 64);
     // The same on a copy: words of `line`, quotes removed.
     static std::vector<std::string> split(const std::string& line);
-    // RTF 2.x's form: splits `azParam` in place into `argv` (at most 63 words, then a
-    // nullptr: `argv` needs 64 slots unless the line has fewer words) and sets `*argc`.
-    // argv[0] is the first word: this is how a fixture's param reaches its setup().
+    // RTF 2.x's form and rules: splits `azParam` in place into `argv` (at most 63 words,
+    // then a nullptr: `argv` needs 64 slots unless the line has fewer words) and sets `*argc`.
+    // Words are separated by spaces; a double quote ends a word and starts or ends a quoted
+    // part whose spaces belong to the word; empty words are dropped; backslashes, single
+    // quotes and tabs are plain characters (C:\robots\arm stays whole). argv[0] is the first
+    // word: this is how a fixture's param reaches its setup().
     static void parse(char* azParam, int* argc, char** argv);
     // Value of `--name value` (or `--name=value`) in argv; false when absent. argv[0] is
     // searched too: a fixture's argv starts with the first word of its param.
@@ -25,8 +29,9 @@ public:
     static bool hasOption(int argc, char** argv, const char* option);
 };
 
-// Owns the argv built from a param string: a test's has its name in argv[0], then the param's
-// words; a fixture's (RTF 2.x's layout) has the param's words only, the first in argv[0].
+// Owns the argv built from a param string, split by RTF 2.x's rules (as parse() splits): a
+// test's has its name in argv[0], then the param's words; a fixture's (RTF 2.x's layout) has
+// the param's words only, the first in argv[0].
 class ArgumentVector {
 public:
     ArgumentVector(const std::string& name, const std::string& param);

@@ -19,7 +19,8 @@ public:
     explicit FixtureManager(std::string param);
     virtual ~FixtureManager();
 
-    // What a suite calls: splits the param like a shell would and calls setup(argc, argv).
+    // What a suite calls: splits the param by RTF 2.x's rules (ArgumentVector) and calls
+    // setup(argc, argv).
     bool setup();
     // RTF 2.x's layout: argv holds the param's words only, the first one in argv[0] (a
     // param "--robot icubSim" gives argc 2, argv[0] "--robot"); an empty param gives argc 0.

@@ -16,7 +16,8 @@ public:
     explicit TestCase(std::string name, std::string param = "");
     ~TestCase() override;
 
-    // argv[0] is the test's name; the rest is the param string split like a shell would.
+    // argv[0] is the test's name; the rest is the param string split by RTF 2.x's rules
+    // (ArgumentVector: at spaces, "..." grouping words).
     // Returning false is an error: run() is not called, tearDown() is not called.
     virtual bool setup(int argc, char** argv);
     virtual void tearDown();

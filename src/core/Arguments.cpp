@@ -69,6 +69,53 @@ std::vector<std::string> splitWords(const char* s) {
     return words;
 }
 
+// RTF 2.x's rules for a plug-in's argv, which C++ tests and fixtures written for it read:
+// words are separated by spaces (only), a double quote ends the word before it and starts or
+// ends a quoted part in which spaces belong to the word, and empty words are dropped. Nothing
+// else is special: a backslash (C:\robots\arm, a\d+), a single quote (robot's) and a tab are
+// characters of the word.
+std::vector<std::string> splitAsRtf2(const char* s) {
+    std::vector<std::string> words;
+    std::string word;
+    bool quoted = false;
+    auto end = [&] {
+        if (!word.empty()) {
+            words.push_back(std::move(word));
+            word.clear();
+        }
+    };
+    for (std::size_t i = 0; s[i] != '\0'; ++i) {
+        if (s[i] == '"') {
+            end();
+            quoted = !quoted;
+        } else if (s[i] == ' ' && !quoted) {
+            end();
+        } else {
+            word += s[i];
+        }
+    }
+    end();
+    return words;
+}
+
+// Writes `words` back into `line`, each with its terminator, and their pointers into `args`
+// (at most maxArgs - 1 words, then a nullptr); returns the count. Both splitting rules only
+// remove characters and each word but the last ends at a removed one, so they fit.
+int writeInPlace(char* line, const std::vector<std::string>& words, char** args, int maxArgs) {
+    char* out = line;
+    int count = 0;
+    for (const std::string& word : words) {
+        if (count >= maxArgs - 1) {
+            break;
+        }
+        std::memcpy(out, word.c_str(), word.size() + 1);
+        args[count++] = out;
+        out += word.size() + 1;
+    }
+    args[count] = nullptr;
+    return count;
+}
+
 // "name" and "--name" both mean the option --name.
 std::string optionName(const char* option) {
     if (option[0] == '-') {
@@ -87,25 +134,18 @@ int Arguments::split(char* line, char** args, int maxArgs) {
         args[0] = nullptr;
         return 0;
     }
-    // Quotes and escapes only remove characters and words are separated, so every word and
-    // its terminator fit back where the line was.
-    const std::vector<std::string> words = splitWords(line);
-    char* out = line;
-    int count = 0;
-    for (const std::string& word : words) {
-        if (count >= maxArgs - 1) {
-            break;
-        }
-        std::memcpy(out, word.c_str(), word.size() + 1);
-        args[count++] = out;
-        out += word.size() + 1;
-    }
-    args[count] = nullptr;
-    return count;
+    return writeInPlace(line, splitWords(line), args, maxArgs);
 }
 
 void Arguments::parse(char* azParam, int* argc, char** argv) {
-    const int count = split(azParam, argv);
+    int count = 0;
+    if (argv != nullptr) {
+        if (azParam == nullptr) {
+            argv[0] = nullptr;
+        } else {
+            count = writeInPlace(azParam, splitAsRtf2(azParam), argv, 64);
+        }
+    }
     if (argc != nullptr) {
         *argc = count;
     }
@@ -153,7 +193,7 @@ ArgumentVector::ArgumentVector(const std::string& name, const std::string& param
     pointers_.push_back(nullptr);
 }
 
-ArgumentVector::ArgumentVector(const std::string& param) : words_(Arguments::split(param)) {
+ArgumentVector::ArgumentVector(const std::string& param) : words_(splitAsRtf2(param.c_str())) {
     pointers_.reserve(words_.size() + 1);
     for (std::string& word : words_) {
         pointers_.push_back(&word[0]);

@@ -217,6 +217,13 @@ std::string findPlugin(const std::string& name, const std::string& besideDir,
             }
         }
     }
+    // A bare script's name (arm_test.lua: an extension that is no library's): RTF 2.x opened
+    // it from the current folder, where a suite run from a project's root finds it. Last, so a
+    // file beside the suite or on a search path is found first.
+    const std::string extension = std::filesystem::path(name).extension().string();
+    if (!extension.empty() && extension != kLibraryNaming.suffix && isFile(name)) {
+        return absolute(name);
+    }
     if (searched != nullptr && !other.empty()) {
         *searched = other;
     } else if (searched != nullptr) {

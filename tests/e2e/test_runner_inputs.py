@@ -243,7 +243,8 @@ def test_a_suites_folder_passes_over_world_files_and_reports(tmp_path):
     """Issue 38's second trial: the tutorial's folder (suite.xml beside world.xml) after a run
     with -o junit:lab.xml: `--suites .` stopped at "./lab.xml:2: the root element is
     <testsuites>" (and at world.xml's <world>), exit 2. World files and JUnit reports in a
-    --suites folder are passed over; a root element that is no known format is still exit 2."""
+    --suites folder are passed over; a root element that is no known format is passed over with
+    a warning that names it (RTF 2.x passed it over), a malformed file is exit 2."""
     (tmp_path / "world.xml").write_text(
         '<world name="lab">\n  <process name="p" command="/bin/sh -c \'echo up; exec sleep 30\'">'
         '\n    <ready timeout="20s"><output>^up$</output></ready>\n  </process>\n</world>\n')
@@ -260,4 +261,8 @@ def test_a_suites_folder_passes_over_world_files_and_reports(tmp_path):
     assert r.returncode == 0 and "1 test in 1 suite" in r.stdout, r
     (tmp_path / "typo.xml").write_text("<suiet name='x'/>\n")
     r = run_runner("--suites", ".", "--list", cwd=tmp_path)
-    assert r.returncode == 2 and "typo.xml:1" in r.stderr, r
+    assert r.returncode == 0 and "1 test in 1 suite" in r.stdout, r
+    assert "typo.xml: warning: the root element is <suiet>, not <suite>" in r.stderr, r
+    (tmp_path / "broken.xml").write_text("<suite name='x'>\n  <test>ok.sh</test>\n")
+    r = run_runner("--suites", ".", "--list", cwd=tmp_path)
+    assert r.returncode == 2 and "broken.xml" in r.stderr, r

@@ -163,9 +163,19 @@ private:
                  Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
                  return 0;
              }},
+            // RTF 2.x's testFail(condition, message) takes the condition as text (the check as
+            // it reads, shown as "checking (condition)") and always marks the test failed, the
+            // test going on; a boolean condition fails it when false, as testFailIf.
             {"testFail",
              [](lua_State* L) {
-                 Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
+                 if (lua_type(L, 1) == LUA_TBOOLEAN) {
+                     Asserter::testFail(lua_toboolean(L, 1), messageHere(L, 2), owner(L));
+                     return 0;
+                 }
+                 TestMessage message = messageHere(L, 2);
+                 message.setDetail(std::string("checking (") + luaL_tolstring(L, 1, nullptr) + ")");
+                 lua_pop(L, 1);
+                 Asserter::testFail(false, message, owner(L));
                  return 0;
              }},
             // testMeasure(name, value [, unit [, low [, high]]]): arguments are checked before

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "languages/test_loader.h"
+#include "runner/cli/plugin_file_kind.h"
 #include "runner/model/test_id.h"
 #include "runner/suites/suite_file.h"
 
@@ -70,8 +71,59 @@ bool isOtherRunnerFile(const std::string& path) {
     return root == "world" || root == "testsuites" || root == "testsuite";
 }
 
+// The suite files of a --suites folder: its XML files but those of the formats above (passed
+// over quietly) and those whose root element is not a suite's: a robot's configuration, a
+// middleware's XML beside the suites. RTF 2.x passed those over; they are passed over with a
+// warning naming the root element, so a misspelt <suite> is seen. A file without a root
+// element (malformed) is kept: reading it says what is wrong, exit 2.
+std::vector<std::string> suitesOfFolder(const std::vector<std::string>& files,
+                                        std::vector<std::string>& warnings) {
+    std::vector<std::string> suites;
+    for (const auto& file : files) {
+        if (isOtherRunnerFile(file)) {
+            continue;
+        }
+        const std::string root = rootElementOf(file);
+        if (!root.empty() && root != "suite" && root != "suit") {
+            warnings.push_back(file + ": warning: the root element is <" + root +
+                               ">, not <suite>: passed over (--suite " + file +
+                               " reads it as a suite)");
+            continue;
+        }
+        suites.push_back(file);
+    }
+    return suites;
+}
+
 bool isTestFile(const std::string& path) {
     return !languages::typeFromFile(path).empty();
+}
+
+// The files of a --tests folder that run as tests. A shared library there that is not a test
+// plug-in (a fixture plug-in, or a library the build put beside the plug-ins) is passed over
+// with a warning, as RTF 2.x passed it over; named with --test it is still a failed test.
+std::vector<std::string> testsOfFolder(const std::vector<std::string>& files,
+                                       std::vector<std::string>& warnings) {
+    std::vector<std::string> tests;
+    for (const auto& file : files) {
+        if (languages::typeFromFile(file) == "dll") {
+            const PluginFileKind kind = pluginFileKind(file);
+            if (kind == PluginFileKind::Fixture) {
+                warnings.push_back(file +
+                                   ": warning: a fixture plug-in, not a test: passed over "
+                                   "(a suite file's <fixture> names it)");
+                continue;
+            }
+            if (kind == PluginFileKind::Other) {
+                warnings.push_back(file +
+                                   ": warning: not a test plug-in (no "
+                                   "ROBOTTESTINGFRAMEWORK_PREPARE_PLUGIN in it): passed over");
+                continue;
+            }
+        }
+        tests.push_back(file);
+    }
+    return tests;
 }
 
 TestSpec commandLineTest(const std::string& file) {
@@ -146,7 +198,7 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
         commandLine.tests.push_back(commandLineTest(file));
     }
     for (const auto& folder : options.testDirs) {
-        auto files = listFolder(folder, options.recursive, isTestFile);
+        auto files = testsOfFolder(listFolder(folder, options.recursive, isTestFile), warnings);
         if (files.empty()) {
             warnings.push_back(folder + ": warning: no test files in this folder");
         }
@@ -162,8 +214,7 @@ std::vector<SuiteSpec> readSources(const Options& options, std::vector<std::stri
 
     std::vector<std::string> suiteFiles = options.suites;
     for (const auto& folder : options.suiteDirs) {
-        auto files = listFolder(folder, options.recursive, isSuiteFile);
-        files.erase(std::remove_if(files.begin(), files.end(), isOtherRunnerFile), files.end());
+        auto files = suitesOfFolder(listFolder(folder, options.recursive, isSuiteFile), warnings);
         if (files.empty()) {
             warnings.push_back(folder + ": warning: no suite files (*.xml) in this folder");
         }

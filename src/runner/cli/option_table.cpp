@@ -103,7 +103,9 @@ std::vector<OptionRow> optionTable(Options& o, CommandLineWords& w) {
          true},
         {"--repetition", "N", Takes::One, inputs,
          "Run each test N times (a test's own repetition wins)", &o.repetition,
-         numberRule(checkRepetition, "from 1 to " + std::to_string(maxRepetition)), true},
+         numberRule(checkRunnerRepetition,
+                    "from 1 to " + std::to_string(maxRepetition) + "; 0, RTF 2.x's default: once"),
+         true},
         {"--var", "NAME=VALUE", Takes::Repeatable, inputs,
          "Set the variable NAME, used as ${NAME} in suites, test files and world files; wins "
          "over --var-file and the files' own (repeatable)", &w.variables},

@@ -40,6 +40,15 @@ std::string checkRepetition(const std::string& text, unsigned int& value) {
     return {};
 }
 
+std::string checkRunnerRepetition(const std::string& text, unsigned int& value) {
+    const std::string digits = trim(text);
+    if (!digits.empty() && digits.find_first_not_of('0') == std::string::npos) {
+        value = 0;
+        return {};
+    }
+    return checkRepetition(text, value);
+}
+
 std::string checkRetries(const std::string& text, unsigned int& value) {
     const std::string digits = trim(text);
     const bool whole = !digits.empty() && std::all_of(digits.begin(), digits.end(),

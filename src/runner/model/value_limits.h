@@ -25,6 +25,10 @@ std::string checkRetries(const std::string& text, unsigned int& value);
 // A whole number of runs, 1 to maxRepetition.
 std::string checkRepetition(const std::string& text, unsigned int& value);
 
+// --repetition: as checkRepetition, and 0 (RTF 2.x's default, which its users write) gives 0,
+// "not given": each test runs its own repetition, else once.
+std::string checkRunnerRepetition(const std::string& text, unsigned int& value);
+
 // A number of seconds, 0 to maxTimeoutSeconds.
 std::string checkSeconds(const std::string& text, double& value);
 

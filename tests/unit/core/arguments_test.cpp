@@ -119,10 +119,50 @@ TEST(ArgumentVector, AFixtureArgvHoldsTheParamWordsOnly) {
 }
 
 TEST(ArgumentVector, FirstArgumentIsTheNameThenTheParamWords) {
-    ArgumentVector args("mytest", "--a 'b c'");
+    ArgumentVector args("mytest", "--a \"b c\"");
     ASSERT_EQ(args.argc(), 3);
     EXPECT_STREQ(args.argv()[0], "mytest");
     EXPECT_STREQ(args.argv()[1], "--a");
     EXPECT_STREQ(args.argv()[2], "b c");
     EXPECT_EQ(args.argv()[3], nullptr);
+}
+
+namespace {
+
+// The words of a plug-in's argv for `param` (a fixture's layout: the param's words only).
+Words pluginArgv(const std::string& param) {
+    ArgumentVector args(param);
+    return Words(args.argv(), args.argv() + args.argc());
+}
+
+}  // namespace
+
+// RTF 2.0.1's own runner gave a plug-in these argv (tests/e2e/test_rtf2_side_by_side.py runs
+// it beside this one): spaces separate, double quotes group, nothing else is special.
+TEST(ArgumentVector, BackslashesAndSingleQuotesArePlainCharactersAsInRtf2) {
+    EXPECT_EQ(pluginArgv(R"(C:\robots\arm --label robot's arm --re a\d+)"),
+              (Words{R"(C:\robots\arm)", "--label", "robot's", "arm", "--re", R"(a\d+)"}));
+}
+
+TEST(ArgumentVector, DoubleQuotesGroupAndEndTheWordBeforeThemAsInRtf2) {
+    EXPECT_EQ(pluginArgv(R"(--name "my robot" a"b c"d)"),
+              (Words{"--name", "my robot", "a", "b c", "d"}));
+    EXPECT_EQ(pluginArgv(R"("quoted \"inner\" end")"), (Words{R"(quoted \)", R"(inner\)", " end"}));
+    EXPECT_EQ(pluginArgv(R"("unterminated x)"), (Words{"unterminated x"}));
+}
+
+TEST(ArgumentVector, OnlySpacesSeparateAndEmptyWordsAreDroppedAsInRtf2) {
+    EXPECT_EQ(pluginArgv("  --x\t1  \"\" --empty \"\"  "), (Words{"--x\t1", "--empty"}));
+}
+
+TEST(Arguments, ParseSplitsByRtf2sRulesInPlace) {
+    char line[] = R"(C:\robots\arm "my robot" it's)";
+    char* argv[64];
+    int argc = -1;
+    Arguments::parse(line, &argc, argv);
+    ASSERT_EQ(argc, 3);
+    EXPECT_STREQ(argv[0], R"(C:\robots\arm)");
+    EXPECT_STREQ(argv[1], "my robot");
+    EXPECT_STREQ(argv[2], "it's");
+    EXPECT_EQ(argv[3], nullptr);
 }

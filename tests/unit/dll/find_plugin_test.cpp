@@ -64,6 +64,24 @@ TEST_F(FindPlugin, LdLibraryPathIsSearched) {
     EXPECT_EQ(found, (dir_ / "sub" / "libonpath.so").string());
 }
 
+// RTF 2.x opened a script named bare in a suite (<test>arm_test.lua</test>) from the current
+// folder; a shared library's bare name stays the loader's (never the current folder).
+TEST_F(FindPlugin, ABareScriptNameIsFoundInTheCurrentFolderLast) {
+    touch(dir_ / "arm_test.lua");
+    touch(dir_ / "libgripper.so");
+    touch(dir_ / "sub" / "beside.lua");
+    touch(dir_ / "beside.lua");
+    const auto here = fs::current_path();
+    fs::current_path(dir_);
+    const std::string script = findPlugin("arm_test.lua", (dir_ / "sub").string());
+    const std::string library = findPlugin("libgripper.so", (dir_ / "sub").string());
+    const std::string beside = findPlugin("beside.lua", (dir_ / "sub").string());
+    fs::current_path(here);
+    EXPECT_EQ(script, (dir_ / "arm_test.lua").string());
+    EXPECT_EQ(library, "");
+    EXPECT_EQ(beside, (dir_ / "sub" / "beside.lua").string());
+}
+
 TEST_F(FindPlugin, NotFoundSaysWhereItLooked) {
     std::string searched;
     EXPECT_EQ(findPlugin("nothing_here", dir_.string(), &searched), "");

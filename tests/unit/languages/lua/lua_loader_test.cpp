@@ -43,6 +43,27 @@ end
     EXPECT_NE(run.find(Kind::Report, "still running"), nullptr);
 }
 
+TEST(LuaLoader, TestFailWithTheConditionAsTextAlwaysFailsAsInRtf2) {
+    // RTF 2.0.1's testFail(condition, message) reads the condition as text and always marks
+    // the test failed ("checking (x > 0): x is not positive"); the test goes on. A boolean
+    // condition fails it when false.
+    std::string path = writeScript(scriptFolder(), "test_fail.lua", R"(TestCase = {}
+function TestCase.run()
+    robottestingframework.testFail("x > 0", "x is not positive")
+    robottestingframework.testFail(true, "a true condition")
+    robottestingframework.testReport("still running")
+end
+)");
+    ScriptRun run = runScript("lua", path);
+    EXPECT_EQ(run.status, TestStatus::Failed);
+    const ResultEvent* failure = run.find(Kind::Failure, "x is not positive");
+    ASSERT_NE(failure, nullptr);
+    EXPECT_EQ(failure->message.getDetail(), "checking (x > 0)");
+    EXPECT_EQ(failure->message.getSourceLocation(), path + ":3");
+    EXPECT_EQ(run.find(Kind::Failure, "a true condition"), nullptr);
+    EXPECT_NE(run.find(Kind::Report, "still running"), nullptr);
+}
+
 TEST(LuaLoader, AssertFailStopsTheScript) {
     std::string path = writeScript(scriptFolder(), "fail.lua", R"(TestCase = {}
 function TestCase.run()

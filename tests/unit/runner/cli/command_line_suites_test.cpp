@@ -118,6 +118,42 @@ TEST_F(TestSources, AnExecutableFileIsATestFile) {
     EXPECT_EQ(pluginsOf(suites[0]), (std::vector<std::string>{"tests/run_me"}));
 }
 
+TEST_F(TestSources, ATestsFolderPassesOverLibrariesThatAreNoTestPluginsWithAWarning) {
+    // As RTF 2.x ran a build folder: its test plug-ins, not its fixture plug-ins or other
+    // libraries.
+    write("tests/libarm_test.so", std::string("ELF\0robottestingframework_dll_factory\0", 38));
+    write("tests/librobot_fixture.so",
+          std::string("ELF\0robottestingframework_fixture_factory\0", 42));
+    write("tests/librobot_helper.so", std::string("ELF\0robot_helper_answer\0", 24));
+    write("tests/a.lua");
+    Options options;
+    options.testDirs = {folder("tests")};
+    std::vector<std::string> warnings;
+    const auto suites = readSources(options, warnings);
+    ASSERT_EQ(suites.size(), 1u);
+    EXPECT_EQ(pluginsOf(suites[0]),
+              (std::vector<std::string>{"tests/a.lua", "tests/libarm_test.so"}));
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("librobot_fixture.so: warning: a fixture plug-in, not a test"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[1].find("librobot_helper.so: warning: not a test plug-in"),
+              std::string::npos)
+        << warnings[1];
+}
+
+TEST_F(TestSources, AFixturePluginNamedWithTestIsStillATest) {
+    // Named one by one it runs, and fails saying what it is (RTF 2.x exited 1 as well).
+    Options options;
+    options.tests = {write("librobot_fixture.so",
+                           std::string("ELF\0robottestingframework_fixture_factory\0", 42))};
+    std::vector<std::string> warnings;
+    const auto suites = readSources(options, warnings);
+    ASSERT_EQ(suites.size(), 1u);
+    EXPECT_EQ(suites[0].tests.size(), 1u);
+    EXPECT_TRUE(warnings.empty());
+}
+
 TEST_F(TestSources, ATestsFolderWithoutTestFilesWarnsAndAddsNoSuite) {
     write("tests/notes.txt");
     Options options;
@@ -222,7 +258,9 @@ TEST_F(TestSources, TheSuitesSeeTheCommandLinesVariables) {
 // run with -o junit:lab.xml leaves lab.xml there; `--suites .` then stopped with exit 2 at
 // "the root element is <world>" (or <testsuites>). A --suites folder passes over XML files
 // whose root says they are another format this runner reads or writes; any other root is
-// still an error, and a file named with --suite is read whatever it holds.
+// passed over with a warning (RTF 2.x passed it over: a robot's XML configuration beside the
+// suites), a malformed file is an error, and a file named with --suite is read whatever it
+// holds.
 TEST_F(TestSources, ASuitesFolderPassesOverWorldFilesAndJUnitReports) {
     suiteFile("suites/suite.xml", "lab");
     write("suites/world.xml",
@@ -239,6 +277,16 @@ TEST_F(TestSources, ASuitesFolderPassesOverWorldFilesAndJUnitReports) {
     EXPECT_TRUE(warnings.empty());
 
     write("suites/typo.xml", "<suiet name=\"x\"/>\n");
+    write("suites/icub.xml", "<?xml version=\"1.0\"?>\n<robot name=\"icub\"><part/></robot>\n");
+    EXPECT_EQ(namesOf(readSources(options, warnings)), (std::vector<std::string>{"lab"}));
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_NE(warnings[0].find("icub.xml: warning: the root element is <robot>, not <suite>: "
+                               "passed over"),
+              std::string::npos)
+        << warnings[0];
+    EXPECT_NE(warnings[1].find("typo.xml: warning: the root element is <suiet>"), std::string::npos)
+        << warnings[1];
+    write("suites/broken.xml", "<suite name=\"x\">\n  <test>a.lua</test>\n");
     EXPECT_THROW(readSources(options, warnings), SuiteFileError);
     Options named;
     named.suites = {(dir_ / "suites" / "world.xml").string()};

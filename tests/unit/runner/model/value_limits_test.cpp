@@ -5,6 +5,19 @@
 
 using namespace robottestingframework::runner;
 
+TEST(Numbers, TheRunnersRepetitionTakesRtf2sDefaultZeroAsNotGiven) {
+    unsigned int runs = 5;
+    EXPECT_EQ(checkRunnerRepetition("0", runs), "");
+    EXPECT_EQ(runs, 0u);
+    EXPECT_EQ(checkRunnerRepetition(" 00 ", runs), "");
+    EXPECT_EQ(runs, 0u);
+    EXPECT_EQ(checkRunnerRepetition("3", runs), "");
+    EXPECT_EQ(runs, 3u);
+    EXPECT_EQ(checkRunnerRepetition("zero", runs), "is not a whole number of runs >= 1");
+    EXPECT_EQ(checkRunnerRepetition("-1", runs), "is not a whole number of runs >= 1");
+    EXPECT_EQ(checkRunnerRepetition("1000000001", runs), "is too large: at most 1000000000 runs");
+}
+
 TEST(Numbers, RepetitionIsAWholeNumberUpToTheLimit) {
     unsigned int runs = 0;
     EXPECT_EQ(checkRepetition(" 7 ", runs), "");
