@@ -66,6 +66,9 @@ def test_a_signal_while_a_world_starts_cuts_the_start_short(tmp_path, marker, is
     said = ("interrupted after", "while starting (not ready: 'never')") \
         if isolation == "none" else ("fixture never", "setup interrupted")
     assert all(words in output for words in said), output
+    if scope == "run" and isolation == "process":
+        # The suite that waited for the world (-j 2) says what it waited for.
+        assert "failed: interrupted while shared world 'never' was starting" in output, output
     validate_junit(tmp_path / "report.xml")
     states = [junit_state(case)
               for case in ET.parse(tmp_path / "report.xml").getroot().iter("testcase")
