@@ -1,8 +1,9 @@
 """Two runs of the runner started at the same time in one folder, with the same world writing
 its logs (logdir): each run writes a log of its own, says so when it took another name, and
 attaches its own world's lines alone. They wrote one log file at once, each emptying the
-other's, and a run's report attached lines of the other run's world. Loopback only; nothing is
-left behind."""
+other's, and a run's report attached lines of the other run's world. A report file another run
+wrote while this one ran is replaced with a warning (it was replaced without a word). Loopback
+only; nothing is left behind."""
 import json
 import os
 import signal
@@ -67,4 +68,26 @@ def test_two_runs_in_one_folder_write_and_attach_their_own_world_logs(tmp_path, 
             if "of 'lab' is written by another run: this one writes" in
             (tmp_path / f"{tag}.json").read_text()]
     assert len(said) == 1, outputs
+    assert not leftover_processes(marker)
+
+
+def test_a_report_another_run_wrote_meanwhile_is_not_replaced_silently(tmp_path, marker):
+    """Two runs with the default output (result.txt): the one that ends last says it replaces
+    the other's report; the other, and a run alone, say nothing."""
+    (tmp_path / "long.xml").write_text(
+        '<suite name="long">\n  <test type="exec" param="1.5">/bin/sleep</test>\n</suite>\n')
+    (tmp_path / "short.xml").write_text(
+        '<suite name="short">\n  <test type="exec" param="0.2">/bin/sleep</test>\n</suite>\n')
+    warning = "warning: the text output result.txt was written by another run while this one ran"
+    runs = {name: start_runner("-s", f"{name}.xml", cwd=tmp_path, env=marked(marker))
+            for name in ("long", "short")}
+    outputs = {}
+    for name, proc in runs.items():
+        status, outputs[name] = finish(proc)
+        assert status == 0, outputs[name]
+    assert warning in outputs["long"] and ": this run's replaces it" in outputs["long"], outputs
+    assert warning not in outputs["short"], outputs
+    assert "Suite long: passed" in (tmp_path / "result.txt").read_text()
+    status, alone = finish(start_runner("-s", "short.xml", cwd=tmp_path, env=marked(marker)))
+    assert status == 0 and "warning" not in alone, alone
     assert not leftover_processes(marker)
