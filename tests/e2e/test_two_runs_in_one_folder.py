@@ -75,7 +75,7 @@ def test_a_report_another_run_wrote_meanwhile_is_not_replaced_silently(tmp_path,
     """Two runs with the default output (result.txt): the one that ends last says it replaces
     the other's report; the other, and a run alone, say nothing."""
     (tmp_path / "long.xml").write_text(
-        '<suite name="long">\n  <test type="exec" param="1.5">/bin/sleep</test>\n</suite>\n')
+        '<suite name="long">\n  <test type="exec" param="2.5">/bin/sleep</test>\n</suite>\n')
     (tmp_path / "short.xml").write_text(
         '<suite name="short">\n  <test type="exec" param="0.2">/bin/sleep</test>\n</suite>\n')
     warning = "warning: the text output result.txt was written by another run while this one ran"
