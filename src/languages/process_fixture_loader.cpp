@@ -16,6 +16,7 @@ public:
     explicit LoadedProcessFixture(std::unique_ptr<fixtures::ProcessFixture> fixture)
         : fixture_(std::move(fixture)) {}
     FixtureManager* get() override { return fixture_.get(); }
+    void interrupt() override { fixture_->interrupt(); }
 
 private:
     std::unique_ptr<fixtures::ProcessFixture> fixture_;

@@ -19,6 +19,9 @@ class Loaded {
 public:
     virtual ~Loaded() = default;
     virtual T* get() = 0;
+    // Cuts short a call in progress (a fixture's set-up, on Ctrl-C), from any thread; most
+    // objects cannot, and do nothing.
+    virtual void interrupt() {}
 };
 using LoadedTest = Loaded<TestCase>;
 using LoadedFixture = Loaded<FixtureManager>;

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "reporters/reporter_registry.h"
+#include "runner/cli/output_stamp.h"
 #include "runner/cli/program_name.h"
 #include "runner/cli/run_facts.h"
 
@@ -33,6 +34,7 @@ bool wantColours(Colour colour) {
 struct RunListeners::Output {
     OutputRequest request;
     std::unique_ptr<reporters::Reporter> reporter;
+    std::string stamp;  // the file when the run started, or when this run last wrote it
 };
 
 // The lines the scheduler has to say when one suite runs at a time (a wait for a lock).
@@ -134,8 +136,9 @@ RunListeners::RunListeners(const Options& options,
         if (request.type == "html") {
             settings.testFacts = facts;
         }
-        outputs_.push_back(
-            {request, reporters::findReporterType(request.type)->make(collector_, settings)});
+        outputs_.push_back({request,
+                            reporters::findReporterType(request.type)->make(collector_, settings),
+                            outputStamp(request.file)});
         settings.testFacts.clear();
     }
     for (const auto& output : outputs_) {
@@ -167,11 +170,18 @@ void RunListeners::quit() {
     writeOutputs(capture_.console());
 }
 
-bool RunListeners::writeOutputs(std::FILE* console) const {
+bool RunListeners::writeOutputs(std::FILE* console) {
     bool ok = true;
-    for (const auto& output : outputs_) {
+    for (auto& output : outputs_) {
+        const std::string meanwhile =
+            outputWrittenMeanwhile(output.request.type, output.request.file, output.stamp);
+        if (!meanwhile.empty()) {
+            std::fprintf(console, "%s: warning: %s\n", programName, meanwhile.c_str());
+        }
         TestMessage error;
-        if (!output.reporter->write(output.request.file, &error)) {
+        const bool written = output.reporter->write(output.request.file, &error);
+        output.stamp = outputStamp(output.request.file);
+        if (!written) {
             std::fprintf(console, "%s: cannot write the %s output %s: %s\n", programName,
                          output.request.type.c_str(), output.request.file.c_str(),
                          error.toString().c_str());

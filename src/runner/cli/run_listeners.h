@@ -48,8 +48,10 @@ public:
     // The tests' output goes back to stdout and stderr.
     void stopCapture() { capture_.stop(); }
     // Writes every requested output, each whole or not at all; false when one could not be
-    // written (each is said on `console`, and the others are still written).
-    bool writeOutputs(std::FILE* console) const;
+    // written (each is said on `console`, and the others are still written). One that another
+    // process wrote since the run started (or since this run last wrote it) is said on
+    // `console` as a warning, and replaced.
+    bool writeOutputs(std::FILE* console);
 
 private:
     struct Output;

@@ -21,7 +21,7 @@ namespace {
 
 // The fixture manager the suite holds: forwards to the one the plug-in made, and keeps the
 // plug-in loaded as long as it lives.
-class LoadedFixtureManager : public FixtureManager {
+class LoadedFixtureManager : public FixtureManager, public InterruptibleFixture {
 public:
     explicit LoadedFixtureManager(std::unique_ptr<languages::LoadedFixture> loaded)
         : loaded_(std::move(loaded)) {}
@@ -33,6 +33,9 @@ public:
     }
     bool check() override { return sync()->check(); }
     void tearDown() override { sync()->tearDown(); }
+    // Ctrl-C while its set-up runs on the runner's thread (--isolation none): a process
+    // fixture stops awaiting its world.
+    void interruptCall() override { loaded_->interrupt(); }
 
 private:
     // The suite sets its dispatcher and result on this object; the plug-in reports through its

@@ -153,15 +153,21 @@ void SharedWorld::start() {
             std::lock_guard<std::mutex> lock(mutex_);
             holder->setWorkerNetwork(network_);
         }
+        bool cut = false;
         {
             // The instance of an earlier round (stopped) goes after the lock is let go: its
             // threads may still report to this world.
             std::lock_guard<std::mutex> lock(mutex_);
             manager_.swap(manager);
+            // An interrupt while it was made found no manager to cut short: its set-up (a
+            // world's whole ready timeout) is not begun.
+            cut = interrupted_;
         }
         manager.reset();
         std::lock_guard<std::mutex> call(callMutex_);
-        if (guardedCall([&] { up = manager_->setup(); }, why) && !up) {
+        if (cut) {
+            why = "interrupted";
+        } else if (guardedCall([&] { up = manager_->setup(); }, why) && !up) {
             why = "setup returned false";
         }
     }
@@ -237,7 +243,7 @@ bool SharedWorld::acquire(FixtureEvents* suite, TestResult& result, const Test* 
     }
     replay(0, events, result, owner);
     if (cut && now != State::Up) {
-        failure = TestMessage("interrupted while shared world '" + name_ + "' started");
+        failure = TestMessage("interrupted while shared world '" + name_ + "' was starting");
         return false;
     }
     switch (now) {

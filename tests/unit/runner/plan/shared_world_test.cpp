@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -325,4 +326,62 @@ TEST(SharedWorld, ItsPhasesReachTheReportsAsWorldEvents) {
     // About no test: no suite's record holds them, and the counts are the suites'.
     EXPECT_EQ(collector.suiteCount(), 3u);
     EXPECT_EQ(collector.testCount(), 2u);  // c's is not counted: its fixture failed (RTF 2.x)
+}
+
+namespace {
+
+// A world whose set-up blocks until interrupted (or 5 s), made slowly (200 ms).
+class BlockingWorld : public FixtureManager, public InterruptibleFixture {
+public:
+    bool setup(int, char**) override {
+        std::unique_lock<std::mutex> lock(mutex_);
+        changed_.wait_for(lock, std::chrono::seconds(5), [this] { return interrupted_; });
+        if (interrupted_) {
+            throw TestErrorException(TestMessage("setup interrupted"));
+        }
+        return true;
+    }
+    void tearDown() override {}
+    void interruptCall() override {
+        std::lock_guard<std::mutex> lock(mutex_);
+        interrupted_ = true;
+        changed_.notify_all();
+    }
+
+private:
+    std::mutex mutex_;
+    std::condition_variable changed_;
+    bool interrupted_ = false;
+};
+
+class NoEvents : public FixtureEvents {
+public:
+    void fixtureCollapsed(TestMessage) override {}
+};
+
+}  // namespace
+
+// Ctrl-C while the world's manager is still being made (a worker started, a plug-in loaded):
+// the start does not go on to await the world; the suites fail as interrupted at once.
+TEST(SharedWorld, AnInterruptWhileItsManagerIsMadeStopsItsStart) {
+    SharedWorld world("lab", [](std::string&) -> std::unique_ptr<FixtureManager> {
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+        return std::make_unique<BlockingWorld>();
+    });
+    world.addUser();
+    world.reset();
+    NoEvents suite;
+    TestResult result;
+    TestMessage failure;
+    const auto began = std::chrono::steady_clock::now();
+    std::thread interrupter([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        world.interrupt();
+    });
+    EXPECT_FALSE(world.acquire(&suite, result, nullptr, failure));
+    interrupter.join();
+    EXPECT_LT(std::chrono::steady_clock::now() - began, std::chrono::seconds(2));
+    EXPECT_EQ(failure.getMessage(), "interrupted while shared world 'lab' was starting");
+    EXPECT_EQ(world.state(), SharedWorld::State::Failed);
+    world.release(&suite, nullptr, nullptr);
 }
