@@ -57,16 +57,17 @@ TEST(TestSuite, FixturesSetUpInOrderAndTornDownInReverse) {
     EXPECT_TRUE(r.suite().succeeded());
 }
 
-// RTF 2.x's layout: the param's words only, the first one in argv[0].
+// RTF 2.x's layout: the param's words only, the first one in argv[0], split by RTF 2.x's rules
+// (double quotes group, a single quote is a character of its word).
 TEST(TestSuite, FixtureSetupGetsItsParamWordsWithTheFirstInArgvZero) {
     std::vector<std::string> log;
     LoggingFixture a("sim", log);
-    a.setParam("--from 'sim world.ini'");
+    a.setParam("--from \"sim world.ini\" robot's");
     TestSuite suite("s");
     suite.addFixtureManager(&a);
     SuiteRun r;
     suite.run(r.result);
-    EXPECT_EQ(a.args, (Lines{"--from", "sim world.ini"}));
+    EXPECT_EQ(a.args, (Lines{"--from", "sim world.ini", "robot's"}));
 }
 
 TEST(TestSuite, SuiteBecomesTheDispatcherOfAFixtureWithoutOne) {

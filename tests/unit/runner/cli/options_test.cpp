@@ -163,7 +163,7 @@ TEST(Options, UsageErrorsExitWithTwoAndSayWhy) {
         {{}, "nothing to run"},
         {{"-t", "a.so", "--bogus"}, "--bogus"},
         {{"-t"}, "--test"},
-        {{"-t", "a.so", "--repetition", "0"}, "repetition"},
+        {{"-t", "a.so", "--repetition", "-1"}, "repetition"},
         {{"-t", "a.so", "--repetition", "abc"}, "repetition"},
         {{"-t", "a.so", "--web-port", "70000"}, "web-port"},
         {{"-t", "a.so", "--web-linger", "-1"}, "web-linger"},
