@@ -364,6 +364,28 @@ def start_runner(*args, cwd, env=None):
                             stdin=subprocess.DEVNULL, start_new_session=True, text=True)
 
 
+def wait_for(condition, timeout=20.0, what="the condition"):
+    """Polls `condition` every 50 ms until it holds; fails the test after `timeout` seconds."""
+    deadline = time.monotonic() + timeout
+    while time.monotonic() < deadline:
+        if condition():
+            return
+        time.sleep(0.05)
+    raise AssertionError(f"timed out waiting for {what}")
+
+
+def finish_runner(proc, timeout=30):
+    """(status, stdout, stderr) of a runner start_runner started, killed with its session and
+    failing the test when it has not ended within `timeout` seconds."""
+    try:
+        out, err = proc.communicate(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGKILL)
+        out, err = proc.communicate()
+        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
+    return proc.returncode, out, err
+
+
 @pytest.fixture
 def suite_file(tmp_path):
     """Writes a suite file in the test's folder: suite_file(text, name='suite.xml')."""

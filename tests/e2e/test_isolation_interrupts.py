@@ -2,35 +2,14 @@
 what finished and the rest interrupted, the exit status says so (130 SIGINT, 143 SIGTERM); a
 second Ctrl-C ends at once; nothing the run started survives it, even a SIGKILL of the runner."""
 import json
-import os
 import signal
-import subprocess
 import time
 import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import (_marked_processes, junit_state, leftover_processes, marked, plugin,
+from conftest import (_marked_processes, finish_runner, wait_for, junit_state, leftover_processes, marked, plugin,
                       start_runner, validate_junit)
-
-
-def wait_for(condition, timeout=20.0, what="the condition"):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"timed out waiting for {what}")
-
-
-def finish(proc, timeout=30):
-    try:
-        out, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        out, err = proc.communicate()
-        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
-    return proc.returncode, out, err
 
 
 def statuses(junit):
@@ -71,7 +50,7 @@ def test_interrupt_tears_down_writes_outputs_and_exits_non_zero(tmp_path, marker
     wait_for(lambda: lines(log).count("check world") >= 2, what="the blocking test")
     time.sleep(0.5)
     proc.send_signal(signum)
-    code, out, err = finish(proc)
+    code, out, err = finish_runner(proc)
     assert code == status, (code, out, err)
     assert lines(log)[-1] == "teardown world", lines(log)
     validate_junit(junit)
@@ -109,7 +88,7 @@ def test_a_second_ctrl_c_ends_at_once_and_leaves_nothing(tmp_path, marker, isola
     time.sleep(0.3)
     proc.send_signal(signal.SIGINT)
     begin = time.monotonic()
-    code, out, err = finish(proc, timeout=10)
+    code, out, err = finish_runner(proc, timeout=10)
     assert time.monotonic() - begin < 5
     assert code == 130, (code, out, err)
     assert leftover_processes(marker) == []
@@ -124,7 +103,7 @@ def test_sigkill_of_the_runner_leaves_no_process(tmp_path, marker):
     # Runner, fork server, worker, the worker's child.
     wait_for(lambda: len(_marked_processes(marker)) >= 4, what="the sleeping child")
     proc.kill()
-    finish(proc)
+    finish_runner(proc)
     assert leftover_processes(marker, grace=5) == []
 
 
@@ -137,7 +116,7 @@ def test_an_interrupted_exec_test_leaves_no_child_in_process(tmp_path, marker):
                         env=marked(marker), cwd=tmp_path)
     wait_for(started.exists, what="the script")
     proc.send_signal(signal.SIGINT)
-    code, out, err = finish(proc)
+    code, out, err = finish_runner(proc)
     assert code == 130, (code, out, err)
     assert "INTERRUPTED" in out, out
     assert leftover_processes(marker) == []
@@ -149,7 +128,7 @@ def test_an_exec_test_that_leaves_a_child_behind_leaves_nothing_in_process(tmp_p
     script.chmod(0o755)
     proc = start_runner("--isolation", "none", "--test", script.name, "--no-output",
                         env=marked(marker), cwd=tmp_path)
-    code, out, err = finish(proc)
+    code, out, err = finish_runner(proc)
     assert code == 0, (code, out, err)
     assert leftover_processes(marker) == []
 
@@ -188,7 +167,7 @@ def test_a_hung_teardown_interrupted_twice_is_reported_interrupted(tmp_path, mar
     proc.send_signal(signal.SIGTERM)
     time.sleep(0.5)
     proc.send_signal(signal.SIGTERM)
-    code, out, err = finish(proc, timeout=20)
+    code, out, err = finish_runner(proc, timeout=20)
     assert code == 143, (code, out, err)
     said = "interrupted: the runner quit: the tearDown of the suite's fixtures did not finish"
     text = (tmp_path / "out.txt").read_text()

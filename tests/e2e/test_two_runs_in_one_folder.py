@@ -5,23 +5,10 @@ other's, and a run's report attached lines of the other run's world. A report fi
 wrote while this one ran is replaced with a warning (it was replaced without a word). Loopback
 only; nothing is left behind."""
 import json
-import os
-import signal
-import subprocess
 
 import pytest
 
-from conftest import leftover_processes, marked, start_runner
-
-
-def finish(proc, timeout=60):
-    try:
-        out, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        out, err = proc.communicate()
-        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
-    return proc.returncode, out + err
+from conftest import finish_runner, leftover_processes, marked, start_runner
 
 
 def attached_logs(folder, report):
@@ -52,7 +39,8 @@ def test_two_runs_in_one_folder_write_and_attach_their_own_world_logs(tmp_path, 
             for tag in ("one", "two")}
     outputs = {}
     for tag, proc in runs.items():
-        status, output = finish(proc)
+        status, out, err = finish_runner(proc, timeout=60)
+        output = out + err
         assert status == 0, output
         outputs[tag] = output
     logs = sorted(path.name for path in (tmp_path / "logs").iterdir())
@@ -83,11 +71,14 @@ def test_a_report_another_run_wrote_meanwhile_is_not_replaced_silently(tmp_path,
             for name in ("long", "short")}
     outputs = {}
     for name, proc in runs.items():
-        status, outputs[name] = finish(proc)
+        status, out, err = finish_runner(proc, timeout=60)
+        outputs[name] = out + err
         assert status == 0, outputs[name]
     assert warning in outputs["long"] and ": this run's replaces it" in outputs["long"], outputs
     assert warning not in outputs["short"], outputs
     assert "Suite long: passed" in (tmp_path / "result.txt").read_text()
-    status, alone = finish(start_runner("-s", "short.xml", cwd=tmp_path, env=marked(marker)))
+    status, out, err = finish_runner(start_runner("-s", "short.xml", cwd=tmp_path,
+                                                  env=marked(marker)), timeout=60)
+    alone = out + err
     assert status == 0 and "warning" not in alone, alone
     assert not leftover_processes(marker)

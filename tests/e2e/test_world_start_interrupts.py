@@ -3,34 +3,14 @@
 the run ends within seconds with 130 or 143, its reports written and valid, every test
 interrupted, the console saying what was interrupted, and no process left. In the runner's
 own process it waited for the world's whole ready timeout. Loopback only."""
-import os
 import signal
-import subprocess
 import time
 import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import junit_state, leftover_processes, marked, start_runner, validate_junit
-
-
-def wait_for(condition, timeout=20.0, what="the condition"):
-    deadline = time.monotonic() + timeout
-    while time.monotonic() < deadline:
-        if condition():
-            return
-        time.sleep(0.05)
-    raise AssertionError(f"timed out waiting for {what}")
-
-
-def finish(proc, timeout=20):
-    try:
-        out, err = proc.communicate(timeout=timeout)
-    except subprocess.TimeoutExpired:
-        os.killpg(proc.pid, signal.SIGKILL)
-        out, err = proc.communicate()
-        pytest.fail(f"the runner did not end within {timeout} s\n{out}\n{err}")
-    return proc.returncode, out + err
+from conftest import (finish_runner, junit_state, leftover_processes, marked, start_runner,
+                      validate_junit, wait_for)
 
 
 @pytest.mark.parametrize("isolation", ["none", "process"])
@@ -59,7 +39,8 @@ def test_a_signal_while_a_world_starts_cuts_the_start_short(tmp_path, marker, is
     time.sleep(0.3)
     proc.send_signal(signum)
     began = time.monotonic()
-    code, output = finish(proc)
+    code, out, err = finish_runner(proc, timeout=20)
+    output = out + err
     assert time.monotonic() - began < 10, output
     assert code == status, output
     # What was interrupted: the world's start (in a worker, the worker's set-up call).
