@@ -10,8 +10,8 @@ import xml.etree.ElementTree as ET
 
 import pytest
 
-from conftest import RUNNER, junit_state, leftover_processes, marked, run_runner, start_runner
-from test_isolation_interrupts import finish, wait_for
+from conftest import (RUNNER, finish_runner, junit_state, leftover_processes, marked, run_runner,
+                      start_runner, wait_for)
 
 PRESTARTED = re.compile(r"(\w+) tests run in forks of a pre-started interpreter \(pid (\d+)\)")
 
@@ -382,7 +382,7 @@ class TestCase:
         proc = start_runner("--test", test.name, "-v", cwd=tmp_path, env=marked(marker))
         wait_for(started.exists, what="the test to start")
         proc.send_signal(signum)
-        status, out, err = finish(proc)
+        status, out, err = finish_runner(proc)
         assert status == (130 if signum == signal.SIGINT else -signal.SIGKILL), (out, err)
         assert leftover_processes(marker, grace=5.0) == [], signum
 
