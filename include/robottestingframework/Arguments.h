@@ -36,6 +36,8 @@ class ArgumentVector {
 public:
     ArgumentVector(const std::string& name, const std::string& param);
     explicit ArgumentVector(const std::string& param);
+    // The argv of `words` as they are (split otherwise, e.g. by Arguments::split's shell rules).
+    explicit ArgumentVector(std::vector<std::string> words);
     ArgumentVector(const ArgumentVector&) = delete;  // argv points into words_
     ArgumentVector& operator=(const ArgumentVector&) = delete;
     int argc() const { return static_cast<int>(words_.size()); }

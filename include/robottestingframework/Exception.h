@@ -13,6 +13,9 @@ public:
     explicit Exception(const TestMessage& message);
     const char* what() const noexcept override;
     const TestMessage& message() const noexcept { return message_; }
+    // what() whole: a C string ends at a NUL the message may hold (a process's output it
+    // quotes), this does not.
+    const std::string& text() const noexcept { return what_; }
 
 private:
     TestMessage message_;

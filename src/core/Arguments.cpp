@@ -1,6 +1,7 @@
 #include <robottestingframework/Arguments.h>
 
 #include <cstring>
+#include <utility>
 
 namespace robottestingframework {
 
@@ -116,6 +117,12 @@ int writeInPlace(char* line, const std::vector<std::string>& words, char** args,
     return count;
 }
 
+// `name`, then `words`: a test's argv.
+std::vector<std::string> withName(const std::string& name, std::vector<std::string> words) {
+    words.insert(words.begin(), name);
+    return words;
+}
+
 // "name" and "--name" both mean the option --name.
 std::string optionName(const char* option) {
     if (option[0] == '-') {
@@ -183,17 +190,12 @@ bool Arguments::hasOption(int argc, char** argv, const char* option) {
 }
 
 ArgumentVector::ArgumentVector(const std::string& name, const std::string& param)
-    : ArgumentVector(param) {
-    words_.insert(words_.begin(), name);
-    pointers_.clear();
-    pointers_.reserve(words_.size() + 1);
-    for (std::string& word : words_) {
-        pointers_.push_back(&word[0]);
-    }
-    pointers_.push_back(nullptr);
-}
+    : ArgumentVector(withName(name, splitAsRtf2(param.c_str()))) {}
 
-ArgumentVector::ArgumentVector(const std::string& param) : words_(splitAsRtf2(param.c_str())) {
+ArgumentVector::ArgumentVector(const std::string& param)
+    : ArgumentVector(splitAsRtf2(param.c_str())) {}
+
+ArgumentVector::ArgumentVector(std::vector<std::string> words) : words_(std::move(words)) {
     pointers_.reserve(words_.size() + 1);
     for (std::string& word : words_) {
         pointers_.push_back(&word[0]);

@@ -16,15 +16,7 @@ namespace robottestingframework {
 // text a fixture quotes) may hold one, which cut the rest of the failure away.
 inline std::string exceptionReason(const std::exception& e) {
     const auto* rtf = dynamic_cast<const Exception*>(&e);
-    if (rtf == nullptr) {
-        return e.what();
-    }
-    std::string why = rtf->message().toString();
-    const std::string where = rtf->message().getSourceLocation();
-    if (!where.empty()) {
-        why += " (" + where + ")";
-    }
-    return why;
+    return rtf != nullptr ? rtf->text() : std::string(e.what());
 }
 
 // Runs `call`; returns false and fills `why` when it threw.

@@ -50,10 +50,8 @@ std::string outputStamp(const std::string& path) {
 
 std::string outputWrittenMeanwhile(const std::string& type, const std::string& path,
                                    const std::string& before) {
-    bool writtenThrough = false;
-    platform::fileIdentity(path, &writtenThrough);
-    const std::string now = outputStamp(path);
-    if (writtenThrough || now.empty() || now == before) {
+    const std::string now = outputStamp(path);  // "" for a file written through
+    if (now.empty() || now == before) {
         return {};
     }
     const std::string at = changedAt(path);
